@@ -1,0 +1,32 @@
+#pragma once
+/// @file
+/// Mass properties of solid geometry at uniform density: how the hand's de Leva mass is
+/// shared over the palm boxes and phalanx capsules, and how objects get their inertia.
+
+#include "graspsim/model/model_description.h"
+
+#include <vector>
+
+namespace graspsim::model {
+
+/// Mass, centre of mass and central inertia of a rigid body.
+struct MassProperties {
+    double mass = 0;      ///< kg
+    Vec3 p_BCm{0, 0, 0};  ///< centre of mass in the body frame B (m)
+    Inertia inertia;      ///< central inertia, expressed in B (kg m^2)
+};
+
+/// Volume of a sphere, box, cylinder or capsule (m^3).
+/// @throws graspsim::InputError for a mesh, whose volume graspsim does not compute.
+double calcVolume(const Geometry& geometry);
+
+/// Mass properties of one solid of the given density (kg/m^3), in the body frame via X_BG.
+MassProperties calcSolidMassProperties(const Geometry& geometry, double density);
+
+/// Mass properties of the union of non-overlapping solids of one density (kg/m^3).
+MassProperties calcSolidMassProperties(const std::vector<Geometry>& geometry, double density);
+
+/// Rotates a central inertia given in G into B: I_B = R_BG I_G R_BG^T.
+Inertia reexpressInertia(const Inertia& I_G, const Transform& X_BG);
+
+}  // namespace graspsim::model

@@ -1,0 +1,13 @@
+#pragma once
+// Parsing numeric command-line values ourselves, so a bad value gets graspsim's one-line message
+// naming the flag, the value and what is accepted, rather than CLI11's generic text.
+
+#include <string>
+
+namespace graspsim::cli {
+
+// Parses the whole of `text` as a double; NaN and infinities parse (the caller's range check
+// rejects them with the accepted range). Throws InputError "<flag>: value '<text>' is not a number; <accepted>".
+double parseNumber(const std::string& text, const std::string& flag, const std::string& accepted);
+
+}  // namespace graspsim::cli

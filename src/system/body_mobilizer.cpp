@@ -1,0 +1,102 @@
+#include "body_mobilizer.h"
+
+#include <array>
+#include <cmath>
+#include <sstream>
+
+#include "graspsim/error.h"
+
+namespace graspsim::system {
+
+namespace {
+
+// Largest Frobenius norm of R R^T - I accepted as a rotation; rotations built from angles in
+// double precision are orthonormal to about 1e-15.
+constexpr double kRotationTolerance = 1e-9;
+
+// Frobenius norm of R R^T - I for a row-major 3x3 R.
+double calcOrthonormalityError(const std::array<double, 9>& R) {
+    double sum = 0;
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            const double dot =
+                R[3 * i] * R[3 * j] + R[3 * i + 1] * R[3 * j + 1] + R[3 * i + 2] * R[3 * j + 2];
+            sum += (dot - (i == j ? 1 : 0)) * (dot - (i == j ? 1 : 0));
+        }
+    }
+    return std::sqrt(sum);
+}
+
+SimTK::Vec3 toSimTKVec3(const model::Vec3& v) { return SimTK::Vec3(v[0], v[1], v[2]); }
+
+SimTK::Body makeBody(const model::Body& body) {
+    // Virtual bodies are constitutively massless so that nothing can give them mass later;
+    // Simbody accepts them when a massive body follows in the chain.
+    if (body.isVirtual()) return SimTK::Body::Massless();
+    return SimTK::Body::Rigid(calcMassPropertiesAboutOrigin(body));
+}
+
+}  // namespace
+
+SimTK::Transform toSimTKTransform(const model::Transform& X_AB, const std::string& what) {
+    const auto& R = X_AB.R;
+    // SimTK::Rotation's Mat33 constructor would silently re-orthogonalize a bad matrix, hiding
+    // a builder's mistake; reject it instead and take a good one as given.
+    const double error = calcOrthonormalityError(R);
+    const double det = R[0] * (R[4] * R[8] - R[5] * R[7]) - R[1] * (R[3] * R[8] - R[5] * R[6]) +
+                       R[2] * (R[3] * R[7] - R[4] * R[6]);
+    if (!(error < kRotationTolerance) || det < 0) {
+        std::ostringstream message;
+        message << what << " rotation is not accepted: ||R R^T - I|| = " << error
+                << ", det R = " << det << "; it must be a proper rotation";
+        throw InputError(message.str());
+    }
+    const SimTK::Mat33 R_AB(R[0], R[1], R[2], R[3], R[4], R[5], R[6], R[7], R[8]);
+    return SimTK::Transform(SimTK::Rotation(R_AB, true), toSimTKVec3(X_AB.p));
+}
+
+SimTK::MassProperties calcMassPropertiesAboutOrigin(const model::Body& body) {
+    const model::Inertia& I = body.inertia;
+    // Both the description and SimTK::Inertia list products as the off-diagonal elements of
+    // the inertia matrix (URDF convention), so they carry over unchanged.
+    const SimTK::Inertia I_Bcm_B(I.xx, I.yy, I.zz, I.xy, I.xz, I.yz);
+    const SimTK::Vec3 p_BCm = toSimTKVec3(body.p_BCm);
+    // The shift depends on p only through its outer products, so the direction from the mass
+    // centre to the origin (-p_BCm) and p_BCm give the same result.
+    const SimTK::Inertia I_Bo_B = I_Bcm_B.shiftFromMassCenter(-p_BCm, body.mass);
+    return SimTK::MassProperties(body.mass, p_BCm, I_Bo_B);
+}
+
+SimTK::Rotation calcAxisAlignedRotation(const model::Vec3& axis_J,
+                                        SimTK::CoordinateAxis mobilizerAxis) {
+    return SimTK::Rotation(SimTK::UnitVec3(toSimTKVec3(axis_J)), mobilizerAxis);
+}
+
+SimTK::MobilizedBody addRootMobilizedBody(SimTK::SimbodyMatterSubsystem& matter,
+                                          const model::Body& root, const model::Transform& X_GR) {
+    return SimTK::MobilizedBody::Weld(matter.updGround(), toSimTKTransform(X_GR, "X_GR"),
+                                      makeBody(root), SimTK::Transform());
+}
+
+SimTK::MobilizedBody addJointMobilizedBody(SimTK::MobilizedBody& parent, const model::Joint& joint,
+                                           const model::Body& child) {
+    const SimTK::Transform X_PJ = toSimTKTransform(joint.X_PJ, "joint '" + joint.name + "' X_PJ");
+    const SimTK::Body body = makeBody(child);
+    using Type = model::Joint::Type;
+    if (joint.type == Type::Fixed) {
+        return SimTK::MobilizedBody::Weld(parent, X_PJ, body, SimTK::Transform());
+    }
+    // A pin turns its M frame about F's z and a slider moves it along F's x. Placing F at
+    // X_PJ * R_JF and M at R_BM = R_JF makes B coincide with J at q = 0 and turn about the
+    // joint axis: X_PB = X_PJ * R_JF * X_FM(q) * ~R_JF.
+    if (joint.type == Type::Prismatic) {
+        const SimTK::Rotation R_JF = calcAxisAlignedRotation(joint.axis, SimTK::XAxis);
+        return SimTK::MobilizedBody::Slider(parent, X_PJ * SimTK::Transform(R_JF), body,
+                                            SimTK::Transform(R_JF));
+    }
+    const SimTK::Rotation R_JF = calcAxisAlignedRotation(joint.axis, SimTK::ZAxis);
+    return SimTK::MobilizedBody::Pin(parent, X_PJ * SimTK::Transform(R_JF), body,
+                                     SimTK::Transform(R_JF));
+}
+
+}  // namespace graspsim::system

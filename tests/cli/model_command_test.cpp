@@ -1,0 +1,145 @@
+// Runs the real `graspsim` executable: bad input must give one line on stderr naming the field,
+// the value and what is accepted, exit code 2, and no output file.
+
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct RunResult {
+    int exitCode = -1;
+    std::string out;
+    std::string err;
+};
+
+std::string slurp(const fs::path& path) {
+    std::ifstream in(path);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+class ModelCommand : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() /
+               ("graspsim_cli_" + std::to_string(::getpid()) + "_" +
+                ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    RunResult run(const std::string& args) const {
+        const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
+        const std::string command = std::string(GRASPSIM_CLI_PATH) + " " + args + " >" + out.string() + " 2>" + err.string();
+        const int status = std::system(command.c_str());
+        RunResult r;
+        r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+        r.out = slurp(out);
+        r.err = slurp(err);
+        return r;
+    }
+
+    // One line naming every expected fragment, exit code 2, and the output file absent.
+    void expectBadInput(const std::string& args, std::initializer_list<const char*> fragments) const {
+        const RunResult r = run(args);
+        EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        for (const char* f : fragments) EXPECT_NE(r.err.find(f), std::string::npos) << "missing '" << f << "' in: " << r.err;
+        EXPECT_FALSE(fs::exists(output())) << args;
+        EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 2);  // just the captures
+    }
+
+    std::string output() const { return (dir_ / "model.urdf").string(); }
+    std::string write(const std::string& name, const std::string& text) const {
+        std::ofstream(dir_ / name) << text;
+        return (dir_ / name).string();
+    }
+
+    fs::path dir_;
+};
+
+}  // namespace
+
+TEST_F(ModelCommand, BuildsAndDescribesTheDefaultArm) {
+    const RunResult build = run("model build -o " + output());
+    ASSERT_EQ(build.exitCode, 0) << build.err;
+    const RunResult info = run("model info --json " + output());
+    ASSERT_EQ(info.exitCode, 0) << info.err;
+    EXPECT_NE(info.out.find("\"dof\": 27"), std::string::npos) << info.out;
+    EXPECT_NE(info.out.find("\"simbody_mobilities\": 27"), std::string::npos) << info.out;
+    const RunResult text = run("model info " + output());
+    EXPECT_NE(text.out.find("DOF: 27"), std::string::npos) << text.out;
+}
+
+TEST_F(ModelCommand, HelpIsAvailableEverywhere) {
+    for (const char* args : {"--help", "model --help", "model build --help", "model info --help"}) {
+        const RunResult r = run(args);
+        EXPECT_EQ(r.exitCode, 0) << args;
+        EXPECT_NE(r.out.find("Usage"), std::string::npos) << args;
+    }
+    EXPECT_NE(run("model build --help").out.find("--stature"), std::string::npos);
+}
+
+TEST_F(ModelCommand, RejectsBadSubjects) {
+    expectBadInput("model build --mass -5 -o " + output(), {"--mass", "-5", "[20, 250] kg"});
+    expectBadInput("model build --mass 0 -o " + output(), {"--mass", "0"});
+    expectBadInput("model build --mass nan -o " + output(), {"--mass", "nan"});
+    expectBadInput("model build --mass heavy -o " + output(), {"--mass", "heavy", "not a number"});
+    expectBadInput("model build --stature 0.3 -o " + output(), {"--stature", "0.3", "[1, 2.5] m"});
+    expectBadInput("model build --stature inf -o " + output(), {"--stature", "inf"});
+    expectBadInput("model build --sex other -o " + output(), {"--sex", "other", "male or female"});
+    expectBadInput("model build --preset vortex -o " + output(), {"--preset", "vortex", "thesis"});
+    expectBadInput("model build --body leg -o " + output(), {"--body", "leg", "arm or humanoid"});
+    expectBadInput("model build --finger-damping -1 -o " + output(), {"finger damping", "-1"});
+}
+
+TEST_F(ModelCommand, RejectsUnknownFlagsAndMissingOutput) {
+    expectBadInput("model build --wings 2 -o " + output(), {"--wings"});
+    expectBadInput("model build", {"--output"});
+    expectBadInput("model frobnicate", {"frobnicate"});
+}
+
+TEST_F(ModelCommand, RejectsBadUrdf) {
+    const std::string malformed = write("bad.urdf", "<robot name='x'><link name='a'></robot>");
+    const RunResult r = run("model info " + malformed);
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("bad.urdf"), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+
+    const std::string missing = write("missing.urdf",
+        "<robot name='x'><link name='a'/><joint name='j' type='fixed'><parent link='a'/><child link='b'/></joint></robot>");
+    const RunResult m = run("model info " + missing);
+    EXPECT_EQ(m.exitCode, 2);
+    EXPECT_NE(m.err.find("missing.urdf"), std::string::npos) << m.err;
+    EXPECT_EQ(std::count(m.err.begin(), m.err.end(), '\n'), 1) << m.err;
+
+    const std::string inertia = write("inertia.urdf",
+        "<robot name='x'><link name='a'><inertial><mass value='1'/>"
+        "<inertia ixx='1' iyy='1' izz='3' ixy='0' ixz='0' iyz='0'/></inertial></link></robot>");
+    const RunResult i = run("model info " + inertia);
+    EXPECT_EQ(i.exitCode, 2);
+    EXPECT_NE(i.err.find("inertia"), std::string::npos) << i.err;
+
+    const RunResult none = run("model info " + (dir_ / "absent.urdf").string());
+    EXPECT_EQ(none.exitCode, 2);
+    EXPECT_NE(none.err.find("absent.urdf"), std::string::npos) << none.err;
+}
+
+TEST_F(ModelCommand, UnwritableOutputLeavesNothing) {
+    const RunResult r = run("model build -o /nonexistent-graspsim-dir/arm.urdf");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("/nonexistent-graspsim-dir/arm.urdf"), std::string::npos) << r.err;
+}

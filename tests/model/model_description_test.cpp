@@ -1,0 +1,114 @@
+#include "graspsim/model/model_description.h"
+
+#include "graspsim/error.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace graspsim::model;
+
+namespace {
+
+ModelDescription twoLinks() {
+    ModelDescription m;
+    m.name = "two";
+    Body base;
+    base.name = "base";
+    base.mass = 1;
+    base.inertia = {0.1, 0.1, 0.1};
+    Body arm = base;
+    arm.name = "arm";
+    m.bodies = {base, arm};
+    Joint j;
+    j.name = "hinge";
+    j.parent = "base";
+    j.child = "arm";
+    j.lower = -1;
+    j.upper = 1;
+    m.joints = {j};
+    return m;
+}
+
+std::string messageOf(const ModelDescription& m) {
+    try {
+        m.validate("test.urdf");
+    } catch (const graspsim::InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+TEST(Transform, ComposedRotationsAddAngles) {
+    const Transform a = Transform::axisAngle({0, 0, 1}, 0.3, {1, 0, 0});
+    const Transform b = Transform::axisAngle({0, 0, 1}, 0.4, {0, 2, 0});
+    const Transform ab = a * b;
+    const Transform expected = Transform::axisAngle({0, 0, 1}, 0.7);
+    for (int k = 0; k < 9; ++k) EXPECT_NEAR(ab.R[k], expected.R[k], 1e-15);
+    // b's origin (0, 2, 0) seen from a: rotated by 0.3 rad and shifted by (1, 0, 0).
+    EXPECT_NEAR(ab.p[0], 1 - 2 * std::sin(0.3), 1e-15);
+    EXPECT_NEAR(ab.p[1], 2 * std::cos(0.3), 1e-15);
+}
+
+TEST(ModelDescription, ValidTreePasses) {
+    const ModelDescription m = twoLinks();
+    EXPECT_NO_THROW(m.validate("test.urdf"));
+    EXPECT_EQ(m.getDofCount(), 1);
+    EXPECT_DOUBLE_EQ(m.calcTotalMass(), 2.0);
+}
+
+TEST(ModelDescription, MissingLinkIsNamed) {
+    ModelDescription m = twoLinks();
+    m.joints[0].child = "ghost";
+    const std::string msg = messageOf(m);
+    EXPECT_NE(msg.find("test.urdf"), std::string::npos);
+    EXPECT_NE(msg.find("ghost"), std::string::npos);
+}
+
+TEST(ModelDescription, TwoParentsAreRejected) {
+    ModelDescription m = twoLinks();
+    Joint second = m.joints[0];
+    second.name = "hinge2";
+    m.joints.push_back(second);
+    EXPECT_NE(messageOf(m).find("at most one parent"), std::string::npos);
+}
+
+TEST(ModelDescription, CycleIsRejected) {
+    ModelDescription m = twoLinks();
+    Body third = m.bodies[1];
+    third.name = "third";
+    m.bodies.push_back(third);
+    Joint back = m.joints[0];
+    back.name = "back";
+    back.parent = "third";
+    back.child = "arm";
+    m.joints[0].child = "third";
+    m.joints[0].parent = "arm";
+    m.joints.push_back(back);
+    EXPECT_NE(messageOf(m).find("cycle"), std::string::npos);
+}
+
+TEST(ModelDescription, NonPositiveDefiniteInertiaIsRejected) {
+    ModelDescription m = twoLinks();
+    m.bodies[1].inertia = {-0.1, 0.1, 0.1};
+    EXPECT_NE(messageOf(m).find("positive definite"), std::string::npos);
+    m.bodies[1].inertia = {1, 1, 3};
+    EXPECT_NE(messageOf(m).find("triangle"), std::string::npos);
+}
+
+TEST(ModelDescription, NegativeMassAndReversedLimitsAreRejected) {
+    ModelDescription m = twoLinks();
+    m.bodies[1].mass = -1;
+    EXPECT_NE(messageOf(m).find("mass"), std::string::npos);
+    m = twoLinks();
+    m.joints[0].lower = 2;
+    EXPECT_NE(messageOf(m).find("limits"), std::string::npos);
+}
+
+TEST(ModelDescription, DuplicateNamesAreRejected) {
+    ModelDescription m = twoLinks();
+    m.bodies[1].name = "base";
+    EXPECT_NE(messageOf(m).find("unique"), std::string::npos);
+}
