@@ -2,6 +2,7 @@
 
 #include "graspsim/error.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace graspsim::model {
@@ -68,6 +69,26 @@ double calcVolume(const Geometry& g) {
     }
     throw InputError("geometry '" + g.name + "' (mesh " + g.meshFile +
                      "): graspsim computes volumes of spheres, boxes, cylinders and capsules only");
+}
+
+std::array<double, 3> calcPrincipalMoments(const Inertia& I) {
+    // Closed-form eigenvalues of a symmetric 3x3 matrix (Smith 1961): with q = trace/3 and
+    // B = (A - q 1)/p, the eigenvalues are q + 2p cos(phi + 2 pi k/3), phi = acos(det(B)/2)/3.
+    const double offDiagonal = I.xy * I.xy + I.xz * I.xz + I.yz * I.yz;
+    std::array<double, 3> moments{I.xx, I.yy, I.zz};
+    if (offDiagonal > 0) {
+        const double q = (I.xx + I.yy + I.zz) / 3;
+        const double a = I.xx - q, b = I.yy - q, c = I.zz - q;
+        const double p = std::sqrt((a * a + b * b + c * c + 2 * offDiagonal) / 6);
+        const double det = a * (b * c - I.yz * I.yz) - I.xy * (I.xy * c - I.yz * I.xz) + I.xz * (I.xy * I.yz - b * I.xz);
+        const double r = std::clamp(det / (2 * p * p * p), -1.0, 1.0);
+        const double phi = std::acos(r) / 3;
+        moments[2] = q + 2 * p * std::cos(phi);
+        moments[0] = q + 2 * p * std::cos(phi + 2 * kPi / 3);
+        moments[1] = 3 * q - moments[0] - moments[2];
+    }
+    std::sort(moments.begin(), moments.end());
+    return moments;
 }
 
 Inertia reexpressInertia(const Inertia& I_G, const Transform& X_BG) {

@@ -1,6 +1,7 @@
 #include "graspsim/model/model_description.h"
 
 #include "graspsim/error.h"
+#include "graspsim/model/geometry_inertia.h"
 
 #include <algorithm>
 #include <cmath>
@@ -79,21 +80,16 @@ void validateInertia(const std::string& source, const Body& body) {
         if (!std::isfinite(v)) fail(source, field, describe(v), "inertia components must be finite");
     }
     if (body.isVirtual()) return;
-    // Sylvester's criterion: all leading principal minors positive.
-    const double m1 = I.xx;
-    const double m2 = I.xx * I.yy - I.xy * I.xy;
-    const double m3 = I.xx * (I.yy * I.zz - I.yz * I.yz) - I.xy * (I.xy * I.zz - I.yz * I.xz) +
-                      I.xz * (I.xy * I.yz - I.yy * I.xz);
-    if (!(m1 > 0 && m2 > 0 && m3 > 0)) {
-        fail(source, field, "[" + describe(I.xx) + " " + describe(I.yy) + " " + describe(I.zz) + "]",
-             "the central inertia of a body with mass must be positive definite");
+    const std::array<double, 3> moments = calcPrincipalMoments(I);
+    const std::string shown = "[" + describe(I.xx) + " " + describe(I.yy) + " " + describe(I.zz) + " " +
+                              describe(I.xy) + " " + describe(I.xz) + " " + describe(I.yz) + "]";
+    if (!(moments[0] > 0)) {
+        fail(source, field, shown, "the central inertia of a body with mass must be positive definite");
     }
-    // A physical body's principal moments obey the triangle inequality; the diagonal in any
-    // frame does too, which catches most typing errors without an eigen decomposition.
-    const double slack = 1e-12 * (I.xx + I.yy + I.zz);
-    if (I.xx + I.yy < I.zz - slack || I.yy + I.zz < I.xx - slack || I.xx + I.zz < I.yy - slack) {
-        fail(source, field, "[" + describe(I.xx) + " " + describe(I.yy) + " " + describe(I.zz) + "]",
-             "moments must satisfy the triangle inequality (Ixx + Iyy >= Izz, ...)");
+    // A rigid body's principal moments obey the triangle inequality (largest <= sum of the others).
+    const double slack = kInertiaTriangleTolerance * (moments[0] + moments[1] + moments[2]);
+    if (moments[0] + moments[1] < moments[2] - slack) {
+        fail(source, field, shown, "principal moments must satisfy the triangle inequality (largest <= sum of the others)");
     }
 }
 

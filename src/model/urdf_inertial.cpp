@@ -36,7 +36,7 @@ void checkInertia(const urdf::Inertial& in, const std::string& field, int line, 
                           describeMoments(moments));
     }
     // Same relative slack as ModelDescription::validate, so both accept the same flat plates.
-    const double slack = 1e-12 * (moments[0] + moments[1] + moments[2]);
+    const double slack = kInertiaTriangleTolerance * (moments[0] + moments[1] + moments[2]);
     if (moments[0] + moments[1] < moments[2] - slack) {
         source.reject(line, field, describeInertia(in),
                       "principal moments " + describeMoments(moments) +
@@ -45,26 +45,6 @@ void checkInertia(const urdf::Inertial& in, const std::string& field, int line, 
 }
 
 }  // namespace
-
-std::array<double, 3> calcPrincipalMoments(const Inertia& I) {
-    // Closed-form eigenvalues of a symmetric 3x3 matrix (Smith 1961): with q = trace/3 and
-    // B = (A - q 1)/p, the eigenvalues are q + 2p cos(phi + 2 pi k/3), phi = acos(det(B)/2)/3.
-    const double offDiagonal = I.xy * I.xy + I.xz * I.xz + I.yz * I.yz;
-    std::array<double, 3> moments{I.xx, I.yy, I.zz};
-    if (offDiagonal > 0) {
-        const double q = (I.xx + I.yy + I.zz) / 3;
-        const double a = I.xx - q, b = I.yy - q, c = I.zz - q;
-        const double p = std::sqrt((a * a + b * b + c * c + 2 * offDiagonal) / 6);
-        const double det = a * (b * c - I.yz * I.yz) - I.xy * (I.xy * c - I.yz * I.xz) + I.xz * (I.xy * I.yz - b * I.xz);
-        const double r = std::clamp(det / (2 * p * p * p), -1.0, 1.0);
-        const double phi = std::acos(r) / 3;
-        moments[2] = q + 2 * p * std::cos(phi);
-        moments[0] = q + 2 * p * std::cos(phi + 2 * kPi / 3);
-        moments[1] = 3 * q - moments[0] - moments[2];
-    }
-    std::sort(moments.begin(), moments.end());
-    return moments;
-}
 
 void setBodyMassProperties(const urdf::Inertial& in, int line, const UrdfSource& source, Body& body) {
     const std::string field = "link " + quoted(body.name) + " <inertial>";

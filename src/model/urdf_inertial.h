@@ -11,9 +11,6 @@
 
 namespace graspsim::model {
 
-/// Principal moments of the symmetric matrix [xx xy xz; xy yy yz; xz yz zz], ascending (kg m^2).
-std::array<double, 3> calcPrincipalMoments(const Inertia& I);
-
 /// Sets body.mass, body.p_BCm and body.inertia from a URDF <inertial>. Its origin xyz is the
 /// centre of mass in the link frame B; its inertia is given about the centre of mass in the
 /// inertial frame I, rotated from B by the origin's rpy, so I_B = R_BI I_I R_BI^T.

@@ -96,6 +96,9 @@ TEST(ModelDescription, NonPositiveDefiniteInertiaIsRejected) {
     EXPECT_NE(messageOf(m).find("positive definite"), std::string::npos);
     m.bodies[1].inertia = {1, 1, 3};
     EXPECT_NE(messageOf(m).find("triangle"), std::string::npos);
+    // Diagonal (1, 2, 2) looks fine, but with I_yz = 1 the principal moments are (1, 1, 3).
+    m.bodies[1].inertia = {1, 2, 2, 0, 0, 1};
+    EXPECT_NE(messageOf(m).find("triangle"), std::string::npos);
 }
 
 TEST(ModelDescription, NegativeMassAndReversedLimitsAreRejected) {

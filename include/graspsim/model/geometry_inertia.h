@@ -5,6 +5,7 @@
 
 #include "graspsim/model/model_description.h"
 
+#include <array>
 #include <vector>
 
 namespace graspsim::model {
@@ -25,6 +26,13 @@ MassProperties calcSolidMassProperties(const Geometry& geometry, double density)
 
 /// Mass properties of the union of non-overlapping solids of one density (kg/m^3).
 MassProperties calcSolidMassProperties(const std::vector<Geometry>& geometry, double density);
+
+/// Principal moments of the symmetric matrix [xx xy xz; xy yy yz; xz yz zz], ascending (kg m^2).
+std::array<double, 3> calcPrincipalMoments(const Inertia& I);
+
+/// Relative slack (of the trace) allowed in the triangle inequality of principal moments, so that
+/// a flat plate's inertia written to six significant digits by another tool still passes.
+constexpr double kInertiaTriangleTolerance = 1e-6;
 
 /// Rotates a central inertia given in G into B: I_B = R_BG I_G R_BG^T.
 Inertia reexpressInertia(const Inertia& I_G, const Transform& X_BG);
