@@ -1,7 +1,9 @@
-// The anthropometric arm in Simbody: kinematics against an independent forward-kinematics
-// composition of the description, and energy bookkeeping of the passive arm under gravity.
+// Built models in Simbody: the anthropometric arm's kinematics against an independent
+// forward-kinematics composition of the description, energy bookkeeping of the passive arm under
+// gravity, and the DOF count of the humanoid and of a foreign URDF.
 
 #include "graspsim/model/body_model.h"
+#include "graspsim/model/urdf_import.h"
 #include "graspsim/system/multibody_model.h"
 
 #include <gtest/gtest.h>
@@ -85,4 +87,26 @@ TEST(PassiveArm, ReleasedUnderGravityLosesEnergyOnlyThroughDamping) {
     const double lost = E0 - previousE;
     EXPECT_GT(lost, 0.5);  // the arm really swung and damped (joules)
     EXPECT_NEAR(lost / dissipated, 1.0, 0.01);
+}
+
+TEST(AnthropometricModels, HumanoidBuildsInSimbodyWithEveryDof) {
+    model::BuildOptions options;
+    options.body = model::BodyKind::Humanoid;
+    system::MultibodyModel humanoid(model::buildBodyModel(options));
+    SimTK::State state = humanoid.realizeTopology();
+    EXPECT_EQ(humanoid.getMatter().getNumMobilities(), 75);
+    humanoid.getSystem().realize(state, SimTK::Stage::Acceleration);
+    EXPECT_TRUE(state.getUDot().norm() < 1e6);  // finite accelerations: no singular joint chain
+}
+
+// Oracle: the DOF count of tests/data/foreign_gripper.urdf counted by hand (see that file):
+// 4 revolute + 1 continuous + 1 prismatic joints; fixed joints add none.
+TEST(AnthropometricModels, ForeignUrdfBuildsInSimbodyWithTheRightDofCount) {
+    const model::ModelDescription gripper =
+        model::importUrdf(std::string(GRASPSIM_TEST_DATA_DIR) + "/foreign_gripper.urdf");
+    system::MultibodyModel multibody(gripper);
+    SimTK::State state = multibody.realizeTopology();
+    EXPECT_EQ(multibody.getMatter().getNumMobilities(), 6);
+    multibody.getSystem().realize(state, SimTK::Stage::Acceleration);
+    EXPECT_TRUE(std::isfinite(state.getUDot().norm()));
 }
