@@ -1,0 +1,56 @@
+#pragma once
+/// @file
+/// Joint-space PD control toward target angles, with gravity compensation, as a Simbody force.
+///
+/// For each controlled joint j: tau_j = kp_j (q*_j - q_j) - kd_j u_j + g_j(q) (N m), where q*_j
+/// is the target (rad) held in a discrete state variable, and g_j(q) is the torque that holds the
+/// arm's own weight at the current pose (the negative of gravity's generalized force on the
+/// controlled bodies), so that the gains only have to move the arm, not hold it up.
+
+#include "graspsim/system/multibody_model.h"
+
+#include <simbody/Simbody.h>
+
+#include <string>
+#include <vector>
+
+namespace graspsim::control {
+
+/// Proportional and derivative gains of one joint.
+struct PdGains {
+    double kp = 0;  ///< N m/rad
+    double kd = 0;  ///< N m s/rad
+};
+
+/// One controlled joint: its name in the model and its gains.
+struct ControlledJoint {
+    std::string name;
+    PdGains gains;
+};
+
+/// PD joint torques toward targets, added to the model's force subsystem.
+class JointPdController {
+public:
+    /// Adds the controller to `model`'s forces. `gravityBodies` are the bodies whose weight is
+    /// compensated (the arm's; not the grasped object's). Call model.realizeTopology() after.
+    /// @throws graspsim::InputError naming an unknown joint or body.
+    JointPdController(system::MultibodyModel& model, const std::vector<ControlledJoint>& joints,
+                      const std::vector<std::string>& gravityBodies);
+
+    /// Names of the controlled joints, in the order of the target vector.
+    const std::vector<std::string>& getJointNames() const { return jointNames_; }
+
+    /// Sets the targets q* (rad), ordered as getJointNames(). Invalidates Stage::Dynamics.
+    void setTargets(SimTK::State& state, const SimTK::Vector& targets) const;
+    /// The current targets q* (rad).
+    const SimTK::Vector& getTargets(const SimTK::State& state) const;
+    /// The joints' current angles (rad), ordered as getJointNames().
+    SimTK::Vector findJointAngles(const SimTK::State& state) const;
+
+private:
+    class Implementation;
+    std::vector<std::string> jointNames_;
+    const Implementation* impl_ = nullptr;  // owned by the Force::Custom handle in the subsystem
+};
+
+}  // namespace graspsim::control

@@ -1,0 +1,65 @@
+#include "graspsim/control/fingertip_ik.h"
+
+#include "graspsim/error.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace graspsim::control {
+
+FingertipIk::FingertipIk(const system::MultibodyModel& model, const std::vector<std::string>& endEffectors,
+                         const std::vector<std::string>& movingJoints)
+    : model_(model), movingJoints_(movingJoints), assembler_(std::make_unique<SimTK::Assembler>(model.getSystem())) {
+    const model::ModelDescription& d = model.getDescription();
+    const SimTK::SimbodyMatterSubsystem& matter = model.getMatter();
+    for (const std::string& joint : movingJoints) {
+        const model::Joint* j = d.findJoint(joint);
+        if (!j || j->type == model::Joint::Type::Fixed) throw InputError("IK: no movable joint named '" + joint + "'");
+        const SimTK::MobilizedBody& mobod = model.getMobilizedBody(j->child);
+        movingBodies_.push_back(mobod.getMobilizedBodyIndex());
+        if (j->hasLimits()) assembler_->restrictQ(mobod.getMobilizedBodyIndex(), SimTK::MobilizerQIndex(0), j->lower, j->upper);
+    }
+    // Lock everything that is not a moving joint: the rest of the arm and any grasped object.
+    for (SimTK::MobilizedBodyIndex b(1); b < matter.getNumBodies(); ++b) {
+        if (std::find(movingBodies_.begin(), movingBodies_.end(), b) == movingBodies_.end()) assembler_->lockMobilizer(b);
+    }
+    markers_ = new SimTK::Markers();
+    SimTK::Array_<SimTK::Markers::MarkerIx> order;
+    for (const std::string& name : endEffectors) {
+        const model::EndEffector* e = d.findEndEffector(name);
+        if (!e) throw InputError("IK: no end-effector named '" + name + "'");
+        const SimTK::Vec3 p_BE(e->p_BE[0], e->p_BE[1], e->p_BE[2]);
+        order.push_back(markers_->addMarker(name, model.getMobilizedBody(e->body), p_BE));
+    }
+    markers_->defineObservationOrder(order);
+    assembler_->adoptAssemblyGoal(markers_);
+    assembler_->setAccuracy(1e-6);
+}
+
+FingertipIk::~FingertipIk() = default;
+
+SimTK::Vector FingertipIk::solve(const SimTK::State& state, const std::vector<SimTK::Vec3>& goals_G) {
+    SimTK::Array_<SimTK::Vec3> observations(goals_G.begin(), goals_G.end());
+    markers_->moveAllObservations(observations);
+    try {
+        // The locked joints (arm, object) come from `state`; the Assembler starts the moving
+        // joints from there too, which keeps consecutive solutions close (warm start).
+        assembler_->initialize(state);
+        assembler_->assemble();
+    } catch (const std::exception& e) {
+        throw Error(std::string("fingertip IK failed at t = ") + std::to_string(state.getTime()) + " s: " + e.what());
+    }
+    const SimTK::State& solved = assembler_->getInternalState();
+    double sumSquares = 0;
+    for (SimTK::Markers::MarkerIx m(0); m < markers_->getNumMarkers(); ++m) {
+        sumSquares += markers_->findCurrentMarkerErrorSquared(m);
+    }
+    lastError_ = std::sqrt(sumSquares / std::max(1, markers_->getNumMarkers()));
+    SimTK::Vector q(static_cast<int>(movingBodies_.size()));
+    for (std::size_t k = 0; k < movingBodies_.size(); ++k) {
+        q[static_cast<int>(k)] = model_.getMatter().getMobilizedBody(movingBodies_[k]).getOneQ(solved, 0);
+    }
+    return q;
+}
+
+}  // namespace graspsim::control

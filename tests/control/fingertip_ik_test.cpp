@@ -1,0 +1,67 @@
+#include "graspsim/control/fingertip_ik.h"
+
+#include "graspsim/model/body_model.h"
+
+#include "graspsim/error.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+using namespace graspsim;
+
+namespace {
+
+const std::vector<std::string> kTips = {"thumb_tip", "index_tip", "middle_tip", "ring_tip", "little_tip"};
+
+std::vector<std::string> fingerJoints(const model::ModelDescription& arm) {
+    std::vector<std::string> joints;
+    for (const model::Joint& j : arm.joints) {
+        const bool hand = arm.findBody(j.child)->segment == "hand";
+        if (hand && j.name.find("wrist") == std::string::npos) joints.push_back(j.name);
+    }
+    return joints;
+}
+
+}  // namespace
+
+// Oracle: goals produced by a known pose are reachable, so IK must find a pose that puts every
+// fingertip on its goal (not necessarily the same angles: the hand is redundant).
+TEST(FingertipIk, ReachesGoalsMadeByAKnownPose) {
+    const model::ModelDescription arm = model::buildBodyModel(model::BuildOptions{});
+    system::MultibodyModel model(arm);
+    SimTK::State s = model.realizeTopology();
+    model.setJointPosition(s, "elbow_flexion", 1.4);
+    model.setJointPosition(s, "shoulder_flexion", 0.6);
+    std::mt19937 rng(3);
+    const std::vector<std::string> joints = fingerJoints(arm);
+    ASSERT_EQ(joints.size(), 20u);
+    SimTK::State known = s;
+    for (const std::string& j : joints) {
+        const model::Joint& joint = *arm.findJoint(j);
+        std::uniform_real_distribution<double> mid(joint.lower + 0.25 * (joint.upper - joint.lower),
+                                                   joint.lower + 0.75 * (joint.upper - joint.lower));
+        model.setJointPosition(known, j, mid(rng));
+    }
+    model.getSystem().realize(known, SimTK::Stage::Position);
+    std::vector<SimTK::Vec3> goals;
+    for (const std::string& tip : kTips) goals.push_back(model.findEndEffectorLocationInGround(known, tip));
+
+    control::FingertipIk ik(model, kTips, joints);
+    const SimTK::Vector q = ik.solve(s, goals);
+    SimTK::State solved = s;
+    for (std::size_t k = 0; k < joints.size(); ++k) model.setJointPosition(solved, joints[k], q[static_cast<int>(k)]);
+    model.getSystem().realize(solved, SimTK::Stage::Position);
+    for (std::size_t k = 0; k < kTips.size(); ++k) {
+        EXPECT_LT((model.findEndEffectorLocationInGround(solved, kTips[k]) - goals[k]).norm(), 1e-4) << kTips[k];
+    }
+    EXPECT_LT(ik.getLastError(), 1e-4);
+    // The arm was locked: its joints did not move.
+    EXPECT_DOUBLE_EQ(model.getJointPosition(solved, "elbow_flexion"), 1.4);
+}
+
+TEST(FingertipIk, UnknownNamesAreRejected) {
+    system::MultibodyModel model(model::buildBodyModel(model::BuildOptions{}));
+    EXPECT_THROW(control::FingertipIk(model, {"toe_tip"}, {"index_pip_flexion"}), InputError);
+    EXPECT_THROW(control::FingertipIk(model, {"index_tip"}, {"knee_flexion"}), InputError);
+}
