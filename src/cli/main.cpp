@@ -2,6 +2,7 @@
 // 0 success, 2 bad input (one line on stderr), 3 numerical failure, 1 anything unexpected.
 
 #include "model_command.h"
+#include "simulate_command.h"
 
 #include "graspsim/error.h"
 
@@ -14,9 +15,11 @@ int main(int argc, char** argv) {
     app.require_subcommand(0, 1);  // none given: say which exist; unknown ones: CLI11 names them
     app.set_version_flag("--version", "graspsim 0.1.0");
     graspsim::cli::ModelCommand model(app);
+    graspsim::cli::SimulateCommand simulate(app);
     try {
         app.parse(argc, argv);
-        if (!model.parsed()) throw graspsim::InputError("a command is required: model (see graspsim --help)");
+        if (simulate.parsed()) return simulate.run();
+        if (!model.parsed()) throw graspsim::InputError("a command is required: model or simulate (see graspsim --help)");
         return model.run();
     } catch (const CLI::ParseError& e) {
         // Help and version requests are "errors" with exit code 0: let CLI11 print the help of

@@ -1,0 +1,96 @@
+#pragma once
+/// @file
+/// Compliant contact between the hand and grasped objects as a Simbody force element.
+///
+/// Why not Simbody's own: CompliantContactSubsystem has no capsule geometry and no brick-sphere
+/// tracker (and ContactGeometry cannot be extended from outside), and HuntCrossleyForce returns
+/// from its per-contact loop at the first contact whose force is not positive, silently
+/// dropping every later contact of that evaluation. This element evaluates every enabled pair
+/// and every contact point of a pair on its own.
+///
+/// Per contact point P (from findContacts(), normal n from surface a to surface b), with V_GA,
+/// V_GB the bodies' spatial velocities:
+///  - relative velocity of b's material point at P w.r.t. a's: v = v_GB(P) - v_GA(P);
+///  - penetration rate xdot = -v . n; slip velocity v_t = v - (v . n) n;
+///  - normal force f_n and friction f_t from contact_force_law.h with the pair's combined
+///    materials; body b receives F = f_n n + f_t at P, body a receives -F at P.
+/// Potential energy: sum over contacts of (8/15) E* sqrt(R) x^(5/2) (elastic part only; the
+/// dissipation and friction are not conservative).
+///
+/// Stages: forces are computed when the system is realized to Stage::Dynamics (they need
+/// positions and velocities); the potential energy needs Stage::Position; reports need
+/// Stage::Velocity. The element keeps no cache: every evaluation redoes the geometry.
+
+#include <simbody/Simbody.h>
+
+#include <string>
+#include <vector>
+
+#include "graspsim/contact/contact_pair.h"
+
+namespace graspsim::contact {
+
+/// One contact point as the force element sees it at a state.
+struct ContactReport {
+    int pairIndex = -1;                    ///< index of the pair in the element's list
+    std::string bodyA, bodyB;              ///< body names of surfaces a and b
+    std::string shapeA, shapeB;            ///< shape names of surfaces a and b
+    SimTK::Vec3 p_G{0, 0, 0};              ///< contact point in Ground (m)
+    SimTK::UnitVec3 n_G;                   ///< unit normal from a toward b, in Ground
+    double depth = 0;                      ///< penetration (m), > 0
+    double depthRate = 0;                  ///< penetration rate xdot (m/s), > 0 while penetrating
+    SimTK::Vec3 slipVelocity_G{0, 0, 0};   ///< v_t, slip of b relative to a at P, in Ground (m/s)
+    double normalForce = 0;                ///< f_n (N), >= 0, pushes b along +n_G and a along -n_G
+    SimTK::Vec3 frictionForce_G{0, 0, 0};  ///< f_t on body b, in Ground (N); a gets -f_t
+};
+
+/// The compliant contact force element (a Simbody Force::Custom handle; copies refer to the
+/// same element, and the element itself belongs to the GeneralForceSubsystem).
+///
+/// Enabling and disabling pairs: each pair's on/off flag lives in the State, in one discrete
+/// variable of Stage::Instance, as Simbody does for Force::disable() and Constraint::disable().
+/// Why Instance rather than Dynamics: switching a pair is a jump in force, and after an event
+/// handler Simbody's TimeStepper passes the lowest stage the handler modified to
+/// Integrator::reinitialize(), which decides from it how much to restart. An Instance change
+/// makes that an unmistakable restart (no step-size or, for CPodes, multistep history carried
+/// across the jump), and it invalidates every realized stage so no cached result survives.
+/// The cost, a full re-realization, is paid only at the switch. Change flags in an event
+/// handler (the TimeStepper realizes and reinitializes after it), or before
+/// Integrator::initialize(); changing them between two stepTo() calls of a bare Integrator
+/// without reinitialize() is not supported.
+class CompliantContactForce : public SimTK::Force::Custom {
+public:
+    /// An empty handle.
+    CompliantContactForce() = default;
+
+    /// Adds the element to `forces`. Each pair's materials are validated and combined here.
+    /// @throws graspsim::InputError naming the pair for an invalid material or a pair of two
+    ///         half-spaces.
+    CompliantContactForce(SimTK::GeneralForceSubsystem& forces, std::vector<ContactPair> pairs);
+
+    /// Number of contact pairs.
+    int getNumPairs() const;
+    /// Pair `pairIndex`, as given to the constructor.
+    /// @throws graspsim::InputError if pairIndex is out of range.
+    const ContactPair& getPair(int pairIndex) const;
+
+    /// Whether pair `pairIndex` is evaluated in `state`. Needs Stage::Topology.
+    /// @throws graspsim::InputError if pairIndex is out of range.
+    bool isPairEnabled(const SimTK::State& state, int pairIndex) const;
+    /// Switches pair `pairIndex` on or off; invalidates Stage::Instance and later.
+    /// @throws graspsim::InputError if pairIndex is out of range.
+    void setPairEnabled(SimTK::State& state, int pairIndex, bool enabled) const;
+    /// Switches every listed pair on or off at once (one invalidation).
+    /// @throws graspsim::InputError if an index is out of range (no flag changed then).
+    void setPairsEnabled(SimTK::State& state, const std::vector<int>& pairIndices,
+                         bool enabled) const;
+
+    /// Every contact point of every enabled pair, with its forces. Needs Stage::Velocity.
+    std::vector<ContactReport> findContactReports(const SimTK::State& state) const;
+
+private:
+    // A Force::Custom handle may hold no data; everything lives in its Implementation (src).
+    void checkPairIndex(int pairIndex) const;
+};
+
+}  // namespace graspsim::contact

@@ -1,0 +1,89 @@
+#pragma once
+/// @file
+/// Contact geometry between two shapes: where two posed shapes overlap, how deep, and along
+/// which normal. Pure functions of the shapes and their poses (no Simbody state).
+///
+/// Everything is exact signed-distance geometry. Spheres and capsules are treated as "swept
+/// spheres": a core (point or segment) plus a radius. Boxes and half-spaces are solids with a
+/// signed distance function (SDF, negative inside). The supported pairs, in either order:
+///
+///  - sphere/capsule vs sphere/capsule: one contact, between the closest points of the two
+///    cores (closed form);
+///  - sphere/capsule vs box or half-space: one contact, at the core point where the solid's SDF
+///    is least;
+///  - box vs box: each vertex of either box inside the other, and each edge of either box whose
+///    deepest point inside the other is interior to the edge (an edge crossing the other box's
+///    edge, or lying across one of its faces);
+///  - box vs half-space: each vertex below the surface.
+///
+/// Half-space vs half-space is rejected. Cylinders and meshes have no contact support.
+///
+/// Depth, point and normal of one contact: with the deepest core point c (or vertex, or edge
+/// point), its signed distance d to the other solid and that solid's outward normal o there,
+/// depth = r - d (r the swept radius, 0 for box features), normal -o from the penetrating shape
+/// toward the solid (negated when the solid is A), point midway between the two surface points
+/// c - d o and c - r o.
+///
+/// Rules that keep contacts from jumping:
+///  - Along a segment (capsule axis, box edge) the SDF of a convex solid is convex; we minimize
+///    it by a bracketing search to 1e-12 of the segment. Where it is flat (to 1e-14 m) over an
+///    interval, because the segment lies parallel to a face, the contact sits at the middle of
+///    that interval. Two parallel capsules touch at the middle of their overlap.
+///  - Inside a box, a point equally deep (to 1e-10 m) below two or three faces gets the
+///    normalized sum of those faces' normals.
+///  - A box edge whose deepest point inside the other box lies below two adjacent faces crosses
+///    the edge where they meet. Its contact uses the exact line-line geometry of the two edges
+///    (normal along their cross product, depth = gap between the lines; the SDF depth would be
+///    up to sqrt 2 too small), and it is counted once although both boxes' edges see it.
+///  - A box edge whose deepest point is one of its ends adds nothing: that end is a vertex,
+///    already counted. (For two equal, exactly aligned boxes a vertex of each sits at the same
+///    place, so such a corner counts twice.)
+///  - Limitation: a box feature pushed more than halfway through the other box's thinnest
+///    dimension (or a capsule core through a box) is equally deep below two opposite faces; the
+///    normal then follows the side of the mid-plane the point falls on, so it may flip, and the
+///    two argument orders may disagree. Compliant contact never gets near such depths.
+///
+/// Effective Hertz radius R (m) of each contact: 1/R = 1/R_A + 1/R_B over the curved surfaces
+/// involved, with a flat face (box face, half-space) contributing nothing. A swept sphere against
+/// a box or half-space therefore has R = its radius (box edges and corners under a sphere are
+/// treated like the faces they bound); a box vertex or edge pressing into a face has R =
+/// ContactShape::cornerRadius (see kDefaultBoxCornerRadius); an edge-edge contact combines the
+/// two boxes' corner radii.
+///
+/// Symmetry: findContacts(b, X_GB, a, X_GA) returns the same contacts as findContacts(a, X_GA,
+/// b, X_GB) with every normal negated (box-box contacts possibly in another order).
+
+#include <simbody/Simbody.h>
+
+#include <vector>
+
+#include "graspsim/contact/contact_shape.h"
+#include "graspsim/model/model_description.h"
+
+namespace graspsim::contact {
+
+/// One point contact between shape A and shape B, in Ground G.
+struct ContactPoint {
+    SimTK::Vec3 p_G{0, 0, 0};  ///< contact point, midway between the two surfaces along n_G (m)
+    SimTK::UnitVec3 n_G;       ///< unit normal, pointing from shape A toward shape B
+    double depth = 0;          ///< penetration depth along n_G, > 0 (m)
+    double radius = 0;         ///< effective Hertz radius of curvature (m), see the file comment
+};
+
+/// Contacts between shape `a` posed at X_GA (pose of A's shape frame in Ground) and shape `b`
+/// at X_GB. Empty when they do not overlap; touching (depth 0) is not a contact.
+/// @throws graspsim::InputError for two half-spaces.
+std::vector<ContactPoint> findContacts(const ContactShape& a, const SimTK::Transform& X_GA,
+                                       const ContactShape& b, const SimTK::Transform& X_GB);
+
+/// As above, appending to `contacts` (so a caller can reuse one buffer without allocating).
+void appendContacts(const ContactShape& a, const SimTK::Transform& X_GA, const ContactShape& b,
+                    const SimTK::Transform& X_GB, std::vector<ContactPoint>& contacts);
+
+/// Contacts between two model geometries; X_GA and X_GB are the poses of the geometry frames in
+/// Ground (the geometries' own X_BG are not used here: compose X_GA = X_GBody * X_BG yourself).
+/// @throws graspsim::InputError for a Cylinder or Mesh, or sizes ContactShape rejects.
+std::vector<ContactPoint> findContacts(const model::Geometry& a, const SimTK::Transform& X_GA,
+                                       const model::Geometry& b, const SimTK::Transform& X_GB);
+
+}  // namespace graspsim::contact

@@ -1,0 +1,31 @@
+#pragma once
+/// @file
+/// The files a simulation run leaves in its output folder.
+///
+/// - trajectory.csv: time (s), object position x, y, z (m, ground), orientation quaternion
+///   w, x, y, z, then every hand joint angle (rad) by name;
+/// - contacts.csv: one row per contact and output time: time (s), body_a, shape_a, body_b,
+///   shape_b, contact point x, y, z (m, ground), normal x, y, z (from a toward b), normal force
+///   (N), friction force on b x, y, z (N, ground), penetration (m);
+/// - summary.json: the SimulationSummary fields (see grasp_simulation.h), with "complete": false
+///   and "failure" when the run stopped early.
+/// Each file is written whole to a temporary name and renamed, so a crash never leaves half a file.
+
+#include "graspsim/simulation/grasp_simulation.h"
+
+#include <string>
+
+namespace graspsim::results {
+
+/// trajectory.csv's text.
+std::string formatTrajectoryCsv(const simulation::SimulationResult& result);
+/// contacts.csv's text.
+std::string formatContactsCsv(const simulation::SimulationResult& result);
+/// summary.json's text.
+std::string formatSummaryJson(const simulation::SimulationSummary& summary);
+
+/// Writes the three files into `folder`, which must exist.
+/// @throws graspsim::InputError naming the file when it cannot be written.
+void writeResultFiles(const std::string& folder, const simulation::SimulationResult& result);
+
+}  // namespace graspsim::results

@@ -1,0 +1,159 @@
+#pragma once
+/// @file
+/// One grasp experiment as plain data: world, subject, object, grasp pose, goal points,
+/// perturbations, contact, controller and simulation settings.
+///
+/// A scenario is what a user edits to run another object or another grasp without touching
+/// C++; scenario_file.h reads it from a commented YAML file. Everything here is SI (m, kg, s,
+/// rad, N); the file's angles are degrees and are converted once, when the file is read.
+///
+/// Frames: Ground G is the world frame of the arm model: y up, x anterior, z to the subject's
+/// right, origin at the right shoulder joint centre. The object frame O sits at the object's
+/// centre of mass with its axes along the object's symmetry axes (model/object_model.h).
+
+#include "graspsim/model/build_options.h"
+#include "graspsim/model/model_description.h"
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace graspsim::scenario {
+
+using model::Vec3;
+
+/// The world the experiment runs in.
+struct WorldSpec {
+    Vec3 gravity{0, -9.81, 0};  ///< gravitational acceleration in G (m/s^2); default (0, -9.81, 0)
+};
+
+/// Shape of the grasped object.
+enum class ObjectShape {
+    Sphere,  ///< solid sphere of `radius` (the thesis's ball)
+    Box      ///< solid box of `size` (the thesis's phone)
+};
+
+/// "sphere" or "box", the spelling a scenario file uses.
+std::string toString(ObjectShape shape);
+
+/// The grasped object: a free rigid body of uniform density. No defaults for its shape, mass,
+/// size or position: a scenario file must give them.
+struct ObjectSpec {
+    ObjectShape shape = ObjectShape::Sphere;
+    double mass = 0;           ///< kg, > 0
+    double radius = 0;         ///< sphere radius (m), > 0; sphere only
+    Vec3 size{0, 0, 0};        ///< box edge lengths along O's x, y, z (m), each > 0; box only
+    Vec3 position{0, 0, 0};    ///< p_GO: centre of mass in G at t = 0 (m)
+    Vec3 orientation{0, 0, 0}; ///< body-fixed X-Y-Z Euler angles of O in G at t = 0 (rad); default 0
+
+    /// X_GO, the object's initial pose in ground: translation `position`, rotation
+    /// R_GO = Rx(orientation[0]) * Ry(orientation[1]) * Rz(orientation[2]).
+    model::Transform findPose() const;
+
+    /// Signed distance (m) from the point p_OP (object frame, m) to the object's surface:
+    /// positive outside, negative inside, zero on the surface.
+    double calcSurfaceDistance(const Vec3& p_OP) const;
+};
+
+/// The object as a one-body model (body "ball" for a sphere, "phone" for a box), built by
+/// model::buildBallModel / model::buildPhoneModel with the spec's mass and size. The pose is
+/// not part of the description; use ObjectSpec::findPose().
+model::ModelDescription buildObjectModel(const ObjectSpec& object);
+
+/// A force pushed on the object's centre of mass for a while. The thesis runs each
+/// perturbation in a simulation of its own (reset in between), so perturbations of one
+/// scenario usually share one time window.
+struct Perturbation {
+    std::string name;        ///< its key in the file, e.g. "f1"
+    Vec3 force{0, 0, 0};     ///< force in G, applied at the object's centre of mass (N)
+    double start = 0;        ///< when it starts (s), >= 0
+    double duration = 0;     ///< how long it acts (s), > 0; it stops at start + duration
+
+    /// True when the force acts at time t (s): start <= t < start + duration.
+    bool isActiveAt(double t) const { return t >= start && t < start + duration; }
+};
+
+/// Compliant contact between skin and the object: Hunt-Crossley normal force with static,
+/// dynamic and viscous friction, as Simbody's CompliantContactSubsystem computes it. The
+/// defaults are for a finger pad on smooth plastic; models/scenarios/ball-clutch.yaml gives
+/// their sources (friction within the range reviewed by Derler & Gerhardt 2012; the rest are
+/// assumptions).
+struct ContactSpec {
+    /// Plane-strain modulus E/(1 - nu^2) of the skin-object pair (Pa), > 0; default 5e5, a soft pad.
+    double stiffness = 5e5;
+    /// Hunt-Crossley dissipation coefficient (s/m), >= 0; default 0.8.
+    double dissipation = 0.8;
+    /// Static friction coefficient, >= dynamicFriction; default 0.9.
+    double staticFriction = 0.9;
+    /// Dynamic (sliding) friction coefficient, >= 0; default 0.7.
+    double dynamicFriction = 0.7;
+    /// Viscous friction coefficient (s/m), >= 0; default 0.
+    double viscousFriction = 0.0;
+    /// Slip speed at which friction passes from static to dynamic (m/s), > 0; default 1e-3.
+    double transitionVelocity = 1e-3;
+};
+
+/// The grasp controller. At t = 0 the hand is placed in the grasp pose kinematically (the thesis's
+/// "forward kinematics once"); inverse kinematics then drives each fingertip toward its goal moved
+/// pressDepth inside the surface, and a joint PD controller tracks the resulting angles. The
+/// object is held in place until approachTime, then released to the grasp. kp and kd are the gains of the finger and
+/// thumb joints, the ones that make the grasp force.
+struct ControllerSpec {
+    /// Time the object is held in place while the fingers close on it, before it is released (s),
+    /// >= 0; default 0.5.
+    double approachTime = 0.5;
+    /// Depth of each IK goal below the object's surface along the inward normal, so that the
+    /// fingers press (m), >= 0 and below half the object's smallest dimension; default 0.002.
+    double pressDepth = 0.002;
+    /// Proportional gain of the finger and thumb joints' PD controller (N m/rad), > 0; default 5.
+    double kp = 5.0;
+    /// Derivative gain of the finger and thumb joints' PD controller (N m s/rad), >= 0; default 0.05.
+    double kd = 0.05;
+    /// Time between two IK solutions (s), > 0; default 0.01.
+    double ikInterval = 0.01;
+};
+
+/// Integration and evaluation settings.
+struct SimulationSpec {
+    /// Simulated time (s), > 0; default 3.
+    double duration = 3.0;
+    /// Time between reported states (s), in (0, duration]; default 0.01.
+    double outputInterval = 0.01;
+    /// Relative accuracy of the integrator, in (0, 1); default 1e-3.
+    double accuracy = 1e-3;
+    /// Time from which the grasp counts as settled, and the object's drift is measured (s), in
+    /// [ControllerSpec::approachTime, duration]; default 1.
+    double settleTime = 1.0;
+    /// The object counts as held while each goal point (moved with the object) stays within this
+    /// distance of its fingertip (m), > 0; default 0.02.
+    double heldTolerance = 0.02;
+};
+
+/// One grasp experiment.
+struct Scenario {
+    std::string name;         ///< short identifier, e.g. "ball-clutch"
+    std::string description;  ///< one sentence for people; may be empty
+    std::string source;       ///< the file it was read from (for messages)
+    WorldSpec world;
+    /// Subject (sex, mass in kg, stature in m) and preset of the arm model. Defaults: de Leva's
+    /// male reference subject, thesis preset, right arm. Other BuildOptions keep their defaults.
+    model::BuildOptions bodyOptions = makeDefaultBodyOptions();
+    ObjectSpec object;
+    /// Target angle (rad) of arm and hand joints in the grasp pose, by joint name of
+    /// model::buildBodyModel(bodyOptions); joints not listed stay at 0.
+    std::map<std::string, double> graspPose;
+    /// Goal point of each end-effector (e.g. "index_tip") on the object's surface, in O (m).
+    std::map<std::string, Vec3> goals;
+    std::vector<Perturbation> perturbations;  ///< in file order; may be empty
+    ContactSpec contact;
+    ControllerSpec controller;
+    SimulationSpec simulation;
+
+    /// The perturbation called `perturbationName` (e.g. "f1"), or nullptr.
+    const Perturbation* findPerturbation(const std::string& perturbationName) const;
+
+    /// Arm model options of a scenario that says nothing about its subject.
+    static model::BuildOptions makeDefaultBodyOptions();
+};
+
+}  // namespace graspsim::scenario

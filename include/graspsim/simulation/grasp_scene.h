@@ -1,0 +1,79 @@
+#pragma once
+/// @file
+/// One grasp experiment assembled in Simbody: the arm and hand, the free object, finger-object
+/// contact, the PD + IK grasp controller and the scenario's perturbation.
+///
+/// The thesis's sequence (Figure 4.1): the hand is put in the grasp pose kinematically at t = 0
+/// ("forward kinematics once"); IK then tracks the fingertips to goal points just inside the
+/// object's surface so the fingers press. The object is held in place (its mobilizer locked)
+/// until the scenario's approach time, when it is released and only the grasp holds it.
+
+#include "graspsim/contact/compliant_contact_force.h"
+#include "graspsim/control/grasp_controller.h"
+#include "graspsim/scenario/scenario.h"
+#include "graspsim/simulation/perturbation_force.h"
+#include "graspsim/simulation/simulation_options.h"
+#include "graspsim/system/multibody_model.h"
+
+#include <simbody/Simbody.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace graspsim::simulation {
+
+/// Arm joints (shoulder to wrist) hold the grasp pose with these PD gains on top of gravity
+/// compensation: stiff enough that a 10 N perturbation on the object moves the wrist by
+/// millimetres, so the hand, not the arm, decides whether the object slips.
+constexpr double kArmKp = 200.0;  ///< N m/rad
+constexpr double kArmKd = 20.0;   ///< N m s/rad
+
+/// The assembled experiment. Neither copyable nor movable (Simbody elements refer into it).
+class GraspScene {
+public:
+    /// @throws graspsim::InputError for an unknown perturbation name or an unsupported option.
+    GraspScene(const scenario::Scenario& scenario, const SimulationOptions& options);
+    GraspScene(const GraspScene&) = delete;
+    GraspScene& operator=(const GraspScene&) = delete;
+
+    const scenario::Scenario& getScenario() const { return scenario_; }
+    const system::MultibodyModel& getModel() const { return model_; }
+    const SimTK::MultibodySystem& getSystem() const { return model_.getSystem(); }
+    /// The object's body; its frame O is at its centre of mass.
+    const SimTK::MobilizedBody& getObject() const { return object_; }
+    const contact::CompliantContactForce& getContacts() const { return contacts_; }
+    const control::IkTiming& getIkTiming() const { return ikTiming_; }
+    /// Names of the end-effectors that have goals, in goal order.
+    const std::vector<std::string>& getGoalEndEffectors() const { return goalEndEffectors_; }
+    /// The goals on the object's surface (not pressed in), in O (m), in goal order.
+    const std::vector<SimTK::Vec3>& getSurfaceGoals() const { return surfaceGoals_; }
+    /// The perturbation of this run, or nullptr.
+    const PerturbationForce* getPerturbation() const { return perturbation_.get(); }
+
+    /// The state at t = 0: grasp pose, object at its initial pose and locked, IK targets set.
+    SimTK::State makeInitialState();
+    /// Releases the object (unlocks its mobilizer): an Instance-stage change.
+    void releaseObject(SimTK::State& state) const;
+    /// When the object is released (s).
+    double getReleaseTime() const { return scenario_.controller.approachTime; }
+
+private:
+    void addObject();
+    void addContacts();
+    void addController();
+
+    const scenario::Scenario& scenario_;
+    system::MultibodyModel model_;
+    SimTK::MobilizedBody::Free object_;
+    contact::CompliantContactForce contacts_;
+    std::unique_ptr<control::JointPdController> pd_;
+    std::unique_ptr<control::FingertipIk> ik_;
+    control::GraspController* controller_ = nullptr;  // owned by the system
+    control::IkTiming ikTiming_;
+    std::unique_ptr<PerturbationForce> perturbation_;
+    std::vector<std::string> goalEndEffectors_;
+    std::vector<SimTK::Vec3> surfaceGoals_;
+};
+
+}  // namespace graspsim::simulation

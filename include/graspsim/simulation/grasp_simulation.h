@@ -1,0 +1,69 @@
+#pragma once
+/// @file
+/// Running one grasp experiment and what comes out of it.
+
+#include "graspsim/contact/compliant_contact_force.h"
+#include "graspsim/scenario/scenario.h"
+#include "graspsim/simulation/simulation_options.h"
+
+#include <simbody/Simbody.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace graspsim::simulation {
+
+/// The object's pose and the hand's joint angles at one output time.
+struct TrajectorySample {
+    double time = 0;                  ///< s
+    SimTK::Vec3 p_GO{0};              ///< object centre of mass in ground (m)
+    SimTK::Quaternion q_GO;           ///< object orientation in ground (w, x, y, z)
+    std::vector<double> jointAngles;  ///< rad, ordered as SimulationResult::jointNames
+};
+
+/// The contacts at one output time.
+struct ContactSample {
+    double time = 0;  ///< s
+    std::vector<contact::ContactReport> contacts;
+};
+
+/// Summary figures of a run (the fields of summary.json, in SI units).
+struct SimulationSummary {
+    std::string scenario, contact, mode, perturbation;
+    bool complete = false;          ///< false when the run stopped early (see failure)
+    std::string failure;            ///< why it stopped early, with the time and the last event
+    double simTime = 0;             ///< simulated time reached (s)
+    double wallTime = 0;            ///< wall-clock time of the integration (s)
+    long steps = 0;                 ///< integrator steps taken
+    double meanStepUs = 0;          ///< wall time per step (µs)
+    double ikUsPerStep = 0;         ///< of which inverse kinematics (µs)
+    double dynamicsUsPerStep = 0;   ///< of which everything else: dynamics, contact, integration (µs)
+    long ikSolves = 0;              ///< IK solutions computed
+    double settleTime = 0;          ///< when the grasp counts as settled (s)
+    double objectDisplacement = 0;  ///< |p_GO(end) - p_GO(settle)| (m)
+    double maxPenetration = 0;      ///< deepest contact over the output samples (m)
+    bool held = false;              ///< at the end every goal's fingertip is within the held tolerance of its goal
+    double maxFingertipGoalDistance = 0;  ///< at the end (m)
+};
+
+/// Everything a run produces.
+struct SimulationResult {
+    std::vector<std::string> jointNames;
+    std::vector<TrajectorySample> trajectory;
+    std::vector<ContactSample> contacts;
+    SimulationSummary summary;
+};
+
+/// Called after each output sample with the simulated time reached (s).
+using ProgressCallback = std::function<void(double time, double duration)>;
+
+/// Runs the scenario with Simbody's implicit CPodes (BDF) integrator at the scenario's accuracy,
+/// sampling every output interval, at the perturbation's start and end, and at the object's
+/// release. A numerical failure (a non-finite state, an integrator that cannot step) ends the
+/// run early: the result keeps every sample so far and summary.complete is false.
+/// @throws graspsim::InputError for options the scenario cannot take (before simulating).
+SimulationResult runGraspSimulation(const scenario::Scenario& scenario, const SimulationOptions& options,
+                                    const ProgressCallback& progress = {});
+
+}  // namespace graspsim::simulation

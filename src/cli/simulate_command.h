@@ -1,0 +1,23 @@
+#pragma once
+// `graspsim simulate`: load a scenario, run it, write the result files.
+
+#include <CLI/CLI.hpp>
+
+#include <memory>
+
+namespace graspsim::cli {
+
+class SimulateCommand {
+public:
+    explicit SimulateCommand(CLI::App& app);
+    bool parsed() const;
+    // Runs the simulation; returns the exit code (0, or 3 when the run stopped early).
+    int run() const;
+
+private:
+    struct Options;
+    std::shared_ptr<Options> options_;
+    CLI::App* command_ = nullptr;
+};
+
+}  // namespace graspsim::cli

@@ -1,0 +1,252 @@
+#include "graspsim/contact/compliant_contact_force.h"
+
+#include <string>
+#include <utility>
+
+#include "graspsim/contact/contact_force_law.h"
+#include "graspsim/contact/shape_contact.h"
+#include "graspsim/error.h"
+
+namespace graspsim::contact {
+
+namespace {
+
+using EnabledFlags = std::vector<bool>;
+
+// A pair with its materials combined once, at construction.
+struct PreparedPair {
+    ContactPair pair;
+    ContactParameters parameters;
+};
+
+// The kinematics of one body as a contact needs them, read once per pair.
+struct BodyMotion {
+    SimTK::Vec3 p_GBo;       // body origin in Ground (m)
+    SimTK::SpatialVec V_GB;  // angular (rad/s) and origin linear (m/s) velocity, in Ground
+
+    SimTK::Vec3 findPointVelocity(const SimTK::Vec3& p_GP) const {
+        return V_GB[1] + V_GB[0] % (p_GP - p_GBo);
+    }
+};
+
+BodyMotion findBodyMotion(const SimTK::State& state, const SimTK::MobilizedBody& body) {
+    return {body.getBodyOriginLocation(state), body.getBodyVelocity(state)};
+}
+
+// Normal and friction forces of one contact point (on body b; a gets the opposite).
+struct ContactForce {
+    double depthRate = 0;
+    SimTK::Vec3 slipVelocity_G{0, 0, 0};
+    double normalForce = 0;
+    SimTK::Vec3 frictionForce_G{0, 0, 0};
+};
+
+ContactForce calcContactForce(const ContactParameters& parameters, const ContactPoint& contact,
+                              const BodyMotion& a, const BodyMotion& b) {
+    const SimTK::Vec3 v = b.findPointVelocity(contact.p_G) - a.findPointVelocity(contact.p_G);
+    const double vNormal = SimTK::dot(v, contact.n_G);
+    ContactForce force;
+    force.depthRate = -vNormal;  // b moving toward a (against n) deepens the contact
+    force.slipVelocity_G = v - vNormal * contact.n_G;
+    force.normalForce = calcNormalForce(parameters, contact.radius, contact.depth, force.depthRate);
+    force.frictionForce_G = calcFrictionForce(parameters, force.normalForce, force.slipVelocity_G);
+    return force;
+}
+
+// Adds force F (N, in G) applied at point p_G to body `body`'s entry of bodyForces.
+void applyForceAtPoint(const SimTK::MobilizedBody& body, const BodyMotion& motion,
+                       const SimTK::Vec3& p_G, const SimTK::Vec3& F_G,
+                       SimTK::Vector_<SimTK::SpatialVec>& bodyForces) {
+    SimTK::SpatialVec& entry = bodyForces[body.getMobilizedBodyIndex()];
+    entry[0] += (p_G - motion.p_GBo) % F_G;
+    entry[1] += F_G;
+}
+
+// Per-thread scratch for the contact points of one pair. Force evaluation is the hot path
+// (every integrator stage); reusing one buffer avoids a heap allocation per pair and call.
+// Thread-local rather than a member because one system may be evaluated from several threads
+// with different states.
+std::vector<ContactPoint>& updScratchContacts() {
+    thread_local std::vector<ContactPoint> contacts;
+    contacts.clear();
+    return contacts;
+}
+
+}  // namespace
+
+class CompliantContactForceImpl : public SimTK::Force::Custom::Implementation {
+public:
+    CompliantContactForceImpl(const SimTK::GeneralForceSubsystem& forces,
+                              std::vector<ContactPair> pairs)
+        : forces_(forces) {
+        pairs_.reserve(pairs.size());
+        for (ContactPair& pair : pairs) {
+            const std::string name = "contact pair '" + pair.describe() + "'";
+            pair.a.material.validate(name + " material a");
+            pair.b.material.validate(name + " material b");
+            if (pair.a.shape.type == ContactShape::Type::HalfSpace &&
+                pair.b.shape.type == ContactShape::Type::HalfSpace) {
+                throw InputError(name + ": two half-spaces cannot be a contact pair");
+            }
+            pair.a.shape.validate(name + " shape a");
+            pair.b.shape.validate(name + " shape b");
+            const ContactParameters parameters = combineMaterials(pair.a.material, pair.b.material);
+            pairs_.push_back({std::move(pair), parameters});
+        }
+    }
+
+    int getNumPairs() const { return static_cast<int>(pairs_.size()); }
+    const ContactPair& getPair(int i) const { return pairs_.at(i).pair; }
+
+    const EnabledFlags& getEnabledFlags(const SimTK::State& state) const {
+        return SimTK::Value<EnabledFlags>::downcast(
+                   forces_.getDiscreteVariable(state, enabledIndex_))
+            .get();
+    }
+    EnabledFlags& updEnabledFlags(SimTK::State& state) const {
+        return SimTK::Value<EnabledFlags>::updDowncast(
+                   forces_.updDiscreteVariable(state, enabledIndex_))
+            .upd();
+    }
+
+    void realizeTopology(SimTK::State& state) const override {
+        EnabledFlags defaults;
+        for (const PreparedPair& p : pairs_) defaults.push_back(p.pair.enabledByDefault);
+        enabledIndex_ = forces_.allocateDiscreteVariable(state, SimTK::Stage::Instance,
+                                                         new SimTK::Value<EnabledFlags>(defaults));
+    }
+
+    void calcForce(const SimTK::State& state, SimTK::Vector_<SimTK::SpatialVec>& bodyForces,
+                   SimTK::Vector_<SimTK::Vec3>&, SimTK::Vector&) const override {
+        forEachContact(state, [&](int i, const ContactPoint& contact, const BodyMotion& a,
+                                  const BodyMotion& b) {
+            const ContactForce force = calcContactForce(pairs_[i].parameters, contact, a, b);
+            const SimTK::Vec3 F_G = force.normalForce * contact.n_G + force.frictionForce_G;
+            applyForceAtPoint(pairs_[i].pair.a.body, a, contact.p_G, -F_G, bodyForces);
+            applyForceAtPoint(pairs_[i].pair.b.body, b, contact.p_G, F_G, bodyForces);
+        });
+    }
+
+    SimTK::Real calcPotentialEnergy(const SimTK::State& state) const override {
+        double energy = 0;
+        const EnabledFlags& enabled = getEnabledFlags(state);
+        for (int i = 0; i < getNumPairs(); ++i) {
+            if (!enabled[i]) continue;
+            for (const ContactPoint& contact : findPairContacts(state, i)) {
+                energy += calcHertzEnergy(pairs_[i].parameters, contact.radius, contact.depth);
+            }
+        }
+        return energy;
+    }
+
+    std::vector<ContactReport> findContactReports(const SimTK::State& state) const {
+        std::vector<ContactReport> reports;
+        forEachContact(state, [&](int i, const ContactPoint& contact, const BodyMotion& a,
+                                  const BodyMotion& b) {
+            reports.push_back(
+                makeReport(i, contact, calcContactForce(pairs_[i].parameters, contact, a, b)));
+        });
+        return reports;
+    }
+
+private:
+    // The contact points of pair i in the scratch buffer (valid until the next call).
+    const std::vector<ContactPoint>& findPairContacts(const SimTK::State& state, int i) const {
+        const ContactPair& pair = pairs_[i].pair;
+        std::vector<ContactPoint>& contacts = updScratchContacts();
+        appendContacts(pair.a.shape, pair.a.body.getBodyTransform(state) * pair.a.X_BS,
+                       pair.b.shape, pair.b.body.getBodyTransform(state) * pair.b.X_BS, contacts);
+        return contacts;
+    }
+
+    // Calls visit(pairIndex, contact, motionA, motionB) for every contact of every enabled
+    // pair. No early exit: a contact with zero force does not hide the ones after it.
+    template <class Visit>
+    void forEachContact(const SimTK::State& state, Visit&& visit) const {
+        const EnabledFlags& enabled = getEnabledFlags(state);
+        for (int i = 0; i < getNumPairs(); ++i) {
+            if (!enabled[i]) continue;
+            const std::vector<ContactPoint>& contacts = findPairContacts(state, i);
+            if (contacts.empty()) continue;
+            const BodyMotion a = findBodyMotion(state, pairs_[i].pair.a.body);
+            const BodyMotion b = findBodyMotion(state, pairs_[i].pair.b.body);
+            for (const ContactPoint& contact : contacts) visit(i, contact, a, b);
+        }
+    }
+
+    ContactReport makeReport(int i, const ContactPoint& contact, const ContactForce& force) const {
+        const ContactPair& pair = pairs_[i].pair;
+        ContactReport report;
+        report.pairIndex = i;
+        report.bodyA = pair.a.bodyName;
+        report.bodyB = pair.b.bodyName;
+        report.shapeA = pair.a.shapeName;
+        report.shapeB = pair.b.shapeName;
+        report.p_G = contact.p_G;
+        report.n_G = contact.n_G;
+        report.depth = contact.depth;
+        report.depthRate = force.depthRate;
+        report.slipVelocity_G = force.slipVelocity_G;
+        report.normalForce = force.normalForce;
+        report.frictionForce_G = force.frictionForce_G;
+        return report;
+    }
+
+    const SimTK::GeneralForceSubsystem& forces_;
+    std::vector<PreparedPair> pairs_;
+    mutable SimTK::DiscreteVariableIndex enabledIndex_;
+};
+
+namespace {
+
+const CompliantContactForceImpl& asContactImpl(const SimTK::Force::Custom::Implementation& impl) {
+    return static_cast<const CompliantContactForceImpl&>(impl);
+}
+
+}  // namespace
+
+CompliantContactForce::CompliantContactForce(SimTK::GeneralForceSubsystem& forces,
+                                             std::vector<ContactPair> pairs)
+    : SimTK::Force::Custom(forces, new CompliantContactForceImpl(forces, std::move(pairs))) {}
+
+void CompliantContactForce::checkPairIndex(int pairIndex) const {
+    const int count = getNumPairs();
+    if (pairIndex < 0 || pairIndex >= count) {
+        throw InputError("contact pair index " + std::to_string(pairIndex) +
+                         " is out of range; the element has " + std::to_string(count) +
+                         " pairs (0 to " + std::to_string(count - 1) + ")");
+    }
+}
+
+int CompliantContactForce::getNumPairs() const {
+    return asContactImpl(getImplementation()).getNumPairs();
+}
+
+const ContactPair& CompliantContactForce::getPair(int pairIndex) const {
+    checkPairIndex(pairIndex);
+    return asContactImpl(getImplementation()).getPair(pairIndex);
+}
+
+bool CompliantContactForce::isPairEnabled(const SimTK::State& state, int pairIndex) const {
+    checkPairIndex(pairIndex);
+    return asContactImpl(getImplementation()).getEnabledFlags(state)[pairIndex];
+}
+
+void CompliantContactForce::setPairEnabled(SimTK::State& state, int pairIndex, bool enabled) const {
+    setPairsEnabled(state, {pairIndex}, enabled);
+}
+
+void CompliantContactForce::setPairsEnabled(SimTK::State& state,
+                                            const std::vector<int>& pairIndices,
+                                            bool enabled) const {
+    for (int i : pairIndices) checkPairIndex(i);
+    EnabledFlags& flags = asContactImpl(getImplementation()).updEnabledFlags(state);
+    for (int i : pairIndices) flags[i] = enabled;
+}
+
+std::vector<ContactReport> CompliantContactForce::findContactReports(
+    const SimTK::State& state) const {
+    return asContactImpl(getImplementation()).findContactReports(state);
+}
+
+}  // namespace graspsim::contact

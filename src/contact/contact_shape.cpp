@@ -1,0 +1,139 @@
+#include "graspsim/contact/contact_shape.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "graspsim/error.h"
+
+namespace graspsim::contact {
+
+namespace {
+
+// "<what>: <field> (<value>) must be <accepted>".
+[[noreturn]] void throwBadSize(const std::string& what, const std::string& field, double value,
+                               const std::string& accepted) {
+    std::ostringstream message;
+    message << what << ": " << field << " (" << value << ") must be " << accepted;
+    throw InputError(message.str());
+}
+
+void checkPositive(const std::string& what, const std::string& field, double value) {
+    if (!(std::isfinite(value) && value > 0)) {
+        throwBadSize(what, field, value, "finite and > 0 (m)");
+    }
+}
+
+}  // namespace
+
+ContactShape ContactShape::sphere(double radius) {
+    ContactShape shape;
+    shape.type = Type::Sphere;
+    shape.radius = radius;
+    return shape;
+}
+
+ContactShape ContactShape::capsule(double radius, double length) {
+    ContactShape shape;
+    shape.type = Type::Capsule;
+    shape.radius = radius;
+    shape.length = length;
+    return shape;
+}
+
+ContactShape ContactShape::box(const SimTK::Vec3& halfLengths, double cornerRadius) {
+    ContactShape shape;
+    shape.type = Type::Box;
+    shape.halfLengths = halfLengths;
+    shape.cornerRadius = cornerRadius;
+    return shape;
+}
+
+ContactShape ContactShape::halfSpace() {
+    ContactShape shape;
+    shape.type = Type::HalfSpace;
+    return shape;
+}
+
+ContactShape ContactShape::fromGeometry(const model::Geometry& geometry) {
+    const std::string what = "geometry '" + geometry.name + "'";
+    ContactShape shape;
+    switch (geometry.type) {
+        case model::Geometry::Type::Sphere:
+            shape = sphere(geometry.radius);
+            break;
+        case model::Geometry::Type::Capsule:
+            shape = capsule(geometry.radius, geometry.length);
+            break;
+        case model::Geometry::Type::Box: {
+            const model::Vec3& h = geometry.halfLengths;
+            shape = box(SimTK::Vec3(h[0], h[1], h[2]));
+            break;
+        }
+        case model::Geometry::Type::Cylinder:
+        case model::Geometry::Type::Mesh:
+            throw InputError(what + ": type " +
+                             (geometry.type == model::Geometry::Type::Mesh ? "mesh" : "cylinder") +
+                             " has no contact support; use sphere, capsule or box");
+    }
+    shape.validate(what);
+    return shape;
+}
+
+void ContactShape::validate(const std::string& what) const {
+    switch (type) {
+        case Type::Sphere:
+            checkPositive(what, "radius", radius);
+            break;
+        case Type::Capsule:
+            checkPositive(what, "radius", radius);
+            if (!(std::isfinite(length) && length >= 0)) {
+                throwBadSize(what, "length", length, "finite and >= 0 (m)");
+            }
+            break;
+        case Type::Box:
+            checkPositive(what, "halfLengths[0]", halfLengths[0]);
+            checkPositive(what, "halfLengths[1]", halfLengths[1]);
+            checkPositive(what, "halfLengths[2]", halfLengths[2]);
+            checkPositive(what, "cornerRadius", cornerRadius);
+            break;
+        case Type::HalfSpace:
+            break;
+    }
+}
+
+double ContactShape::calcBoundingRadius() const {
+    switch (type) {
+        case Type::Sphere:
+            return radius;
+        case Type::Capsule:
+            return radius + 0.5 * length;
+        case Type::Box:
+            return halfLengths.norm();
+        case Type::HalfSpace:
+            return SimTK::Infinity;
+    }
+    return SimTK::Infinity;
+}
+
+SimTK::Transform findGeometryPose(const model::Geometry& geometry) {
+    const std::array<double, 9>& r = geometry.X_BG.R;  // row-major
+    double orthonormalityError = 0;                    // max |R R^T - I|
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            const double dot =
+                r[3 * i] * r[3 * j] + r[3 * i + 1] * r[3 * j + 1] + r[3 * i + 2] * r[3 * j + 2];
+            orthonormalityError = std::max(orthonormalityError, std::abs(dot - (i == j)));
+        }
+    }
+    const SimTK::Mat33 R(r[0], r[1], r[2], r[3], r[4], r[5], r[6], r[7], r[8]);
+    if (!(orthonormalityError <= 1e-9) || SimTK::det(R) <= 0) {
+        throw InputError("geometry '" + geometry.name +
+                         "': X_BG rotation is not a proper rotation matrix (orthonormal to 1e-9, "
+                         "determinant +1)");
+    }
+    const model::Vec3& p = geometry.X_BG.p;
+    return SimTK::Transform(SimTK::Rotation(R, true), SimTK::Vec3(p[0], p[1], p[2]));
+}
+
+}  // namespace graspsim::contact

@@ -1,0 +1,40 @@
+#pragma once
+// Contacts of spheres and capsules, seen as swept spheres: a core (a point or a segment) plus a
+// radius. Private to the contact layer; shape_contact.cpp dispatches here.
+
+#include <simbody/Simbody.h>
+
+#include <vector>
+
+#include "graspsim/contact/contact_shape.h"
+#include "graspsim/contact/shape_contact.h"
+
+namespace graspsim::contact {
+
+/// Values (m) of a convex function within this of its minimum count as the minimum: where a
+/// segment's signed distance is flat to this tolerance, the contact goes to the middle. Where a
+/// flat stretch ends in a rounded rise (a capsule overhanging a box edge by d), the stretch
+/// seems longer by about sqrt(2 d kFlatTolerance), moving the contact by half that (5 nm for
+/// d = 5 mm); where it ends in a kink, by kFlatTolerance / slope.
+constexpr double kFlatTolerance = 1e-14;
+
+/// A sphere (p0_G == p1_G) or capsule (axis from p0_G to p1_G), in Ground (m).
+struct SweptSphere {
+    SimTK::Vec3 p0_G{0, 0, 0};
+    SimTK::Vec3 p1_G{0, 0, 0};
+    double radius = 0;
+};
+
+/// The core and radius of a sphere or capsule posed at X_GS.
+SweptSphere makeSweptSphere(const ContactShape& shape, const SimTK::Transform& X_GS);
+
+/// Appends the contact between swept spheres a and b, if any; its normal points from a to b.
+void appendSweptSweptContact(const SweptSphere& a, const SweptSphere& b,
+                             std::vector<ContactPoint>& contacts);
+
+/// Appends the contact between a swept sphere and a box or half-space `solid` posed at X_GS, if
+/// any; its normal points from the swept sphere toward the solid.
+void appendSweptSolidContact(const SweptSphere& swept, const ContactShape& solid,
+                             const SimTK::Transform& X_GS, std::vector<ContactPoint>& contacts);
+
+}  // namespace graspsim::contact

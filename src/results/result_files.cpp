@@ -1,0 +1,93 @@
+#include "graspsim/results/result_files.h"
+
+#include "graspsim/io/atomic_file.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <sstream>
+
+namespace graspsim::results {
+
+namespace {
+
+// Shortest text that reads back to the same double, so files compare byte for byte across runs.
+void put(std::ostringstream& out, double value) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.17g", value);
+    out << ',' << buffer;
+}
+
+void putVec3(std::ostringstream& out, const SimTK::Vec3& v) {
+    for (int k = 0; k < 3; ++k) put(out, v[k]);
+}
+
+}  // namespace
+
+std::string formatTrajectoryCsv(const simulation::SimulationResult& result) {
+    std::ostringstream out;
+    out << "time_s,object_x_m,object_y_m,object_z_m,object_qw,object_qx,object_qy,object_qz";
+    for (const std::string& joint : result.jointNames) out << ',' << joint << "_rad";
+    out << '\n';
+    for (const simulation::TrajectorySample& s : result.trajectory) {
+        std::ostringstream row;
+        putVec3(row, s.p_GO);
+        for (int k = 0; k < 4; ++k) put(row, s.q_GO[k]);
+        for (double q : s.jointAngles) put(row, q);
+        char time[32];
+        std::snprintf(time, sizeof time, "%.17g", s.time);
+        out << time << row.str() << '\n';
+    }
+    return out.str();
+}
+
+std::string formatContactsCsv(const simulation::SimulationResult& result) {
+    std::ostringstream out;
+    out << "time_s,body_a,shape_a,body_b,shape_b,point_x_m,point_y_m,point_z_m,normal_x,normal_y,normal_z,"
+           "normal_force_n,friction_x_n,friction_y_n,friction_z_n,penetration_m\n";
+    for (const simulation::ContactSample& sample : result.contacts) {
+        for (const contact::ContactReport& c : sample.contacts) {
+            std::ostringstream row;
+            putVec3(row, c.p_G);
+            putVec3(row, SimTK::Vec3(c.n_G));
+            put(row, c.normalForce);
+            putVec3(row, c.frictionForce_G);
+            put(row, c.depth);
+            char time[32];
+            std::snprintf(time, sizeof time, "%.17g", sample.time);
+            out << time << ',' << c.bodyA << ',' << c.shapeA << ',' << c.bodyB << ',' << c.shapeB << row.str() << '\n';
+        }
+    }
+    return out.str();
+}
+
+std::string formatSummaryJson(const simulation::SimulationSummary& s) {
+    nlohmann::ordered_json j;
+    j["scenario"] = s.scenario;
+    j["contact"] = s.contact;
+    j["mode"] = s.mode;
+    j["perturbation"] = s.perturbation;
+    j["complete"] = s.complete;
+    if (!s.complete) j["failure"] = s.failure;
+    j["sim_time_s"] = s.simTime;
+    j["wall_time_s"] = s.wallTime;
+    j["steps"] = s.steps;
+    j["mean_step_us"] = s.meanStepUs;
+    j["ik_us_per_step"] = s.ikUsPerStep;
+    j["dynamics_us_per_step"] = s.dynamicsUsPerStep;
+    j["ik_solves"] = s.ikSolves;
+    j["settle_time_s"] = s.settleTime;
+    j["object_displacement_m"] = s.objectDisplacement;
+    j["max_penetration_m"] = s.maxPenetration;
+    j["held"] = s.held;
+    j["max_fingertip_goal_distance_m"] = s.maxFingertipGoalDistance;
+    return j.dump(2) + "\n";
+}
+
+void writeResultFiles(const std::string& folder, const simulation::SimulationResult& result) {
+    io::writeFileAtomically(folder + "/trajectory.csv", formatTrajectoryCsv(result));
+    io::writeFileAtomically(folder + "/contacts.csv", formatContactsCsv(result));
+    io::writeFileAtomically(folder + "/summary.json", formatSummaryJson(result.summary));
+}
+
+}  // namespace graspsim::results

@@ -1,0 +1,274 @@
+#include "scenario_reader.h"
+
+#include "graspsim/anthropometry/sex.h"
+#include "graspsim/anthropometry/subject.h"
+#include "graspsim/anthropometry/units.h"
+#include "graspsim/model/body_model.h"
+
+#include <algorithm>
+#include <iomanip>
+#include <sstream>
+
+namespace graspsim::scenario {
+
+namespace {
+
+using anthropometry::fromDegrees;
+
+// A goal may sit this far off the object's surface (m): enough for numbers rounded to 0.1 mm,
+// small against a fingertip pad (radius about 7.5 mm).
+constexpr double kGoalSurfaceTolerance = 0.001;
+
+std::string formatNumber(double value) {
+    std::ostringstream text;
+    text << value;
+    return text.str();
+}
+
+// Radians as the degrees a file writes, for messages.
+std::string formatDegrees(double radians) { return formatNumber(radians / fromDegrees(1.0)); }
+
+// Millimetres with one decimal, for messages about small distances given in metres.
+std::string formatMillimetres(double metres) {
+    std::ostringstream text;
+    text << std::fixed << std::setprecision(1) << metres / anthropometry::fromMillimetres(1.0);
+    return text.str();
+}
+
+// An optional number whose default must fit the rule too: when it does not (a static friction
+// below the default dynamic friction, a duration shorter than the default settle time), the
+// field is required, and its absence is reported with the bounds it must meet.
+double readFitting(const YamlField& section, const std::string& key, const NumberRule& rule, double fallback) {
+    return rule.accepts(fallback) ? section.findNumber(key, rule, fallback) : section.getNumber(key, rule);
+}
+
+void readWorld(const YamlField& root, WorldSpec& world) {
+    const YamlField section = root.getSection("world", {"gravity"});
+    world.gravity = section.findVec3("gravity", NumberRule::any("gravity", "m/s^2"), world.gravity);
+}
+
+void readSubject(const YamlField& root, model::BuildOptions& options) {
+    const YamlField section = root.getSection("subject", {"sex", "mass", "stature", "preset"});
+    if (const std::optional<YamlField> sex = section.find("sex")) {
+        // Mass and stature not given are those of the reference subject of this sex.
+        const std::string text = sex->asText("sex must be male or female");
+        options.subject = anthropometry::getReferenceSubject(anthropometry::parseSex(text, sex->describePlace()));
+    }
+    anthropometry::Subject& subject = options.subject;
+    subject.mass = section.findNumber(
+        "mass", NumberRule::closed("body mass", "kg", anthropometry::kMinBodyMass, anthropometry::kMaxBodyMass),
+        subject.mass);
+    subject.stature = section.findNumber(
+        "stature", NumberRule::closed("stature", "m", anthropometry::kMinStature, anthropometry::kMaxStature),
+        subject.stature);
+    if (const std::optional<YamlField> preset = section.find("preset")) {
+        options.preset = model::parsePreset(preset->asText("preset must be thesis or none"), preset->describePlace());
+    }
+}
+
+ObjectShape readShape(const YamlField& field) {
+    const std::string text = field.asText("shape must be sphere or box");
+    if (text == "sphere") return ObjectShape::Sphere;
+    if (text == "box") return ObjectShape::Box;
+    field.reject("shape must be sphere or box");
+}
+
+void rejectIfGiven(const YamlField& section, const std::string& key, const std::string& why) {
+    if (const std::optional<YamlField> field = section.find(key)) field->reject(why);
+}
+
+ObjectSpec readObject(const YamlField& root) {
+    const YamlField section =
+        root.require("object", "a scenario needs the object: shape, mass, radius or size, position");
+    section.requireMap({"shape", "mass", "radius", "size", "position", "orientation"});
+    ObjectSpec object;
+    object.shape = readShape(section.require("shape", "shape must be sphere or box"));
+    object.mass = section.getNumber("mass", NumberRule::positive("mass", "kg"));
+    if (object.shape == ObjectShape::Sphere) {
+        object.radius = section.getNumber("radius", NumberRule::positive("radius", "m"));
+        rejectIfGiven(section, "size", "a sphere has a radius, not a size");
+    } else {
+        object.size = section.getVec3("size", NumberRule::positive("size", "m"));
+        rejectIfGiven(section, "radius", "a box has a size [x, y, z], not a radius");
+    }
+    object.position = section.getVec3("position", NumberRule::any("position", "m"));
+    const model::Vec3 degrees =
+        section.findVec3("orientation", NumberRule::closed("orientation", "deg", -360, 360), {0, 0, 0});
+    for (int i = 0; i < 3; ++i) object.orientation[i] = fromDegrees(degrees[i]);
+    return object;
+}
+
+std::vector<std::string> getJointNames(const model::ModelDescription& body) {
+    std::vector<std::string> names;
+    for (const model::Joint& joint : body.joints) {
+        if (joint.getDofCount() > 0) names.push_back(joint.name);
+    }
+    return names;
+}
+
+// "elbow_flexion must be within its range of motion [0, 150] deg"
+std::string describeRange(const model::Joint& joint) {
+    return joint.name + " must be within its range of motion [" + formatDegrees(joint.lower) + ", " +
+           formatDegrees(joint.upper) + "] deg";
+}
+
+std::map<std::string, double> readGraspPose(const YamlField& root, const model::ModelDescription& body) {
+    const YamlField section = root.require("grasp_pose", "give the grasp pose as joint name: angle (deg)");
+    std::map<std::string, double> pose;
+    for (const YamlField& entry : section.getEntries()) {
+        const model::Joint* joint = body.findJoint(entry.getKey());
+        if (!joint || joint->getDofCount() == 0) {
+            entry.reject("'" + entry.getKey() + "' is not a joint of the arm; joints: " +
+                         joinNames(getJointNames(body)));
+        }
+        const double angle = fromDegrees(entry.asNumber(NumberRule::any(entry.getKey(), "deg")));
+        // Compared in radians, as the limits are stored, so that a limit written in the file is accepted.
+        if (joint->hasLimits() && (angle < joint->lower || angle > joint->upper)) entry.reject(describeRange(*joint));
+        pose[entry.getKey()] = angle;
+    }
+    if (pose.empty()) section.reject("grasp_pose must give at least one joint angle");
+    return pose;
+}
+
+std::vector<std::string> getEndEffectorNames(const model::ModelDescription& body) {
+    std::vector<std::string> names;
+    for (const model::EndEffector& effector : body.endEffectors) names.push_back(effector.name);
+    return names;
+}
+
+std::map<std::string, Vec3> readGoals(const YamlField& root, const model::ModelDescription& body,
+                                      const ObjectSpec& object) {
+    const YamlField section = root.require("goals", "give a goal point (m, object frame) per end-effector");
+    std::map<std::string, Vec3> goals;
+    for (const YamlField& entry : section.getEntries()) {
+        if (!body.findEndEffector(entry.getKey())) {
+            entry.reject("'" + entry.getKey() + "' is not an end-effector; end-effectors: " +
+                         joinNames(getEndEffectorNames(body)));
+        }
+        const Vec3 p_OG = entry.asVec3(NumberRule::any("a goal", "m, object frame"));
+        const double offSurface = std::abs(object.calcSurfaceDistance(p_OG));
+        if (offSurface > kGoalSurfaceTolerance) {
+            entry.reject("it lies " + formatMillimetres(offSurface) + " mm off the " + toString(object.shape) +
+                         "'s surface (tolerance " + formatMillimetres(kGoalSurfaceTolerance) + " mm)");
+        }
+        goals[entry.getKey()] = p_OG;
+    }
+    if (goals.empty()) section.reject("goals must give at least one end-effector's goal point");
+    return goals;
+}
+
+ContactSpec readContact(const YamlField& root) {
+    const YamlField section = root.getSection(
+        "contact", {"stiffness", "dissipation", "static_friction", "dynamic_friction", "viscous_friction",
+                    "transition_velocity"});
+    ContactSpec contact;
+    contact.stiffness = section.findNumber("stiffness", NumberRule::positive("stiffness", "Pa"), contact.stiffness);
+    contact.dissipation =
+        section.findNumber("dissipation", NumberRule::nonNegative("dissipation", "s/m"), contact.dissipation);
+    contact.staticFriction =
+        section.findNumber("static_friction", NumberRule::nonNegative("static friction", ""), contact.staticFriction);
+    const NumberRule dynamic =
+        NumberRule::closed("dynamic friction (at most static_friction)", "", 0, contact.staticFriction);
+    contact.dynamicFriction = readFitting(section, "dynamic_friction", dynamic, contact.dynamicFriction);
+    contact.viscousFriction = section.findNumber(
+        "viscous_friction", NumberRule::nonNegative("viscous friction", "s/m"), contact.viscousFriction);
+    contact.transitionVelocity = section.findNumber(
+        "transition_velocity", NumberRule::positive("transition velocity", "m/s"), contact.transitionVelocity);
+    return contact;
+}
+
+// Half the object's smallest dimension: a goal pressed deeper would pass its centre plane.
+double findHalfThickness(const ObjectSpec& object) {
+    if (object.shape == ObjectShape::Sphere) return object.radius;
+    return std::min({object.size[0], object.size[1], object.size[2]}) / 2;
+}
+
+ControllerSpec readController(const YamlField& root, const ObjectSpec& object) {
+    const YamlField section =
+        root.getSection("controller", {"approach_time", "press_depth", "kp", "kd", "ik_interval"});
+    ControllerSpec controller;
+    controller.approachTime =
+        section.findNumber("approach_time", NumberRule::nonNegative("approach time", "s"), controller.approachTime);
+    NumberRule depth =
+        NumberRule::closed("press depth (less than half the object's thickness)", "m", 0, findHalfThickness(object));
+    depth.upperOpen = true;
+    controller.pressDepth = readFitting(section, "press_depth", depth, controller.pressDepth);
+    controller.kp = section.findNumber("kp", NumberRule::positive("kp", "N m/rad"), controller.kp);
+    controller.kd = section.findNumber("kd", NumberRule::nonNegative("kd", "N m s/rad"), controller.kd);
+    controller.ikInterval =
+        section.findNumber("ik_interval", NumberRule::positive("IK interval", "s"), controller.ikInterval);
+    return controller;
+}
+
+SimulationSpec readSimulation(const YamlField& root, const ControllerSpec& controller) {
+    const YamlField section =
+        root.getSection("simulation", {"duration", "output_interval", "accuracy", "settle_time", "held_tolerance"});
+    SimulationSpec simulation;
+    simulation.duration = section.findNumber("duration", NumberRule::positive("duration", "s"), simulation.duration);
+    NumberRule output = NumberRule::closed("output interval (at most the duration)", "s", 0, simulation.duration);
+    output.lowerOpen = true;
+    simulation.outputInterval = readFitting(section, "output_interval", output, simulation.outputInterval);
+    NumberRule accuracy = NumberRule::closed("accuracy", "", 0, 1);
+    accuracy.lowerOpen = accuracy.upperOpen = true;
+    simulation.accuracy = section.findNumber("accuracy", accuracy, simulation.accuracy);
+    const NumberRule settle = NumberRule::closed("settle time (from controller.approach_time to the duration)", "s",
+                                                 controller.approachTime, simulation.duration);
+    simulation.settleTime = readFitting(section, "settle_time", settle, simulation.settleTime);
+    simulation.heldTolerance =
+        section.findNumber("held_tolerance", NumberRule::positive("held tolerance", "m"), simulation.heldTolerance);
+    return simulation;
+}
+
+Perturbation readPerturbation(const YamlField& entry, double simulationDuration) {
+    entry.requireMap({"force", "start", "duration"});
+    Perturbation perturbation;
+    perturbation.name = entry.getKey();
+    perturbation.force = entry.getVec3("force", NumberRule::any("force", "N, ground frame"));
+    NumberRule start = NumberRule::closed("start (before simulation.duration)", "s", 0, simulationDuration);
+    start.upperOpen = true;
+    perturbation.start = entry.getNumber("start", start);
+    NumberRule duration = NumberRule::closed("duration (ending by simulation.duration)", "s", 0,
+                                             simulationDuration - perturbation.start);
+    duration.lowerOpen = true;
+    perturbation.duration = entry.getNumber("duration", duration);
+    return perturbation;
+}
+
+std::vector<Perturbation> readPerturbations(const YamlField& root, const SimulationSpec& simulation) {
+    std::vector<Perturbation> perturbations;
+    // "perturbations:" with every entry commented out means none.
+    const std::optional<YamlField> section = root.find("perturbations");
+    if (section && !section->isEmpty()) {
+        for (const YamlField& entry : section->getEntries()) {
+            perturbations.push_back(readPerturbation(entry, simulation.duration));
+        }
+    }
+    return perturbations;
+}
+
+}  // namespace
+
+Scenario readScenario(const YamlField& root) {
+    root.requireMap({"name", "description", "world", "subject", "object", "grasp_pose", "goals", "perturbations",
+                     "contact", "controller", "simulation"});
+    Scenario scenario;
+    scenario.source = root.getSource();
+    scenario.name = root.require("name", "give the scenario a name").asText("name must be text");
+    if (const std::optional<YamlField> description = root.find("description")) {
+        scenario.description = description->asText("description must be text");
+    }
+    readWorld(root, scenario.world);
+    readSubject(root, scenario.bodyOptions);
+    scenario.object = readObject(root);
+    // Joint and end-effector names are checked against the arm this scenario builds.
+    const model::ModelDescription body = model::buildBodyModel(scenario.bodyOptions);
+    scenario.graspPose = readGraspPose(root, body);
+    scenario.goals = readGoals(root, body, scenario.object);
+    scenario.contact = readContact(root);
+    scenario.controller = readController(root, scenario.object);
+    scenario.simulation = readSimulation(root, scenario.controller);
+    scenario.perturbations = readPerturbations(root, scenario.simulation);
+    return scenario;
+}
+
+}  // namespace graspsim::scenario

@@ -1,0 +1,182 @@
+#include "graspsim/simulation/grasp_scene.h"
+
+#include "graspsim/error.h"
+#include "graspsim/model/body_model.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace graspsim::simulation {
+
+namespace {
+
+system::SystemOptions makeSystemOptions(const scenario::Scenario& s) {
+    system::SystemOptions options;
+    options.gravity = SimTK::Vec3(s.world.gravity[0], s.world.gravity[1], s.world.gravity[2]);
+    return options;
+}
+
+// The body that carries the fingertip goals (see grasp_controller.h).
+const char* const kPalm = "palm";
+
+SimTK::Vec3 toVec3(const model::Vec3& v) { return SimTK::Vec3(v[0], v[1], v[2]); }
+
+SimTK::Transform toTransform(const model::Transform& X) {
+    const SimTK::Mat33 R(X.R[0], X.R[1], X.R[2], X.R[3], X.R[4], X.R[5], X.R[6], X.R[7], X.R[8]);
+    return SimTK::Transform(SimTK::Rotation(R, true), toVec3(X.p));
+}
+
+// The scenario gives the pair's contact parameters. Both surfaces get one material whose
+// combination by Simbody's rules (contact_force_law.h) reproduces them: equal materials keep
+// their friction and dissipation and halve k^(2/3), so each surface carries 2^(3/2) E*.
+contact::ContactMaterial makeSurfaceMaterial(const scenario::ContactSpec& c) {
+    contact::ContactMaterial m;
+    m.stiffness = std::pow(2.0, 1.5) * c.stiffness;
+    m.dissipation = c.dissipation;
+    m.staticFriction = c.staticFriction;
+    m.dynamicFriction = c.dynamicFriction;
+    m.viscousFriction = c.viscousFriction;
+    m.transitionVelocity = c.transitionVelocity;
+    return m;
+}
+
+// Outward unit normal of the object's surface at a point on (or near) it, in O.
+SimTK::Vec3 findSurfaceNormal(const scenario::ObjectSpec& object, const SimTK::Vec3& p_OP) {
+    if (object.shape == scenario::ObjectShape::Sphere) return p_OP / p_OP.norm();
+    int face = 0;
+    double best = -1;
+    for (int k = 0; k < 3; ++k) {
+        const double ratio = std::abs(p_OP[k]) / (object.size[k] / 2);
+        if (ratio > best) best = ratio, face = k;
+    }
+    SimTK::Vec3 n(0);
+    n[face] = p_OP[face] >= 0 ? 1 : -1;
+    return n;
+}
+
+// The movable joints from the palm out to an end-effector's body (the digit's own joints).
+std::vector<std::string> findFingerJoints(const model::ModelDescription& d, const std::string& endEffector) {
+    std::vector<std::string> joints;
+    std::string body = d.findEndEffector(endEffector)->body;
+    const auto isPalm = [](const std::string& name) { return name.size() >= 4 && name.compare(name.size() - 4, 4, "palm") == 0; };
+    while (!isPalm(body)) {
+        const model::Joint* j = d.findParentJoint(body);
+        if (!j) throw Error("end-effector '" + endEffector + "' does not hang from a palm");
+        if (j->type != model::Joint::Type::Fixed) joints.push_back(j->name);
+        body = j->parent;
+    }
+    return joints;
+}
+
+}  // namespace
+
+GraspScene::GraspScene(const scenario::Scenario& scenario, const SimulationOptions& options)
+    : scenario_(scenario), model_(model::buildBodyModel(scenario.bodyOptions), makeSystemOptions(scenario)) {
+    if (options.contact != ContactModel::Compliant) {
+        throw InputError("--contact: '" + toString(options.contact) +
+                         "' is not available yet; use compliant (rigid contact is planned)");
+    }
+    if (options.mode != SimulationMode::Full) {
+        throw InputError("--mode: '" + toString(options.mode) + "' is not available yet; use full");
+    }
+    addObject();
+    addContacts();
+    addController();
+    if (options.perturbation != "none") {
+        const scenario::Perturbation* p = scenario.findPerturbation(options.perturbation);
+        if (!p) {
+            throw InputError("--perturbation: '" + options.perturbation + "' is not a perturbation of scenario '" +
+                             scenario.name + "'; use none or one the scenario defines");
+        }
+        perturbation_ = std::make_unique<PerturbationForce>(model_.updForces(), object_, toVec3(p->force), p->start,
+                                                            p->duration);
+    }
+    model_.realizeTopology();
+}
+
+void GraspScene::addObject() {
+    const model::ModelDescription objectModel = scenario::buildObjectModel(scenario_.object);
+    const model::Body& b = objectModel.bodies.at(0);
+    const SimTK::Vec3 p_OCm = toVec3(b.p_BCm);
+    const SimTK::Inertia I_Cm(b.inertia.xx, b.inertia.yy, b.inertia.zz, b.inertia.xy, b.inertia.xz, b.inertia.yz);
+    const SimTK::Body::Rigid body(SimTK::MassProperties(b.mass, p_OCm, I_Cm.shiftFromMassCenter(p_OCm, b.mass)));
+    object_ = SimTK::MobilizedBody::Free(model_.updMatter().updGround(), SimTK::Transform(), body, SimTK::Transform());
+}
+
+void GraspScene::addContacts() {
+    const model::ModelDescription objectModel = scenario::buildObjectModel(scenario_.object);
+    const model::Body& objectBody = objectModel.bodies.at(0);
+    const contact::ContactMaterial material = makeSurfaceMaterial(scenario_.contact);
+    std::vector<contact::ContactPair> pairs;
+    for (const model::Body& hand : model_.getDescription().bodies) {
+        if (hand.segment != "hand" || hand.isVirtual()) continue;
+        const SimTK::MobilizedBody& handMobod = model_.getMobilizedBody(hand.name);
+        for (const model::Geometry& g : hand.geometry) {
+            for (const model::Geometry& o : objectBody.geometry) {
+                contact::ContactPair pair;
+                pair.a = contact::ContactSurface::fromGeometry(handMobod, hand.name, g, material);
+                pair.b = contact::ContactSurface::fromGeometry(object_, objectBody.name, o, material);
+                pairs.push_back(pair);
+            }
+        }
+    }
+    contacts_ = contact::CompliantContactForce(model_.updForces(), pairs);
+}
+
+void GraspScene::addController() {
+    const model::ModelDescription& d = model_.getDescription();
+    std::vector<control::ControlledJoint> joints;
+    std::vector<std::string> armBodies;
+    for (const model::Joint& j : d.joints) {
+        if (j.type == model::Joint::Type::Fixed) continue;
+        const bool finger = d.findBody(j.child)->segment == "hand" && j.name.find("wrist") == std::string::npos;
+        joints.push_back({j.name, finger ? control::PdGains{scenario_.controller.kp, scenario_.controller.kd}
+                                         : control::PdGains{kArmKp, kArmKd}});
+    }
+    for (const model::Body& b : d.bodies) armBodies.push_back(b.name);
+    pd_ = std::make_unique<control::JointPdController>(model_, joints, armBodies);
+
+    std::vector<std::string> ikJoints;
+    for (const auto& [endEffector, p_OG] : scenario_.goals) {
+        for (const std::string& j : findFingerJoints(d, endEffector)) ikJoints.push_back(j);
+        goalEndEffectors_.push_back(endEffector);
+        surfaceGoals_.push_back(toVec3(p_OG));
+    }
+    model_.realizeTopology();  // Simbody's Assembler (inside the IK) needs a realized topology
+    ik_ = std::make_unique<control::FingertipIk>(model_, goalEndEffectors_, ikJoints);
+    controller_ = new control::GraspController(*pd_, *ik_, ikJoints, model_.getMobilizedBody(kPalm),
+                                               scenario_.controller.ikInterval, ikTiming_);
+    model_.updSystem().addEventHandler(controller_);
+}
+
+SimTK::State GraspScene::makeInitialState() {
+    SimTK::State state = model_.getSystem().getDefaultState();
+    SimTK::Vector targets(static_cast<int>(pd_->getJointNames().size()), 0.0);
+    for (std::size_t k = 0; k < pd_->getJointNames().size(); ++k) {
+        const auto it = scenario_.graspPose.find(pd_->getJointNames()[k]);
+        if (it == scenario_.graspPose.end()) continue;
+        model_.setJointPosition(state, it->first, it->second);
+        targets[static_cast<int>(k)] = it->second;
+    }
+    pd_->setTargets(state, targets);
+    object_.setQToFitTransform(state, toTransform(scenario_.object.findPose()));
+    object_.lock(state, SimTK::Motion::Position);
+    model_.getSystem().realize(state, SimTK::Stage::Position);
+    // The goals: the scenario's points on the object, pressed in along the inward normal, as they
+    // sit in the palm frame now that hand and object are in place.
+    const SimTK::Transform X_PG = ~model_.getMobilizedBody(kPalm).getBodyTransform(state);
+    const SimTK::Transform& X_GO = object_.getBodyTransform(state);
+    std::vector<control::FingertipGoal> goals;
+    for (std::size_t k = 0; k < goalEndEffectors_.size(); ++k) {
+        const SimTK::Vec3& onSurface = surfaceGoals_[k];
+        const SimTK::Vec3 p_OG = onSurface - scenario_.controller.pressDepth * findSurfaceNormal(scenario_.object, onSurface);
+        goals.push_back({goalEndEffectors_[k], X_PG * (X_GO * p_OG)});
+    }
+    controller_->setGoals(goals);
+    controller_->updateTargets(state);
+    return state;
+}
+
+void GraspScene::releaseObject(SimTK::State& state) const { object_.unlock(state); }
+
+}  // namespace graspsim::simulation

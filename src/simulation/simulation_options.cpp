@@ -1,0 +1,22 @@
+#include "graspsim/simulation/simulation_options.h"
+
+#include "graspsim/error.h"
+
+namespace graspsim::simulation {
+
+ContactModel parseContactModel(const std::string& text, const std::string& source) {
+    if (text == "compliant") return ContactModel::Compliant;
+    if (text == "rigid") return ContactModel::Rigid;
+    throw InputError(source + ": contact model '" + text + "' is not accepted; use compliant or rigid");
+}
+
+SimulationMode parseSimulationMode(const std::string& text, const std::string& source) {
+    if (text == "full") return SimulationMode::Full;
+    if (text == "approx") return SimulationMode::Approx;
+    throw InputError(source + ": mode '" + text + "' is not accepted; use full or approx");
+}
+
+std::string toString(ContactModel model) { return model == ContactModel::Compliant ? "compliant" : "rigid"; }
+std::string toString(SimulationMode mode) { return mode == SimulationMode::Full ? "full" : "approx"; }
+
+}  // namespace graspsim::simulation

@@ -1,0 +1,145 @@
+#include "graspsim/contact/hand_object_pairs.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "graspsim/error.h"
+#include "graspsim/model/body_model.h"
+#include "graspsim/model/object_model.h"
+
+namespace graspsim::contact {
+namespace {
+
+model::Geometry makeGeometry(model::Geometry::Type type, const std::string& name) {
+    model::Geometry g;
+    g.type = type;
+    g.name = name;
+    g.radius = 0.01;
+    g.length = 0.03;
+    g.halfLengths = {0.04, 0.01, 0.04};
+    return g;
+}
+
+model::Body makeBody(const std::string& name, const std::string& segment, double mass) {
+    model::Body b;
+    b.name = name;
+    b.segment = segment;
+    b.mass = mass;
+    b.inertia.xx = b.inertia.yy = b.inertia.zz = mass * 1e-4;
+    return b;
+}
+
+model::Joint makeJoint(const std::string& name, model::Joint::Type type, const std::string& parent,
+                       const std::string& child) {
+    model::Joint j;
+    j.name = name;
+    j.type = type;
+    j.parent = parent;
+    j.child = child;
+    j.lower = -1;
+    j.upper = 1;
+    return j;
+}
+
+// palm (2 boxes, hand) -> virtual link (massless, no geometry) -> finger (capsule, hand);
+// palm -> ball (sphere, no segment) on a slider; forearm (capsule, not hand) welded to palm.
+model::ModelDescription makeHandWithBall() {
+    model::ModelDescription m;
+    m.name = "toy_hand";
+    model::Body palm = makeBody("palm", "hand", 0.25);
+    model::Geometry proximal = makeGeometry(model::Geometry::Type::Box, "palm_proximal_box");
+    proximal.X_BG = model::Transform::translation({0, -0.02, 0});
+    palm.geometry = {proximal, makeGeometry(model::Geometry::Type::Box, "palm_distal_box")};
+    model::Body finger = makeBody("index_proximal", "hand", 0.02);
+    finger.geometry = {makeGeometry(model::Geometry::Type::Capsule, "index_capsule")};
+    model::Body forearm = makeBody("forearm", "forearm", 1.0);
+    forearm.geometry = {makeGeometry(model::Geometry::Type::Capsule, "forearm_capsule")};
+    model::Body ball = makeBody("ball", "", 0.2);
+    ball.geometry = {makeGeometry(model::Geometry::Type::Sphere, "ball_sphere")};
+    m.bodies = {palm, makeBody("index_mcp__link", "hand", 0), finger, forearm, ball};
+    m.joints = {
+        makeJoint("index_abduction", model::Joint::Type::Revolute, "palm", "index_mcp__link"),
+        makeJoint("index_flexion", model::Joint::Type::Revolute, "index_mcp__link",
+                  "index_proximal"),
+        makeJoint("wrist", model::Joint::Type::Fixed, "palm", "forearm"),
+        makeJoint("ball_slide", model::Joint::Type::Prismatic, "palm", "ball")};
+    return m;
+}
+
+TEST(HandObjectPairs, EveryHandGeometryAgainstEveryObjectGeometry) {
+    const system::MultibodyModel model(makeHandWithBall());
+    const std::vector<ContactPair> pairs =
+        makeHandObjectPairs(model, isHandSegmentBody, "ball", ContactMaterial::fingerPad(),
+                            ContactMaterial::rigidPlastic());
+    ASSERT_EQ(pairs.size(), 3u);  // two palm boxes and the finger capsule; not the forearm
+    EXPECT_EQ(pairs[0].a.shapeName, "palm_proximal_box");
+    EXPECT_EQ(pairs[1].a.shapeName, "palm_distal_box");
+    EXPECT_EQ(pairs[2].a.bodyName, "index_proximal");
+    EXPECT_EQ(pairs[2].a.shape.type, ContactShape::Type::Capsule);
+    EXPECT_EQ(pairs[2].a.body.getMobilizedBodyIndex(),
+              model.getMobilizedBody("index_proximal").getMobilizedBodyIndex());
+    EXPECT_EQ(pairs[0].a.X_BS.p(), SimTK::Vec3(0, -0.02, 0));
+    for (const ContactPair& pair : pairs) {
+        EXPECT_EQ(pair.b.bodyName, "ball");
+        EXPECT_EQ(pair.b.shape.type, ContactShape::Type::Sphere);
+        EXPECT_EQ(pair.a.material.stiffness, ContactMaterial::fingerPad().stiffness);
+        EXPECT_EQ(pair.b.material.stiffness, ContactMaterial::rigidPlastic().stiffness);
+        EXPECT_TRUE(pair.enabledByDefault);
+    }
+}
+
+TEST(HandObjectPairs, BadObjectChoicesAreRejected) {
+    const system::MultibodyModel model(makeHandWithBall());
+    const ContactMaterial m;
+    try {
+        makeHandObjectPairs(model, isHandSegmentBody, "cup", m, m);
+        FAIL() << "unknown object accepted";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "hand-object contact: model 'toy_hand' has no object body named 'cup'");
+    }
+    EXPECT_THROW(makeHandObjectPairs(model, isHandSegmentBody, "palm", m, m), InputError);
+    ContactMaterial bad;
+    bad.staticFriction = -1;
+    EXPECT_THROW(makeHandObjectPairs(model, isHandSegmentBody, "ball", bad, m), InputError);
+}
+
+TEST(HandObjectPairs, CylinderGeometryIsRejectedNamingBodyAndGeometry) {
+    model::ModelDescription description = makeHandWithBall();
+    description.updBody("index_proximal")->geometry[0].type = model::Geometry::Type::Cylinder;
+    const system::MultibodyModel model(description);
+    try {
+        makeHandObjectPairs(model, isHandSegmentBody, "ball", {}, {});
+        FAIL() << "cylinder accepted";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "body 'index_proximal' geometry 'index_capsule': type cylinder has no contact "
+                  "support; use sphere, capsule or box");
+    }
+}
+
+TEST(HandObjectPairs, AnthropometricHandAgainstAnAddedBall) {
+    system::MultibodyModel arm(model::buildBodyModel(model::BuildOptions{}));
+    const model::Body ball = model::buildBallModel().bodies.front();
+    const SimTK::MobilizedBody::Free ballMobod(
+        arm.updMatter().updGround(),
+        SimTK::Body::Rigid(
+            SimTK::MassProperties(ball.mass, SimTK::Vec3(0), SimTK::UnitInertia::sphere(0.045))));
+    const std::vector<ContactPair> pairs =
+        makeHandObjectPairs(arm, isHandSegmentBody, ballMobod, ball, ContactMaterial::fingerPad(),
+                            ContactMaterial::rigidPlastic());
+    std::size_t handGeometry = 0;
+    for (const model::Body& body : arm.getDescription().bodies) {
+        if (body.segment == "hand" && !body.isVirtual()) handGeometry += body.geometry.size();
+    }
+    EXPECT_EQ(pairs.size(), handGeometry);
+    EXPECT_GE(pairs.size(), 17u);  // 15 phalanx capsules (thumb metacarpal included), 2 palm boxes
+    for (const ContactPair& pair : pairs) {
+        EXPECT_EQ(pair.b.body.getMobilizedBodyIndex(), ballMobod.getMobilizedBodyIndex());
+    }
+}
+
+}  // namespace
+}  // namespace graspsim::contact

@@ -1,0 +1,106 @@
+#include "graspsim/scenario/scenario.h"
+
+#include "graspsim/anthropometry/subject.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace graspsim;
+using namespace graspsim::scenario;
+
+namespace {
+
+ObjectSpec makeSphere(double radius) {
+    ObjectSpec object;
+    object.shape = ObjectShape::Sphere;
+    object.mass = 0.2;
+    object.radius = radius;
+    return object;
+}
+
+ObjectSpec makeBox(const Vec3& size) {
+    ObjectSpec object;
+    object.shape = ObjectShape::Box;
+    object.mass = 0.1;
+    object.size = size;
+    return object;
+}
+
+void expectNear(const Vec3& actual, const Vec3& expected, double tolerance) {
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(actual[i], expected[i], tolerance) << "component " << i;
+}
+
+}  // namespace
+
+TEST(ObjectSpec, PoseIsTranslationAndBodyFixedXyzRotation) {
+    ObjectSpec object = makeSphere(0.05);
+    object.position = {0.1, -0.2, 0.3};
+    object.orientation = {M_PI / 2, 0, 0};
+    const model::Transform X_GO = object.findPose();
+    expectNear(X_GO.p, {0.1, -0.2, 0.3}, 0);
+    // 90 deg about x takes O's y to G's z.
+    expectNear(X_GO.xformFrameVecToBase({0, 1, 0}), {0, 0, 1}, 1e-15);
+}
+
+TEST(ObjectSpec, EulerAnglesComposeAboutTheNewAxes) {
+    ObjectSpec object = makeSphere(0.05);
+    object.orientation = {M_PI / 2, M_PI / 2, 0};
+    // Body-fixed: after 90 deg about x, the second rotation is about the new y (= G's z), which
+    // takes O's x to G's y. A space-fixed sequence would take it to -z instead.
+    expectNear(object.findPose().xformFrameVecToBase({1, 0, 0}), {0, 1, 0}, 1e-15);
+}
+
+TEST(ObjectSpec, SphereSurfaceDistanceIsSignedRadialDistance) {
+    const ObjectSpec ball = makeSphere(0.045);
+    EXPECT_NEAR(ball.calcSurfaceDistance({0.045, 0, 0}), 0, 1e-15);
+    EXPECT_NEAR(ball.calcSurfaceDistance({0, 0.03, 0.04}), 0.005, 1e-15);
+    EXPECT_NEAR(ball.calcSurfaceDistance({0, 0, 0}), -0.045, 1e-15);
+}
+
+TEST(ObjectSpec, BoxSurfaceDistanceOutsideIsEuclideanInsideIsNearestFace) {
+    const ObjectSpec phone = makeBox({0.07, 0.14, 0.008});
+    EXPECT_NEAR(phone.calcSurfaceDistance({0.01, 0.02, 0.004}), 0, 1e-15);     // on the +z face
+    EXPECT_NEAR(phone.calcSurfaceDistance({0.01, 0.02, 0.007}), 0.003, 1e-15); // above the face
+    EXPECT_NEAR(phone.calcSurfaceDistance({0.038, 0.074, 0.004}), 0.005, 1e-15); // off an edge: 3-4-5
+    EXPECT_NEAR(phone.calcSurfaceDistance({0.0, 0.0, 0.001}), -0.003, 1e-15);  // inside, 3 mm under +z
+}
+
+TEST(ObjectSpec, ModelIsTheObjectBuilderWithTheSpecsMassAndSize) {
+    const model::ModelDescription ball = buildObjectModel(makeSphere(0.05));
+    ASSERT_EQ(ball.bodies.size(), 1u);
+    EXPECT_DOUBLE_EQ(ball.bodies[0].mass, 0.2);
+    EXPECT_DOUBLE_EQ(ball.bodies[0].geometry.at(0).radius, 0.05);
+    const model::ModelDescription box = buildObjectModel(makeBox({0.05, 0.1, 0.02}));
+    EXPECT_DOUBLE_EQ(box.bodies.at(0).mass, 0.1);
+    expectNear(box.bodies[0].geometry.at(0).halfLengths, {0.025, 0.05, 0.01}, 1e-17);
+}
+
+TEST(Perturbation, ActsFromStartUntilStartPlusDuration) {
+    const Perturbation f1{"f1", {0, -9.5, 0}, 1.5, 1.0};
+    EXPECT_FALSE(f1.isActiveAt(1.49));
+    EXPECT_TRUE(f1.isActiveAt(1.5));
+    EXPECT_TRUE(f1.isActiveAt(2.49));
+    EXPECT_FALSE(f1.isActiveAt(2.5));
+}
+
+TEST(Scenario, FindsPerturbationsByName) {
+    Scenario scenario;
+    scenario.perturbations = {{"f1", {1, 0, 0}, 0, 1}, {"f2", {0, 1, 0}, 0, 1}};
+    ASSERT_NE(scenario.findPerturbation("f2"), nullptr);
+    EXPECT_DOUBLE_EQ(scenario.findPerturbation("f2")->force[1], 1);
+    EXPECT_EQ(scenario.findPerturbation("f3"), nullptr);
+}
+
+TEST(Scenario, DefaultsAreTheMaleReferenceSubjectWithTheThesisPreset) {
+    const Scenario scenario;
+    const anthropometry::Subject reference = anthropometry::getReferenceSubject(anthropometry::Sex::Male);
+    EXPECT_EQ(scenario.bodyOptions.subject.sex, anthropometry::Sex::Male);
+    EXPECT_DOUBLE_EQ(scenario.bodyOptions.subject.mass, reference.mass);
+    EXPECT_DOUBLE_EQ(scenario.bodyOptions.subject.stature, reference.stature);
+    EXPECT_EQ(scenario.bodyOptions.preset, model::Preset::Thesis);
+    EXPECT_EQ(scenario.bodyOptions.body, model::BodyKind::Arm);
+    expectNear(scenario.world.gravity, {0, -9.81, 0}, 0);
+    EXPECT_DOUBLE_EQ(scenario.contact.viscousFriction, 0);
+    EXPECT_LE(scenario.contact.dynamicFriction, scenario.contact.staticFriction);
+}
