@@ -1,77 +1,13 @@
 // Runs the real `graspsim` executable: bad input must give one line on stderr naming the field,
 // the value and what is accepted, exit code 2, and no output file.
 
+#include "cli_process.h"
+
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <algorithm>
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
-#include <string>
-
 namespace fs = std::filesystem;
-
-namespace {
-
-struct RunResult {
-    int exitCode = -1;
-    std::string out;
-    std::string err;
-};
-
-std::string slurp(const fs::path& path) {
-    std::ifstream in(path);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-class ModelCommand : public ::testing::Test {
-protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() /
-               ("graspsim_cli_" + std::to_string(::getpid()) + "_" +
-                ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-
-    RunResult run(const std::string& args) const {
-        const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-        const std::string command = std::string(GRASPSIM_CLI_PATH) + " " + args + " >" + out.string() + " 2>" + err.string();
-        const int status = std::system(command.c_str());
-        RunResult r;
-        r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-        r.out = slurp(out);
-        r.err = slurp(err);
-        return r;
-    }
-
-    // One line naming every expected fragment, exit code 2, and the output file absent.
-    void expectBadInput(const std::string& args, std::initializer_list<const char*> fragments) const {
-        const RunResult r = run(args);
-        EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.err;
-        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-        for (const char* f : fragments) EXPECT_NE(r.err.find(f), std::string::npos) << "missing '" << f << "' in: " << r.err;
-        EXPECT_FALSE(fs::exists(output())) << args;
-        EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 2);  // just the captures
-    }
-
-    std::string output() const { return (dir_ / "model.urdf").string(); }
-    std::string write(const std::string& name, const std::string& text) const {
-        std::ofstream(dir_ / name) << text;
-        return (dir_ / name).string();
-    }
-
-    fs::path dir_;
-};
-
-}  // namespace
+using graspsim::testing::RunResult;
+using ModelCommand = graspsim::testing::CliProcess;
 
 TEST_F(ModelCommand, BuildsAndDescribesTheDefaultArm) {
     const RunResult build = run("model build -o " + output());
