@@ -2,16 +2,15 @@
 // The anthropometry CSV files, compiled into the library by cmake/EmbedFiles.cmake so that
 // the CSVs stay the single source of truth and nothing reads the source tree at run time.
 
+#include "graspsim/io/embedded_file.h"
+
 #include <cstddef>
 #include <string>
 #include <string_view>
 
 namespace graspsim::anthropometry {
 
-struct EmbeddedFile {
-    std::string_view name;  // file name without directory, e.g. "joint_ranges.csv"
-    std::string_view text;  // the whole file
-};
+using io::EmbeddedFile;
 
 // Defined in the generated embedded_tables_data.cpp.
 extern const EmbeddedFile kEmbeddedFiles[];
