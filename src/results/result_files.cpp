@@ -26,13 +26,14 @@ void putVec3(std::ostringstream& out, const SimTK::Vec3& v) {
 
 std::string formatTrajectoryCsv(const simulation::SimulationResult& result) {
     std::ostringstream out;
-    out << "time_s,object_x_m,object_y_m,object_z_m,object_qw,object_qx,object_qy,object_qz";
+    out << "time_s,object_x_m,object_y_m,object_z_m,object_qw,object_qx,object_qy,object_qz,grasp_quality_n";
     for (const std::string& joint : result.jointNames) out << ',' << joint << "_rad";
     out << '\n';
     for (const simulation::TrajectorySample& s : result.trajectory) {
         std::ostringstream row;
         putVec3(row, s.p_GO);
         for (int k = 0; k < 4; ++k) put(row, s.q_GO[k]);
+        put(row, s.graspQuality);
         for (double q : s.jointAngles) put(row, q);
         char time[32];
         std::snprintf(time, sizeof time, "%.17g", s.time);
@@ -79,6 +80,7 @@ std::string formatSummaryJson(const simulation::SimulationSummary& s) {
     j["settle_time_s"] = s.settleTime;
     j["object_displacement_m"] = s.objectDisplacement;
     j["max_penetration_m"] = s.maxPenetration;
+    j["max_grasp_quality_n"] = s.maxGraspQuality;
     j["held"] = s.held;
     j["max_fingertip_goal_distance_m"] = s.maxFingertipGoalDistance;
     return j.dump(2) + "\n";

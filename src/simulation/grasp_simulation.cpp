@@ -1,6 +1,7 @@
 #include "graspsim/simulation/grasp_simulation.h"
 
 #include "graspsim/error.h"
+#include "graspsim/simulation/contact_grasp_quality.h"
 #include "graspsim/simulation/grasp_scene.h"
 
 #include <algorithm>
@@ -36,6 +37,7 @@ class Recorder {
 public:
     Recorder(const GraspScene& scene, SimulationResult& result) : scene_(scene), result_(result) {
         result_.jointNames = scene.getModel().getJointNames();
+        qualityOptions_.mu = scene.getScenario().contact.staticFriction;
     }
 
     void record(const SimTK::State& s) {
@@ -46,8 +48,10 @@ public:
         sample.p_GO = X_GO.p();
         sample.q_GO = X_GO.R().convertRotationToQuaternion();
         for (const std::string& j : result_.jointNames) sample.jointAngles.push_back(scene_.getModel().getJointPosition(s, j));
-        result_.trajectory.push_back(std::move(sample));
         ContactSample contacts{s.getTime(), scene_.getContacts().findContactReports(s)};
+        sample.graspQuality = calcContactGraspQuality(contacts.contacts, X_GO, qualityOptions_);
+        result_.summary.maxGraspQuality = std::max(result_.summary.maxGraspQuality, sample.graspQuality);
+        result_.trajectory.push_back(std::move(sample));
         for (const auto& c : contacts.contacts) result_.summary.maxPenetration = std::max(result_.summary.maxPenetration, c.depth);
         result_.contacts.push_back(std::move(contacts));
     }
@@ -55,6 +59,7 @@ public:
 private:
     const GraspScene& scene_;
     SimulationResult& result_;
+    grasp::QualityOptions qualityOptions_;  // box friction cone, smallest singular value
 };
 
 void checkFinite(const SimTK::State& s, const std::string& lastEvent) {

@@ -3,7 +3,8 @@
 /// The files a simulation run leaves in its output folder.
 ///
 /// - trajectory.csv: time (s), object position x, y, z (m, ground), orientation quaternion
-///   w, x, y, z, then every hand joint angle (rad) by name;
+///   w, x, y, z, grasp quality (N, smallest singular value of the grasp matrix), then every hand
+///   joint angle (rad) by name;
 /// - contacts.csv: one row per contact and output time: time (s), body_a, shape_a, body_b,
 ///   shape_b, contact point x, y, z (m, ground), normal x, y, z (from a toward b), normal force
 ///   (N), friction force on b x, y, z (N, ground), penetration (m);

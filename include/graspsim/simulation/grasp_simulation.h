@@ -20,6 +20,7 @@ struct TrajectorySample {
     SimTK::Vec3 p_GO{0};              ///< object centre of mass in ground (m)
     SimTK::Quaternion q_GO;           ///< object orientation in ground (w, x, y, z)
     std::vector<double> jointAngles;  ///< rad, ordered as SimulationResult::jointNames
+    double graspQuality = 0;          ///< smallest singular value of the grasp matrix (N), see contact_grasp_quality.h
 };
 
 /// The contacts at one output time.
@@ -43,6 +44,7 @@ struct SimulationSummary {
     double settleTime = 0;          ///< when the grasp counts as settled (s)
     double objectDisplacement = 0;  ///< |p_GO(end) - p_GO(settle)| (m)
     double maxPenetration = 0;      ///< deepest contact over the output samples (m)
+    double maxGraspQuality = 0;     ///< largest grasp quality over the output samples (N)
     bool held = false;              ///< at the end every goal's fingertip is within the held tolerance of its goal
     double maxFingertipGoalDistance = 0;  ///< at the end (m)
 };

@@ -1,0 +1,22 @@
+#pragma once
+/// @file
+/// Grasp quality of the current finger-object contacts: the bridge from the contact layer's
+/// reports to the grasp layer's metric (the quantity the grasp switch will watch).
+
+#include "graspsim/contact/compliant_contact_force.h"
+#include "graspsim/grasp/quality_options.h"
+
+#include <simbody/Simbody.h>
+
+#include <vector>
+
+namespace graspsim::simulation {
+
+/// Grasp quality (grasp::calcGraspQuality) of the contacts in `reports` acting on the object,
+/// whose frame O has pose X_GO. Each contact's friction-basis forces are scaled by its normal
+/// force (the thesis builds them from the contact solution); the object is surface b of every
+/// pair, so n_G (from a toward b) points into it. No contacts give 0.
+double calcContactGraspQuality(const std::vector<contact::ContactReport>& reports, const SimTK::Transform& X_GO,
+                               const grasp::QualityOptions& options);
+
+}  // namespace graspsim::simulation

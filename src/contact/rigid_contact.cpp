@@ -1,0 +1,167 @@
+#include "graspsim/contact/rigid_contact.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "graspsim/contact/contact_force_law.h"
+#include "graspsim/contact/rigid_contact_constraint.h"
+#include "graspsim/error.h"
+
+namespace graspsim::contact {
+namespace {
+
+[[noreturn]] void throwBadField(const std::string& source, const char* field, double value,
+                                const char* accepted) {
+    std::ostringstream message;
+    message << source << ": " << field << " (" << value << ") must be " << accepted;
+    throw InputError(message.str());
+}
+
+bool isFiniteNonNegative(double x) { return std::isfinite(x) && x >= 0; }
+
+}  // namespace
+
+RigidContactParameters RigidContactParameters::fromMaterials(const ContactMaterial& a,
+                                                             const ContactMaterial& b) {
+    const ContactParameters combined = combineMaterials(a, b);
+    RigidContactParameters p;
+    p.staticFriction = combined.staticFriction;
+    p.dynamicFriction = combined.dynamicFriction;
+    p.viscousFriction = combined.viscousFriction;
+    return p;
+}
+
+void RigidContactParameters::validate(const std::string& source) const {
+    if (!(minRestitution >= 0 && minRestitution <= 1))
+        throwBadField(source, "minRestitution", minRestitution, "in [0, 1]");
+    if (!isFiniteNonNegative(staticFriction))
+        throwBadField(source, "staticFriction", staticFriction, "finite and >= 0");
+    if (!isFiniteNonNegative(dynamicFriction))
+        throwBadField(source, "dynamicFriction", dynamicFriction, "finite and >= 0");
+    if (!isFiniteNonNegative(viscousFriction))
+        throwBadField(source, "viscousFriction", viscousFriction, "finite and >= 0 s/m");
+    if (dynamicFriction > staticFriction)
+        throwBadField(source, "dynamicFriction", dynamicFriction, "<= staticFriction");
+    if (!(std::isfinite(searchMargin) && searchMargin > 0))
+        throwBadField(source, "searchMargin", searchMargin, "finite and > 0 m");
+}
+
+RigidContact::RigidContact(SimTK::SimbodyMatterSubsystem& matter, const ContactSurface& a,
+                           const ContactSurface& b, const RigidContactParameters& parameters)
+    : UnilateralContact(1), m_a(a), m_b(b), m_parameters(parameters) {
+    const std::string name = "rigid contact " + ContactPair{a, b}.describe();
+    parameters.validate(name);
+    a.shape.validate(name + " shape A");
+    b.shape.validate(name + " shape B");
+    if (!isRigidContactSupported(a.shape, b.shape))
+        throw InputError(name +
+                         ": the pair needs a sphere or a capsule on at least one side (box-box "
+                         "and box-half-space pairs are not supported by the rigid model)");
+    m_constraint = SimTK::Constraint::Custom(new RigidContactConstraint(
+        matter, a.body, a.shape, a.X_BS, b.body, b.shape, b.X_BS, parameters.searchMargin));
+    m_constraint.setIsConditional(true);
+    m_constraint.setDisabledByDefault(true);
+}
+
+SimTK::UnilateralContactIndex RigidContact::add(SimTK::SimbodyMatterSubsystem& matter,
+                                                const ContactPair& pair,
+                                                const RigidContactParameters& parameters) {
+    return matter.adoptUnilateralContact(new RigidContact(matter, pair.a, pair.b, parameters));
+}
+
+RigidContactGeometry RigidContact::findGeometryInGround(const SimTK::State& state) const {
+    return findRigidContactGeometry(m_a.shape, m_a.body.getBodyTransform(state) * m_a.X_BS,
+                                    m_b.shape, m_b.body.getBodyTransform(state) * m_b.X_BS,
+                                    m_parameters.searchMargin);
+}
+
+SimTK::Vec3 RigidContact::findSlipVelocityInGround(const SimTK::State& state,
+                                                   RigidContactGeometry& geometry) const {
+    geometry = findGeometryInGround(state);
+    return m_b.body.findStationVelocityInGround(
+               state, m_b.body.findStationAtGroundPoint(state, geometry.p_F)) -
+           m_a.body.findStationVelocityInGround(
+               state, m_a.body.findStationAtGroundPoint(state, geometry.p_F));
+}
+
+bool RigidContact::disable(SimTK::State& state) const {
+    if (m_constraint.isDisabled(state)) return false;
+    m_constraint.disable(state);
+    return true;
+}
+
+bool RigidContact::enable(SimTK::State& state) const {
+    if (!m_constraint.isDisabled(state)) return false;
+    m_constraint.enable(state);
+    return true;
+}
+
+bool RigidContact::isEnabled(const SimTK::State& state) const {
+    return !m_constraint.isDisabled(state);
+}
+
+SimTK::Vec3 RigidContact::whereToDisplay(const SimTK::State& state) const {
+    return findGeometryInGround(state).p_F;
+}
+
+SimTK::Real RigidContact::calcEffectiveCOR(const SimTK::State&, SimTK::Real defaultCaptureSpeed,
+                                           SimTK::Real defaultMinCORSpeed,
+                                           SimTK::Real impactSpeed) const {
+    return SimTK::ConditionalConstraint::calcEffectiveCOR(
+        m_parameters.minRestitution, defaultCaptureSpeed, defaultMinCORSpeed, impactSpeed);
+}
+
+SimTK::Real RigidContact::getPerr(const SimTK::State& state) const {
+    return findGeometryInGround(state).separation;
+}
+
+SimTK::Real RigidContact::getVerr(const SimTK::State& state) const {
+    RigidContactGeometry g;
+    const SimTK::Vec3 v = findSlipVelocityInGround(state, g);
+    return ~g.n_F * v;
+}
+
+SimTK::Real RigidContact::getAerr(const SimTK::State& state) const {
+    RigidContactGeometry g;
+    const SimTK::Vec3 v = findSlipVelocityInGround(state, g);
+    const SimTK::Vec3 p_A = m_a.body.findStationAtGroundPoint(state, g.p_F);
+    const SimTK::Vec3 p_B = m_b.body.findStationAtGroundPoint(state, g.p_F);
+    const SimTK::Vec3 a = m_b.body.findStationAccelerationInGround(state, p_B) -
+                          m_a.body.findStationAccelerationInGround(state, p_A) -
+                          2 * (m_a.body.getBodyAngularVelocity(state) % v);
+    return ~g.n_F * a;
+}
+
+SimTK::MultiplierIndex RigidContact::getContactMultiplierIndex(const SimTK::State& state) const {
+    SimTK::MultiplierIndex px0, vx0, ax0;
+    m_constraint.getIndexOfMultipliersInUse(state, px0, vx0, ax0);
+    return px0;  // invalid when disabled
+}
+
+void RigidContact::getFrictionMultiplierIndices(const SimTK::State& state,
+                                                SimTK::MultiplierIndex& ix_x,
+                                                SimTK::MultiplierIndex& ix_y) const {
+    ix_x.invalidate();
+    ix_y.invalidate();
+    SimTK::MultiplierIndex px0, vx0, ax0;
+    m_constraint.getIndexOfMultipliersInUse(state, px0, vx0, ax0);
+    if (!vx0.isValid()) return;
+    ix_x = vx0;
+    ix_y = SimTK::MultiplierIndex(vx0 + 1);
+}
+
+SimTK::Real RigidContact::calcEffectiveCOF(const SimTK::State&, SimTK::Real defaultTransitionSpeed,
+                                           SimTK::Real slipSpeed) const {
+    return SimTK::ConditionalConstraint::calcEffectiveCOF(
+        m_parameters.staticFriction, m_parameters.dynamicFriction, m_parameters.viscousFriction,
+        defaultTransitionSpeed, slipSpeed);
+}
+
+SimTK::Vec2 RigidContact::getSlipVelocity(const SimTK::State& state) const {
+    RigidContactGeometry g;
+    const SimTK::Vec3 v = findSlipVelocityInGround(state, g);
+    const SimTK::UnitVec3 tx = g.n_F.perp();
+    return SimTK::Vec2(~tx * v, ~(g.n_F % tx) * v);
+}
+
+}  // namespace graspsim::contact
