@@ -74,7 +74,8 @@ GraspScene::GraspScene(const scenario::Scenario& scenario, const SimulationOptio
     : scenario_(scenario), model_(model::buildBodyModel(scenario.bodyOptions), makeSystemOptions(scenario)) {
     if (options.contact != ContactModel::Compliant) {
         throw InputError("--contact: '" + toString(options.contact) +
-                         "' is not available yet; use compliant (rigid contact is planned)");
+                         "' is not available in simulate yet; use compliant (the rigid component, contact::RigidContact, "
+                         "is not wired into grasp scenes yet)");
     }
     if (options.mode != SimulationMode::Full) {
         throw InputError("--mode: '" + toString(options.mode) + "' is not available yet; use full");

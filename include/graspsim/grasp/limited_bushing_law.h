@@ -1,0 +1,37 @@
+#pragma once
+/// @file
+/// The per-axis elasto-plastic law and the rotation-vector chart of grasp::LimitedBushing, as
+/// plain functions so they can be tested against closed forms without a multibody system.
+///
+/// One axis (rotation: rad, N m, rad/s; translation: m, N, m/s) has stiffness K > 0, damping
+/// D >= 0 and limit L >= 0 (+Infinity for a locked axis); its state is the displacement e from
+/// the anchor, and r is the rate of the relative coordinate (e's rate if the anchor stood still).
+
+#include <simbody/Simbody.h>
+
+namespace graspsim::grasp {
+
+/// Fraction s in [0, 1] of the relative rate r that the anchor takes over (zdot = s r).
+/// s = 0 unless the axis is loading (e r > 0); then s = g(K |e| / L), with g = 0 below 1 - w,
+/// g = 1 at and above 1 and the C1 smoothstep 3 t^2 - 2 t^3, t = (u - 1 + w) / w, between.
+/// L = +Infinity gives 0; L = 0 gives 1 for any loading e != 0.
+/// @param onsetWidth w in (0, 1]: the band of |K e| / L below 1 in which slip begins.
+double calcSlipFraction(double stiffness, double limit, double onsetWidth, double e, double r);
+
+/// Force (N or N m) on the axis: clamp(-K e - D edot, -L, +L), edot the elastic rate
+/// (1 - s) r.
+double calcAxisForce(double stiffness, double damping, double limit, double e, double edot);
+
+/// Rotation vector theta = angle * axis of R (angle in [0, pi]), rad.
+SimTK::Vec3 calcRotationVector(const SimTK::Rotation& R);
+
+/// The rotation exp([theta]x): angle |theta| about theta / |theta| (identity for theta = 0).
+SimTK::Rotation calcRotationFromVector(const SimTK::Vec3& theta);
+
+/// Time derivative of the rotation vector theta of R_PB (rad/s) for B's angular velocity in P
+/// expressed in B, w_PB_B (rad/s): thetadot = w + theta x w / 2
+/// + (1 - (phi / 2) cot(phi / 2)) / phi^2 theta x (theta x w), phi = |theta| (the inverse of
+/// the right Jacobian of SO(3)). Singular at phi = 2 pi; accurate for phi well below it.
+SimTK::Vec3 calcRotationVectorRate(const SimTK::Vec3& theta, const SimTK::Vec3& w_PB_B);
+
+}  // namespace graspsim::grasp

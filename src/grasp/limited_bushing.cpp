@@ -1,0 +1,363 @@
+#include "graspsim/grasp/limited_bushing.h"
+
+#include <array>
+#include <cmath>
+#include <string>
+
+#include "graspsim/error.h"
+#include "graspsim/grasp/limited_bushing_law.h"
+
+namespace graspsim::grasp {
+
+namespace {
+
+const char* const kAxisNames[6] = {"rotation x",    "rotation y",    "rotation z",
+                                   "translation x", "translation y", "translation z"};
+
+// The per-state axis settings: one discrete variable, so setLimits() and setAxisLocked()
+// invalidate once.
+struct AxisSettings {
+    SimTK::Vec6 limits = SimTK::Vec6(SimTK::Infinity);
+    std::array<bool, 6> locked = {true, true, true, true, true, true};
+};
+
+void checkAxisValues(const SimTK::Vec6& values, const std::string& what, bool allowZero,
+                     bool allowInfinity) {
+    for (int k = 0; k < 6; ++k) {
+        const double v = values[k];
+        const bool ok = !std::isnan(v) && (allowZero ? v >= 0 : v > 0) &&
+                        (allowInfinity || std::isfinite(v));
+        if (!ok) {
+            throw InputError("limited bushing " + what + " on " + kAxisNames[k] + " is " +
+                             std::to_string(v) + "; accepted: " + (allowZero ? ">= 0" : "> 0") +
+                             (allowInfinity ? " (infinity allowed)" : " and finite"));
+        }
+    }
+}
+
+// Relative state of M with respect to the anchor, as the law needs it.
+struct BushingKinematics {
+    SimTK::Rotation R_GA;  // anchor orientation in Ground
+    SimTK::Vec3 p_GM;      // M's origin in Ground (m)
+    SimTK::Vec6 e;         // displacement of M from A (rad, m; in A)
+    SimTK::Vec6 r;         // velocity of M relative to F (rad/s, m/s; in A)
+};
+
+// The law's output on all six axes.
+struct BushingResponse {
+    SimTK::Vec6 slip;   // slip fractions s_k
+    SimTK::Vec6 force;  // generalized force on O (N m, N; in A)
+};
+
+}  // namespace
+
+class LimitedBushingImpl : public SimTK::Force::Custom::Implementation {
+public:
+    LimitedBushingImpl(const SimTK::GeneralForceSubsystem& forces, const SimTK::MobilizedBody& H,
+                       const SimTK::Transform& X_HF, const SimTK::MobilizedBody& O,
+                       const SimTK::Transform& X_OM, const SimTK::Vec6& stiffness,
+                       const SimTK::Vec6& damping)
+        : forces_(forces), bodyH_(H), X_HF_(X_HF), bodyO_(O), X_OM_(X_OM), stiffness_(stiffness),
+          damping_(damping) {}
+
+    const SimTK::Vec6& getStiffness() const { return stiffness_; }
+    const SimTK::Vec6& getDamping() const { return damping_; }
+    double getSlipOnsetWidth() const { return onsetWidth_; }
+    void setSlipOnsetWidth(double width) { onsetWidth_ = width; }
+
+    void realizeTopology(SimTK::State& state) const override {
+        enabledIndex_ = forces_.allocateDiscreteVariable(state, SimTK::Stage::Instance,
+                                                         new SimTK::Value<bool>(true));
+        settingsIndex_ = forces_.allocateDiscreteVariable(
+            state, SimTK::Stage::Dynamics, new SimTK::Value<AxisSettings>(AxisSettings()));
+        baseIndex_ = forces_.allocateDiscreteVariable(state, SimTK::Stage::Dynamics,
+                                                      new SimTK::Value<SimTK::Transform>());
+        zIndex_ = forces_.allocateZ(state, SimTK::Vector(6, 0.0));
+    }
+
+    // ---- state variables ----------------------------------------------------------------
+    bool isEnabled(const SimTK::State& s) const {
+        return SimTK::Value<bool>::downcast(forces_.getDiscreteVariable(s, enabledIndex_)).get();
+    }
+    void setEnabled(SimTK::State& s, bool enabled) const {
+        SimTK::Value<bool>::updDowncast(forces_.updDiscreteVariable(s, enabledIndex_)).upd() =
+            enabled;
+    }
+    const AxisSettings& getSettings(const SimTK::State& s) const {
+        return SimTK::Value<AxisSettings>::downcast(forces_.getDiscreteVariable(s, settingsIndex_))
+            .get();
+    }
+    // Writes the settings and, if positions are realized, moves the anchor so no axis holds
+    // more elastic force than its new limit (the excess becomes slip at once).
+    void setSettings(SimTK::State& s, const AxisSettings& settings) const {
+        const bool canProject = s.getSystemStage() >= SimTK::Stage::Position;
+        const SimTK::Transform X_FM = canProject ? findX_FM(s) : SimTK::Transform();
+        SimTK::Vec6 e = canProject ? findDisplacement(s) : SimTK::Vec6(0);
+        SimTK::Value<AxisSettings>::updDowncast(forces_.updDiscreteVariable(s, settingsIndex_))
+            .upd() = settings;
+        if (!canProject) return;
+        const SimTK::Vec6 limits = findEffectiveLimits(settings);
+        bool changed = false;
+        for (int k = 0; k < 6; ++k) {
+            const double eMax = limits[k] / stiffness_[k];
+            if (std::abs(e[k]) > eMax) {
+                e[k] = std::copysign(eMax, e[k]);
+                changed = true;
+            }
+        }
+        if (changed) placeAnchor(s, X_FM, e);
+    }
+    static SimTK::Vec6 findEffectiveLimits(const AxisSettings& settings) {
+        SimTK::Vec6 limits = settings.limits;
+        for (int k = 0; k < 6; ++k) {
+            if (settings.locked[k]) limits[k] = SimTK::Infinity;
+        }
+        return limits;
+    }
+
+    // ---- anchor --------------------------------------------------------------------------
+    // z: the anchor's slip since X_FA0, (rotation vector of R_A0A, p_A0A in A0).
+    SimTK::Vec6 getAnchorSlip(const SimTK::State& s) const {
+        const SimTK::Vector& z = forces_.getZ(s);
+        SimTK::Vec6 slip;
+        for (int i = 0; i < 6; ++i) slip[i] = z[int(zIndex_) + i];
+        return slip;
+    }
+    SimTK::Transform findAnchorTransform(const SimTK::State& s) const {
+        const SimTK::Transform& X_FA0 =
+            SimTK::Value<SimTK::Transform>::downcast(forces_.getDiscreteVariable(s, baseIndex_))
+                .get();
+        const SimTK::Vec6 z = getAnchorSlip(s);
+        return X_FA0 *
+               SimTK::Transform(calcRotationFromVector(z.getSubVec<3>(0)), z.getSubVec<3>(3));
+    }
+    // Sets the anchor so that M's displacement from it is e. Re-bases the chart (X_FA0 := X_FA,
+    // z := 0) so the rotation-vector slip starts again from zero.
+    void placeAnchor(SimTK::State& s, const SimTK::Transform& X_FM, const SimTK::Vec6& e) const {
+        const SimTK::Transform X_AM(calcRotationFromVector(e.getSubVec<3>(0)), e.getSubVec<3>(3));
+        SimTK::Value<SimTK::Transform>::updDowncast(forces_.updDiscreteVariable(s, baseIndex_))
+            .upd() = X_FM * ~X_AM;
+        forces_.updZ(s)(int(zIndex_), 6) = 0;
+    }
+    void resetAnchor(SimTK::State& s) const { placeAnchor(s, findX_FM(s), SimTK::Vec6(0)); }
+    void setAnchorDisplacement(SimTK::State& s, const SimTK::Vec6& e) const {
+        placeAnchor(s, findX_FM(s), e);
+    }
+
+    // ---- kinematics and law --------------------------------------------------------------
+    SimTK::Transform findX_FM(const SimTK::State& s) const {
+        const SimTK::Transform X_GF = bodyH_.getBodyTransform(s) * X_HF_;
+        const SimTK::Transform X_GM = bodyO_.getBodyTransform(s) * X_OM_;
+        return ~X_GF * X_GM;
+    }
+    SimTK::Vec6 findDisplacement(const SimTK::State& s) const {
+        const SimTK::Transform X_AM = ~findAnchorTransform(s) * findX_FM(s);
+        SimTK::Vec6 e;
+        e.updSubVec<3>(0) = calcRotationVector(X_AM.R());
+        e.updSubVec<3>(3) = X_AM.p();
+        return e;
+    }
+    BushingKinematics findKinematics(const SimTK::State& s) const {
+        BushingKinematics k;
+        const SimTK::Transform X_GH = bodyH_.getBodyTransform(s);
+        const SimTK::Transform X_GO = bodyO_.getBodyTransform(s);
+        const SimTK::Transform X_FA = findAnchorTransform(s);
+        k.R_GA = X_GH.R() * X_HF_.R() * X_FA.R();
+        k.p_GM = X_GO * X_OM_.p();
+        k.e = findDisplacement(s);
+        // Velocity of O's material point at M relative to H's coincident point: the rate of
+        // p_FM taken in F. Using the coincident point keeps H's rotation out of the slip.
+        const SimTK::SpatialVec& V_GH = bodyH_.getBodyVelocity(s);
+        const SimTK::SpatialVec& V_GO = bodyO_.getBodyVelocity(s);
+        const SimTK::Vec3 v_GH_M = V_GH[1] + V_GH[0] % (k.p_GM - X_GH.p());
+        const SimTK::Vec3 v_GO_M = V_GO[1] + V_GO[0] % (k.p_GM - X_GO.p());
+        k.r.updSubVec<3>(0) = ~k.R_GA * (V_GO[0] - V_GH[0]);
+        k.r.updSubVec<3>(3) = ~k.R_GA * (v_GO_M - v_GH_M);
+        return k;
+    }
+    BushingResponse calcResponse(const SimTK::State& s, const BushingKinematics& k) const {
+        const SimTK::Vec6 limits = findEffectiveLimits(getSettings(s));
+        BushingResponse response;
+        for (int i = 0; i < 6; ++i) {
+            response.slip[i] =
+                calcSlipFraction(stiffness_[i], limits[i], onsetWidth_, k.e[i], k.r[i]);
+            const double edot = (1 - response.slip[i]) * k.r[i];
+            response.force[i] = calcAxisForce(stiffness_[i], damping_[i], limits[i], k.e[i], edot);
+        }
+        return response;
+    }
+    SimTK::SpatialVec findWrench(const SimTK::State& s) const {
+        if (!isEnabled(s)) return SimTK::SpatialVec(SimTK::Vec3(0), SimTK::Vec3(0));
+        const BushingKinematics k = findKinematics(s);
+        const SimTK::Vec6 f = calcResponse(s, k).force;
+        return SimTK::SpatialVec(k.R_GA * f.getSubVec<3>(0), k.R_GA * f.getSubVec<3>(3));
+    }
+    bool isSliding(const SimTK::State& s, int axis) const {
+        if (!isEnabled(s)) return false;
+        return calcResponse(s, findKinematics(s)).slip[axis] >= 0.5;
+    }
+    SimTK::Vec6 findGeneralizedForce(const SimTK::State& s) const {
+        if (!isEnabled(s)) return SimTK::Vec6(0);
+        return calcResponse(s, findKinematics(s)).force;
+    }
+
+    // ---- Force::Custom -------------------------------------------------------------------
+    void calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>& bodyForces,
+                   SimTK::Vector_<SimTK::Vec3>&, SimTK::Vector&) const override {
+        if (!isEnabled(s)) return;
+        const BushingKinematics k = findKinematics(s);
+        const SimTK::Vec6 f = calcResponse(s, k).force;
+        const SimTK::Vec3 M_G = k.R_GA * f.getSubVec<3>(0);
+        const SimTK::Vec3 F_G = k.R_GA * f.getSubVec<3>(3);
+        // Both bodies take the force at M's origin, so the pair adds no spurious moment.
+        const SimTK::Vec3 p_OM_G = k.p_GM - bodyO_.getBodyOriginLocation(s);
+        const SimTK::Vec3 p_HM_G = k.p_GM - bodyH_.getBodyOriginLocation(s);
+        bodyForces[bodyO_.getMobilizedBodyIndex()] += SimTK::SpatialVec(M_G + p_OM_G % F_G, F_G);
+        bodyForces[bodyH_.getMobilizedBodyIndex()] -= SimTK::SpatialVec(M_G + p_HM_G % F_G, F_G);
+    }
+
+    // zdot is a Dynamics-stage result (writable while realizing Dynamics), so every integrator
+    // sees the anchor as one more continuous state.
+    void realizeDynamics(const SimTK::State& s) const override {
+        SimTK::Vector& zdot = forces_.updZDot(s);
+        zdot(int(zIndex_), 6) = 0;
+        if (!isEnabled(s)) return;
+        const BushingKinematics k = findKinematics(s);
+        const BushingResponse response = calcResponse(s, k);
+        SimTK::Vec3 w_A0A_A, v_A0A_A;  // the anchor's own motion in F (= in A0), in A
+        for (int i = 0; i < 3; ++i) {
+            w_A0A_A[i] = response.slip[i] * k.r[i];
+            v_A0A_A[i] = response.slip[i + 3] * k.r[i + 3];
+        }
+        const SimTK::Vec3 zRotation = getAnchorSlip(s).getSubVec<3>(0);
+        const SimTK::Vec3 zRotationDot = calcRotationVectorRate(zRotation, w_A0A_A);
+        const SimTK::Vec3 zPositionDot = calcRotationFromVector(zRotation) * v_A0A_A;
+        for (int i = 0; i < 3; ++i) {
+            zdot[int(zIndex_) + i] = zRotationDot[i];
+            zdot[int(zIndex_) + 3 + i] = zPositionDot[i];
+        }
+    }
+
+    // Elastic energy (1/2) K e^2 only; slip dissipates and is not recoverable.
+    SimTK::Real calcPotentialEnergy(const SimTK::State& s) const override {
+        if (!isEnabled(s)) return 0;
+        const SimTK::Vec6 e = findDisplacement(s);
+        double energy = 0;
+        for (int k = 0; k < 6; ++k) energy += 0.5 * stiffness_[k] * e[k] * e[k];
+        return energy;
+    }
+
+private:
+    const SimTK::GeneralForceSubsystem& forces_;
+    SimTK::MobilizedBody bodyH_;
+    SimTK::Transform X_HF_;
+    SimTK::MobilizedBody bodyO_;
+    SimTK::Transform X_OM_;
+    SimTK::Vec6 stiffness_;
+    SimTK::Vec6 damping_;
+    double onsetWidth_ = 0.01;
+    mutable SimTK::DiscreteVariableIndex enabledIndex_;
+    mutable SimTK::DiscreteVariableIndex settingsIndex_;
+    mutable SimTK::DiscreteVariableIndex baseIndex_;
+    mutable SimTK::ZIndex zIndex_;
+};
+
+namespace {
+
+const LimitedBushingImpl& asBushingImpl(const SimTK::Force::Custom::Implementation& impl) {
+    return static_cast<const LimitedBushingImpl&>(impl);
+}
+
+LimitedBushingImpl* makeBushingImpl(SimTK::GeneralForceSubsystem& forces,
+                                    const SimTK::MobilizedBody& H, const SimTK::Transform& X_HF,
+                                    const SimTK::MobilizedBody& O, const SimTK::Transform& X_OM,
+                                    const SimTK::Vec6& stiffness, const SimTK::Vec6& damping) {
+    checkAxisValues(stiffness, "stiffness", false, false);
+    checkAxisValues(damping, "damping", true, false);
+    if (H.getMobilizedBodyIndex() == O.getMobilizedBodyIndex()) {
+        throw InputError("limited bushing: body H and body O are the same body (index " +
+                         std::to_string(int(H.getMobilizedBodyIndex())) + ")");
+    }
+    return new LimitedBushingImpl(forces, H, X_HF, O, X_OM, stiffness, damping);
+}
+
+}  // namespace
+
+LimitedBushing::LimitedBushing(SimTK::GeneralForceSubsystem& forces,
+                               const SimTK::MobilizedBody& bodyH, const SimTK::Transform& X_HF,
+                               const SimTK::MobilizedBody& bodyO, const SimTK::Transform& X_OM,
+                               const SimTK::Vec6& stiffness, const SimTK::Vec6& damping)
+    : SimTK::Force::Custom(
+          forces, makeBushingImpl(forces, bodyH, X_HF, bodyO, X_OM, stiffness, damping)) {}
+
+const SimTK::Vec6& LimitedBushing::getStiffness() const {
+    return asBushingImpl(getImplementation()).getStiffness();
+}
+const SimTK::Vec6& LimitedBushing::getDamping() const {
+    return asBushingImpl(getImplementation()).getDamping();
+}
+double LimitedBushing::getSlipOnsetWidth() const {
+    return asBushingImpl(getImplementation()).getSlipOnsetWidth();
+}
+void LimitedBushing::setSlipOnsetWidth(double width) {
+    if (!(width > 0 && width <= 1)) {
+        throw InputError("limited bushing slip onset width is " + std::to_string(width) +
+                         "; accepted: (0, 1]");
+    }
+    static_cast<LimitedBushingImpl&>(updImplementation()).setSlipOnsetWidth(width);
+}
+
+bool LimitedBushing::isEnabled(const SimTK::State& state) const {
+    return asBushingImpl(getImplementation()).isEnabled(state);
+}
+void LimitedBushing::setEnabled(SimTK::State& state, bool enabled) const {
+    asBushingImpl(getImplementation()).setEnabled(state, enabled);
+}
+
+const SimTK::Vec6& LimitedBushing::getLimits(const SimTK::State& state) const {
+    return asBushingImpl(getImplementation()).getSettings(state).limits;
+}
+void LimitedBushing::setLimits(SimTK::State& state, const SimTK::Vec6& limits) const {
+    checkAxisValues(limits, "limit", true, true);
+    const LimitedBushingImpl& bushingImpl = asBushingImpl(getImplementation());
+    AxisSettings settings = bushingImpl.getSettings(state);
+    settings.limits = limits;
+    bushingImpl.setSettings(state, settings);
+}
+bool LimitedBushing::isAxisLocked(const SimTK::State& state, BushingAxis axis) const {
+    return asBushingImpl(getImplementation()).getSettings(state).locked[toIndex(axis)];
+}
+void LimitedBushing::setAxisLocked(SimTK::State& state, BushingAxis axis, bool locked) const {
+    const LimitedBushingImpl& bushingImpl = asBushingImpl(getImplementation());
+    AxisSettings settings = bushingImpl.getSettings(state);
+    settings.locked[toIndex(axis)] = locked;
+    bushingImpl.setSettings(state, settings);
+}
+SimTK::Vec6 LimitedBushing::findEffectiveLimits(const SimTK::State& state) const {
+    const LimitedBushingImpl& bushingImpl = asBushingImpl(getImplementation());
+    return LimitedBushingImpl::findEffectiveLimits(bushingImpl.getSettings(state));
+}
+
+void LimitedBushing::resetAnchor(SimTK::State& state) const {
+    asBushingImpl(getImplementation()).resetAnchor(state);
+}
+void LimitedBushing::setAnchorDisplacement(SimTK::State& state, const SimTK::Vec6& e) const {
+    asBushingImpl(getImplementation()).setAnchorDisplacement(state, e);
+}
+SimTK::Transform LimitedBushing::findAnchorTransform(const SimTK::State& state) const {
+    return asBushingImpl(getImplementation()).findAnchorTransform(state);
+}
+SimTK::Vec6 LimitedBushing::findDisplacement(const SimTK::State& state) const {
+    return asBushingImpl(getImplementation()).findDisplacement(state);
+}
+SimTK::Vec6 LimitedBushing::findGeneralizedForce(const SimTK::State& state) const {
+    return asBushingImpl(getImplementation()).findGeneralizedForce(state);
+}
+SimTK::SpatialVec LimitedBushing::findWrench(const SimTK::State& state) const {
+    return asBushingImpl(getImplementation()).findWrench(state);
+}
+bool LimitedBushing::isSliding(const SimTK::State& state, BushingAxis axis) const {
+    return asBushingImpl(getImplementation()).isSliding(state, toIndex(axis));
+}
+
+}  // namespace graspsim::grasp

@@ -1,0 +1,46 @@
+#include "graspsim/grasp/limited_bushing_law.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace graspsim::grasp {
+
+double calcSlipFraction(double stiffness, double limit, double onsetWidth, double e, double r) {
+    // Only loading slips: unloading (e r < 0) and rest (r = 0) stick, which keeps a held object
+    // from creeping and makes reversal elastic, as in elasto-plastic (and Dahl) friction.
+    if (!(e * r > 0) || std::isinf(limit)) return 0;
+    const double u = limit > 0 ? stiffness * std::abs(e) / limit : SimTK::Infinity;
+    const double t = std::clamp((u - (1 - onsetWidth)) / onsetWidth, 0.0, 1.0);
+    // C1 smoothstep: zdot stays continuous in the state, so error-controlled integrators see
+    // no discontinuity at slip onset (the hard switch is the limit onsetWidth -> 0).
+    return t * t * (3 - 2 * t);
+}
+
+double calcAxisForce(double stiffness, double damping, double limit, double e, double edot) {
+    // The clamp bounds the damping transient too: the element never transmits more than the
+    // friction limit, whatever the elastic state.
+    return std::clamp(-stiffness * e - damping * edot, -limit, limit);
+}
+
+SimTK::Vec3 calcRotationVector(const SimTK::Rotation& R) {
+    const SimTK::Vec4 angleAxis = R.convertRotationToAngleAxis();
+    return angleAxis[0] * SimTK::Vec3(angleAxis[1], angleAxis[2], angleAxis[3]);
+}
+
+SimTK::Rotation calcRotationFromVector(const SimTK::Vec3& theta) {
+    const double angle = theta.norm();
+    if (angle == 0) return SimTK::Rotation();
+    return SimTK::Rotation(angle, SimTK::UnitVec3(theta / angle, true));
+}
+
+SimTK::Vec3 calcRotationVectorRate(const SimTK::Vec3& theta, const SimTK::Vec3& w_PB_B) {
+    const double phi = theta.norm();
+    // (1 - (phi/2) cot(phi/2)) / phi^2 loses all digits as phi -> 0; its series is exact to
+    // double precision below 1e-3 rad.
+    const double c = phi < 1e-3 ? 1.0 / 12 + phi * phi / 720
+                                : (1 - 0.5 * phi / std::tan(0.5 * phi)) / (phi * phi);
+    const SimTK::Vec3 thetaCrossW = theta % w_PB_B;
+    return w_PB_B + 0.5 * thetaCrossW + c * (theta % thetaCrossW);
+}
+
+}  // namespace graspsim::grasp

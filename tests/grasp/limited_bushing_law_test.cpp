@@ -1,0 +1,84 @@
+// The per-axis law and rotation-vector chart of LimitedBushing against closed forms.
+#include "graspsim/grasp/limited_bushing_law.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace graspsim::grasp {
+namespace {
+
+constexpr double kStiffness = 1000;  // N/m
+constexpr double kLimit = 2;         // N; elastic range L/K = 2 mm
+constexpr double kWidth = 0.01;
+
+TEST(LimitedBushingLaw, SticksBelowTheOnsetBand) {
+    EXPECT_EQ(calcSlipFraction(kStiffness, kLimit, kWidth, 0.98 * kLimit / kStiffness, 1.0), 0);
+    EXPECT_EQ(calcSlipFraction(kStiffness, kLimit, kWidth, -1.5e-3, -3.0), 0);
+}
+
+TEST(LimitedBushingLaw, SlidesFullyAtTheLimitWhileLoading) {
+    EXPECT_EQ(calcSlipFraction(kStiffness, kLimit, kWidth, kLimit / kStiffness, 0.1), 1);
+    EXPECT_EQ(calcSlipFraction(kStiffness, kLimit, kWidth, -1.2 * kLimit / kStiffness, -0.1), 1);
+}
+
+TEST(LimitedBushingLaw, SmoothstepInsideTheBand) {
+    const double eMid = (1 - kWidth / 2) * kLimit / kStiffness;
+    EXPECT_NEAR(calcSlipFraction(kStiffness, kLimit, kWidth, eMid, 0.1), 0.5, 1e-9);
+    const double eQuarter = (1 - 0.75 * kWidth) * kLimit / kStiffness;  // t = 1/4
+    EXPECT_NEAR(calcSlipFraction(kStiffness, kLimit, kWidth, eQuarter, 0.1),
+                3.0 / 16 - 2.0 / 64, 1e-9);
+}
+
+TEST(LimitedBushingLaw, UnloadingAndRestStick) {
+    const double e = 1.5 * kLimit / kStiffness;
+    EXPECT_EQ(calcSlipFraction(kStiffness, kLimit, kWidth, e, -0.1), 0);
+    EXPECT_EQ(calcSlipFraction(kStiffness, kLimit, kWidth, e, 0.0), 0);
+}
+
+TEST(LimitedBushingLaw, LockedAndZeroLimits) {
+    EXPECT_EQ(calcSlipFraction(kStiffness, SimTK::Infinity, kWidth, 1.0, 1.0), 0);
+    EXPECT_EQ(calcSlipFraction(kStiffness, 0, kWidth, 1e-9, 1.0), 1);
+    EXPECT_EQ(calcSlipFraction(kStiffness, 0, kWidth, 0, 1.0), 0);
+}
+
+TEST(LimitedBushingLaw, ForceIsSpringDamperClampedAtTheLimit) {
+    EXPECT_DOUBLE_EQ(calcAxisForce(kStiffness, 10, kLimit, 1e-3, 0.05), -1.0 - 0.5);
+    EXPECT_DOUBLE_EQ(calcAxisForce(kStiffness, 10, kLimit, 5e-3, 0), -kLimit);
+    EXPECT_DOUBLE_EQ(calcAxisForce(kStiffness, 10, kLimit, -1e-3, -1), kLimit);
+    EXPECT_DOUBLE_EQ(calcAxisForce(kStiffness, 10, SimTK::Infinity, 1.0, 0), -kStiffness);
+    EXPECT_DOUBLE_EQ(calcAxisForce(kStiffness, 10, 0, 1.0, 1.0), 0);
+}
+
+TEST(LimitedBushingLaw, RotationVectorRoundTrip) {
+    for (const SimTK::Vec3& theta :
+         {SimTK::Vec3(0.3, -0.2, 0.9), SimTK::Vec3(1e-7, 0, -2e-7), SimTK::Vec3(0, 3.0, 0)}) {
+        const SimTK::Vec3 back = calcRotationVector(calcRotationFromVector(theta));
+        EXPECT_LT((back - theta).norm(), 1e-12) << theta;
+    }
+    EXPECT_EQ(calcRotationVector(SimTK::Rotation()).norm(), 0);
+    // Angle about a coordinate axis: exp([theta]x) is Simbody's axis rotation.
+    const SimTK::Rotation Rz(0.7, SimTK::ZAxis);
+    EXPECT_TRUE(calcRotationFromVector(SimTK::Vec3(0, 0, 0.7)).isSameRotationToWithinAngle(Rz, 1e-14));
+}
+
+// d/dt exp(theta(t)) must equal R * [w]x for the body-frame angular velocity w: step theta by
+// h thetadot and compare with R * exp(h w) (central difference, error O(h^2)).
+TEST(LimitedBushingLaw, RotationVectorRateMatchesBodyAngularVelocity) {
+    const SimTK::Vec3 w(0.4, -1.1, 0.25);
+    for (const SimTK::Vec3& theta : {SimTK::Vec3(0.3, -0.2, 0.9), SimTK::Vec3(2.0, 1.5, -1.0),
+                                     SimTK::Vec3(1e-5, 0, 0), SimTK::Vec3(0)}) {
+        const double h = 1e-5;
+        const SimTK::Vec3 thetaDot = calcRotationVectorRate(theta, w);
+        const SimTK::Rotation R = calcRotationFromVector(theta);
+        const SimTK::Rotation ahead = calcRotationFromVector(theta + h * thetaDot);
+        const SimTK::Rotation behind = calcRotationFromVector(theta - h * thetaDot);
+        const SimTK::Rotation expectedAhead = R * calcRotationFromVector(h * w);
+        const SimTK::Rotation expectedBehind = R * calcRotationFromVector(-h * w);
+        EXPECT_TRUE(ahead.isSameRotationToWithinAngle(expectedAhead, 1e-9)) << theta;
+        EXPECT_TRUE(behind.isSameRotationToWithinAngle(expectedBehind, 1e-9)) << theta;
+    }
+}
+
+}  // namespace
+}  // namespace graspsim::grasp

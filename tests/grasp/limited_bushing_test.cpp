@@ -1,0 +1,294 @@
+// LimitedBushing in a reduced scene with closed-form oracles: a box O on a Free mobilizer,
+// bushed to Ground (H = Ground), gravity off, a constant force or torque on it. Below the limit
+// the element holds it (static deflection F/K); above, O slides with (|F| - L) / m or
+// (|T| - L) / I. Each dynamic case runs with an explicit (Runge-Kutta-Merson) and an implicit
+// (CPodes BDF) integrator.
+#include "graspsim/grasp/limited_bushing.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <string>
+
+#include "graspsim/error.h"
+
+namespace graspsim::grasp {
+namespace {
+
+using SimTK::Vec3;
+using SimTK::Vec6;
+
+constexpr double kMass = 0.5;                     // kg
+constexpr double kInertia = 0.01;                 // kg m^2, about every axis through the centre
+constexpr double kLinearStiffness = 1e4;          // N/m
+constexpr double kAngularStiffness = 100;         // N m/rad
+constexpr double kLinearLimit = 2;                // N
+constexpr double kAngularLimit = 0.1;             // N m
+// Critical damping 2 sqrt(K m): the step load never overshoots its static deflection.
+const double kLinearDamping = 2 * std::sqrt(kLinearStiffness * kMass);
+const double kAngularDamping = 2 * std::sqrt(kAngularStiffness * kInertia);
+
+enum class IntegratorKind { RungeKuttaMerson, CPodes };
+
+// The scene: O's centre at the Ground origin, M = O's frame, F = Ground's frame.
+struct BushedBox {
+    SimTK::MultibodySystem system;
+    SimTK::SimbodyMatterSubsystem matter{system};
+    SimTK::GeneralForceSubsystem forces{system};
+    SimTK::MobilizedBody::Free box;
+    LimitedBushing bushing;
+
+    BushedBox() {
+        const SimTK::Body::Rigid body(SimTK::MassProperties(
+            kMass, Vec3(0), SimTK::UnitInertia(kInertia / kMass)));
+        box = SimTK::MobilizedBody::Free(matter.Ground(), body);
+        const Vec6 stiffness(kAngularStiffness, kAngularStiffness, kAngularStiffness,
+                             kLinearStiffness, kLinearStiffness, kLinearStiffness);
+        const Vec6 damping(kAngularDamping, kAngularDamping, kAngularDamping, kLinearDamping,
+                           kLinearDamping, kLinearDamping);
+        bushing = LimitedBushing(forces, matter.Ground(), SimTK::Transform(), box,
+                                 SimTK::Transform(), stiffness, damping);
+    }
+    void addForce(const Vec3& F_G) { SimTK::Force::ConstantForce(forces, box, Vec3(0), F_G); }
+    void addTorque(const Vec3& T_G) { SimTK::Force::ConstantTorque(forces, box, T_G); }
+
+    // Initial state: O at rest at the origin, anchor there, `axis` relaxed to `limit`.
+    SimTK::State makeState(BushingAxis axis, double limit) {
+        SimTK::State state = system.realizeTopology();
+        system.realize(state, SimTK::Stage::Position);
+        bushing.resetAnchor(state);
+        Vec6 limits(SimTK::Infinity);
+        limits[toIndex(axis)] = limit;
+        bushing.setLimits(state, limits);
+        bushing.setAxisLocked(state, axis, false);
+        return state;
+    }
+};
+
+std::unique_ptr<SimTK::Integrator> makeIntegrator(IntegratorKind kind,
+                                                  const SimTK::MultibodySystem& system) {
+    std::unique_ptr<SimTK::Integrator> integrator;
+    if (kind == IntegratorKind::CPodes) {
+        integrator = std::make_unique<SimTK::CPodesIntegrator>(system);
+    } else {
+        integrator = std::make_unique<SimTK::RungeKuttaMersonIntegrator>(system);
+    }
+    integrator->setAccuracy(1e-6);
+    return integrator;
+}
+
+// O's spatial velocity (angular, linear) in Ground at time t.
+SimTK::SpatialVec velocityAt(SimTK::Integrator& integrator, const SimTK::MobilizedBody& box,
+                             double t) {
+    integrator.stepTo(t);
+    const SimTK::State& state = integrator.getState();
+    return box.getBodyVelocity(state);
+}
+
+// Angle (rad) of a rotation about Ground's z axis.
+double calcAngleAboutZ(const SimTK::Rotation& R_GB) { return std::atan2(R_GB.asMat33()(1, 0), R_GB.asMat33()(0, 0)); }
+
+class LimitedBushingDynamics : public testing::TestWithParam<IntegratorKind> {};
+
+TEST_P(LimitedBushingDynamics, HoldsAForceBelowTheLimit) {
+    BushedBox scene;
+    const double force = 0.75 * kLinearLimit;
+    scene.addForce(Vec3(force, 0, 0));
+    auto integrator = makeIntegrator(GetParam(), scene.system);
+    integrator->initialize(scene.makeState(BushingAxis::TranslationX, kLinearLimit));
+    integrator->stepTo(0.2);  // 28 time constants sqrt(m/K) = 7 ms
+    const SimTK::State& state = integrator->getState();
+    const Vec3 p = scene.box.getBodyOriginLocation(state);
+    EXPECT_NEAR(p[0], force / kLinearStiffness, 1e-3 * force / kLinearStiffness);
+    EXPECT_LT((p - Vec3(p[0], 0, 0)).norm(), 1e-12);
+    EXPECT_LT(scene.box.getBodyVelocity(state).norm(), 1e-6);
+    EXPECT_FALSE(scene.bushing.isSliding(state, BushingAxis::TranslationX));
+    EXPECT_NEAR(scene.bushing.findWrench(state)[1][0], -force, 1e-3 * force);
+}
+
+TEST_P(LimitedBushingDynamics, SlidesWithTheExcessForceAboveTheLimit) {
+    BushedBox scene;
+    const double force = 2.5 * kLinearLimit;
+    scene.addForce(Vec3(force, 0, 0));
+    auto integrator = makeIntegrator(GetParam(), scene.system);
+    integrator->initialize(scene.makeState(BushingAxis::TranslationX, kLinearLimit));
+    const double t1 = 0.1, t2 = 0.3;
+    const double v1 = velocityAt(*integrator, scene.box, t1)[1][0];
+    const double v2 = velocityAt(*integrator, scene.box, t2)[1][0];
+    const double expected = (force - kLinearLimit) / kMass;
+    EXPECT_NEAR((v2 - v1) / (t2 - t1), expected, 0.02 * expected);
+    const SimTK::State& state = integrator->getState();
+    EXPECT_TRUE(scene.bushing.isSliding(state, BushingAxis::TranslationX));
+    EXPECT_NEAR(scene.bushing.findWrench(state)[1][0], -kLinearLimit, 0.02 * kLinearLimit);
+    // The anchor followed O: its elastic displacement stays at the limit's deflection L/K.
+    EXPECT_NEAR(scene.bushing.findDisplacement(state)[toIndex(BushingAxis::TranslationX)],
+                kLinearLimit / kLinearStiffness, 0.02 * kLinearLimit / kLinearStiffness);
+}
+
+TEST_P(LimitedBushingDynamics, HoldsATorqueBelowTheLimit) {
+    BushedBox scene;
+    const double torque = 0.5 * kAngularLimit;
+    scene.addTorque(Vec3(0, 0, torque));
+    auto integrator = makeIntegrator(GetParam(), scene.system);
+    integrator->initialize(scene.makeState(BushingAxis::RotationZ, kAngularLimit));
+    integrator->stepTo(0.2);  // 20 time constants sqrt(I/K) = 10 ms
+    const SimTK::State& state = integrator->getState();
+    const double angle = calcAngleAboutZ(scene.box.getBodyRotation(state));
+    EXPECT_NEAR(angle, torque / kAngularStiffness, 1e-3 * torque / kAngularStiffness);
+    EXPECT_LT(scene.box.getBodyVelocity(state).norm(), 1e-6);
+    EXPECT_FALSE(scene.bushing.isSliding(state, BushingAxis::RotationZ));
+}
+
+TEST_P(LimitedBushingDynamics, SpinsWithTheExcessTorqueAboveTheLimit) {
+    BushedBox scene;
+    const double torque = 3 * kAngularLimit;
+    scene.addTorque(Vec3(0, 0, torque));
+    auto integrator = makeIntegrator(GetParam(), scene.system);
+    integrator->initialize(scene.makeState(BushingAxis::RotationZ, kAngularLimit));
+    // Spins about 2.5 rad by t2, well past small angles: exercises the anchor's rotation chart.
+    const double t1 = 0.2, t2 = 0.5;
+    const double w1 = velocityAt(*integrator, scene.box, t1)[0][2];
+    const double w2 = velocityAt(*integrator, scene.box, t2)[0][2];
+    const double expected = (torque - kAngularLimit) / kInertia;
+    EXPECT_NEAR((w2 - w1) / (t2 - t1), expected, 0.02 * expected);
+    const SimTK::State& state = integrator->getState();
+    EXPECT_TRUE(scene.bushing.isSliding(state, BushingAxis::RotationZ));
+    const SimTK::SpatialVec wrench = scene.bushing.findWrench(state);
+    EXPECT_NEAR(wrench[0][2], -kAngularLimit, 0.02 * kAngularLimit);
+    EXPECT_LT(wrench[1].norm(), 1e-6);  // locked translation stays unloaded
+}
+
+INSTANTIATE_TEST_SUITE_P(Integrators, LimitedBushingDynamics,
+                         testing::Values(IntegratorKind::RungeKuttaMerson, IntegratorKind::CPodes),
+                         [](const testing::TestParamInfo<IntegratorKind>& paramInfo) {
+                             return std::string(paramInfo.param == IntegratorKind::CPodes
+                                                    ? "CPodes"
+                                                    : "RungeKuttaMerson");
+                         });
+
+// ---- statics and state handling ------------------------------------------------------------
+
+// O displaced and turned, then the anchor reset there: no spring force (no jump on engagement);
+// with O moving, only the damping force D r remains.
+TEST(LimitedBushing, ResetAnchorLeavesNoSpringForce) {
+    BushedBox scene;
+    SimTK::State state = scene.makeState(BushingAxis::TranslationX, kLinearLimit);
+    scene.box.setQToFitTransform(
+        state, SimTK::Transform(SimTK::Rotation(0.8, SimTK::UnitVec3(1, 2, 3)), Vec3(0.1, -0.2, 0.3)));
+    scene.system.realize(state, SimTK::Stage::Velocity);
+    EXPECT_GT(scene.bushing.findWrench(state).norm(), 1.0);  // stretched before the reset
+    scene.bushing.resetAnchor(state);
+    scene.system.realize(state, SimTK::Stage::Velocity);
+    EXPECT_LT(scene.bushing.findDisplacement(state).norm(), 1e-12);
+    EXPECT_LT(scene.bushing.findWrench(state).norm(), 1e-9);
+
+    const double speed = 1e-4;  // m/s along y: damping force D v, below the (locked) limit
+    scene.box.setUToFitLinearVelocity(state, Vec3(0, speed, 0));
+    scene.system.realize(state, SimTK::Stage::Velocity);
+    EXPECT_NEAR(scene.bushing.findWrench(state)[1][1], -kLinearDamping * speed, 1e-9);
+}
+
+TEST(LimitedBushing, SetAnchorDisplacementIsReadBack) {
+    BushedBox scene;
+    SimTK::State state = scene.makeState(BushingAxis::TranslationX, kLinearLimit);
+    const Vec6 e(1e-3, -2e-3, 5e-4, 1e-5, -3e-5, 2e-5);
+    scene.bushing.setAnchorDisplacement(state, e);
+    scene.system.realize(state, SimTK::Stage::Velocity);
+    EXPECT_LT((scene.bushing.findDisplacement(state) - e).norm(), 1e-12);
+    // Locked axes carry -K e; relaxed x translation (K e = 0.1 N < L) too.
+    const Vec6 f = scene.bushing.findGeneralizedForce(state);
+    EXPECT_NEAR(f[toIndex(BushingAxis::RotationY)], -kAngularStiffness * e[1], 1e-9);
+    EXPECT_NEAR(f[toIndex(BushingAxis::TranslationX)], -kLinearStiffness * e[3], 1e-9);
+}
+
+TEST(LimitedBushing, DisabledElementAppliesNothing) {
+    BushedBox scene;
+    const double force = 1.0;
+    scene.addForce(Vec3(force, 0, 0));
+    SimTK::State state = scene.makeState(BushingAxis::TranslationX, kLinearLimit);
+    scene.bushing.setAnchorDisplacement(state, Vec6(0, 0, 0, 1e-4, 0, 0));
+    scene.bushing.setEnabled(state, false);
+    scene.box.setUToFitLinearVelocity(state, Vec3(0.5, 0, 0));
+    scene.system.realize(state, SimTK::Stage::Acceleration);
+    EXPECT_FALSE(scene.bushing.isEnabled(state));
+    EXPECT_EQ(scene.bushing.findWrench(state).norm(), 0);
+    EXPECT_NEAR(scene.box.getBodyAcceleration(state)[1][0], force / kMass, 1e-12);
+    EXPECT_EQ(state.getZDot().norm(), 0);  // the anchor is frozen
+    EXPECT_FALSE(scene.bushing.isSliding(state, BushingAxis::TranslationX));
+}
+
+// A lowered limit turns the excess elastic strain into slip at once (elasto-plastic).
+TEST(LimitedBushing, LoweringALimitMovesTheAnchorToTheLimit) {
+    BushedBox scene;
+    SimTK::State state = scene.makeState(BushingAxis::TranslationX, SimTK::Infinity);
+    scene.bushing.setAnchorDisplacement(state, Vec6(0, 0, 0, -5e-4, 0, 0));  // 5 N
+    scene.system.realize(state, SimTK::Stage::Position);
+    scene.bushing.setLimits(state, Vec6(SimTK::Infinity, SimTK::Infinity, SimTK::Infinity,
+                                        kLinearLimit, SimTK::Infinity, SimTK::Infinity));
+    scene.system.realize(state, SimTK::Stage::Velocity);
+    EXPECT_NEAR(scene.bushing.findDisplacement(state)[3], -kLinearLimit / kLinearStiffness, 1e-12);
+    EXPECT_NEAR(scene.bushing.findWrench(state)[1][0], kLinearLimit, 1e-9);
+    // Locking the axis again leaves the anchor (limits only ever shrink the displacement).
+    scene.bushing.setAxisLocked(state, BushingAxis::TranslationX, true);
+    EXPECT_EQ(scene.bushing.findEffectiveLimits(state)[3], SimTK::Infinity);
+}
+
+TEST(LimitedBushing, RejectsBadParametersNamingTheAxis) {
+    BushedBox scene;
+    Vec6 stiffness(1), damping(0);
+    stiffness[4] = -3;
+    try {
+        LimitedBushing(scene.forces, scene.matter.Ground(), SimTK::Transform(), scene.box,
+                       SimTK::Transform(), stiffness, damping);
+        FAIL() << "negative stiffness accepted";
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find("stiffness on translation y is -3"),
+                  std::string::npos)
+            << error.what();
+    }
+    SimTK::State state = scene.makeState(BushingAxis::TranslationX, kLinearLimit);
+    EXPECT_THROW(scene.bushing.setLimits(state, Vec6(1, 1, SimTK::NaN, 1, 1, 1)), InputError);
+    EXPECT_THROW(scene.bushing.setSlipOnsetWidth(0), InputError);
+}
+
+// ---- the grasp switch's usage: limits set from an event handler ---------------------------
+
+// At its time, engages the friction limit on x as a grasp event handler would.
+class LimitSwitch : public SimTK::ScheduledEventHandler {
+public:
+    LimitSwitch(const LimitedBushing& bushing, double time) : bushing_(bushing), time_(time) {}
+    SimTK::Real getNextEventTime(const SimTK::State&, bool) const override { return time_; }
+    void handleEvent(SimTK::State& state, SimTK::Real, bool&) const override {
+        bushing_.setLimits(state, Vec6(SimTK::Infinity, SimTK::Infinity, SimTK::Infinity,
+                                       kLinearLimit, SimTK::Infinity, SimTK::Infinity));
+    }
+
+private:
+    LimitedBushing bushing_;
+    double time_;
+};
+
+TEST_P(LimitedBushingDynamics, LimitSetByAnEventHandlerStartsTheSlide) {
+    BushedBox scene;
+    const double force = 2.5 * kLinearLimit, switchTime = 0.05;
+    scene.addForce(Vec3(force, 0, 0));
+    scene.system.addEventHandler(new LimitSwitch(scene.bushing, switchTime));
+    SimTK::State state = scene.makeState(BushingAxis::TranslationX, SimTK::Infinity);
+    auto integrator = makeIntegrator(GetParam(), scene.system);
+    SimTK::TimeStepper stepper(scene.system, *integrator);
+    stepper.initialize(state);
+    stepper.stepTo(switchTime - 1e-3);
+    EXPECT_NEAR(scene.box.getBodyOriginLocation(stepper.getState())[0], force / kLinearStiffness,
+                1e-3 * force / kLinearStiffness);  // held by the locked axis
+    const double t1 = 0.15, t2 = 0.35;
+    stepper.stepTo(t1);
+    const double v1 = scene.box.getBodyVelocity(stepper.getState())[1][0];
+    stepper.stepTo(t2);
+    const double v2 = scene.box.getBodyVelocity(stepper.getState())[1][0];
+    const double expected = (force - kLinearLimit) / kMass;
+    EXPECT_NEAR((v2 - v1) / (t2 - t1), expected, 0.02 * expected);
+}
+
+}  // namespace
+}  // namespace graspsim::grasp
