@@ -33,6 +33,21 @@ double ObjectSpec::calcSurfaceDistance(const Vec3& p_OP) const {
     return inside > 0 ? std::sqrt(outside) : inside;
 }
 
+Vec3 ObjectSpec::findOutwardNormal(const Vec3& p_OP) const {
+    if (shape == ObjectShape::Sphere) {
+        const double r = std::hypot(p_OP[0], p_OP[1], p_OP[2]);
+        return {p_OP[0] / r, p_OP[1] / r, p_OP[2] / r};
+    }
+    // The face whose plane is nearest, the same choice calcSurfaceDistance makes inside the box.
+    int face = 0;
+    for (int i = 1; i < 3; ++i) {
+        if (std::abs(p_OP[i]) - size[i] / 2 > std::abs(p_OP[face]) - size[face] / 2) face = i;
+    }
+    Vec3 n{0, 0, 0};
+    n[face] = p_OP[face] >= 0 ? 1 : -1;
+    return n;
+}
+
 model::ModelDescription buildObjectModel(const ObjectSpec& object) {
     if (object.shape == ObjectShape::Sphere) return model::buildBallModel(object.mass, object.radius);
     return model::buildPhoneModel(object.mass, object.size);

@@ -40,20 +40,6 @@ contact::ContactMaterial makeSurfaceMaterial(const scenario::ContactSpec& c) {
     return m;
 }
 
-// Outward unit normal of the object's surface at a point on (or near) it, in O.
-SimTK::Vec3 findSurfaceNormal(const scenario::ObjectSpec& object, const SimTK::Vec3& p_OP) {
-    if (object.shape == scenario::ObjectShape::Sphere) return p_OP / p_OP.norm();
-    int face = 0;
-    double best = -1;
-    for (int k = 0; k < 3; ++k) {
-        const double ratio = std::abs(p_OP[k]) / (object.size[k] / 2);
-        if (ratio > best) best = ratio, face = k;
-    }
-    SimTK::Vec3 n(0);
-    n[face] = p_OP[face] >= 0 ? 1 : -1;
-    return n;
-}
-
 // The movable joints from the palm out to an end-effector's body (the digit's own joints).
 std::vector<std::string> findFingerJoints(const model::ModelDescription& d, const std::string& endEffector) {
     std::vector<std::string> joints;
@@ -170,7 +156,8 @@ SimTK::State GraspScene::makeInitialState() {
     std::vector<control::FingertipGoal> goals;
     for (std::size_t k = 0; k < goalEndEffectors_.size(); ++k) {
         const SimTK::Vec3& onSurface = surfaceGoals_[k];
-        const SimTK::Vec3 p_OG = onSurface - scenario_.controller.pressDepth * findSurfaceNormal(scenario_.object, onSurface);
+        const model::Vec3 n_O = scenario_.object.findOutwardNormal({onSurface[0], onSurface[1], onSurface[2]});
+        const SimTK::Vec3 p_OG = onSurface - scenario_.controller.pressDepth * toVec3(n_O);
         goals.push_back({goalEndEffectors_[k], X_PG * (X_GO * p_OG)});
     }
     controller_->setGoals(goals);

@@ -66,6 +66,24 @@ TEST(ObjectSpec, BoxSurfaceDistanceOutsideIsEuclideanInsideIsNearestFace) {
     EXPECT_NEAR(phone.calcSurfaceDistance({0.0, 0.0, 0.001}), -0.003, 1e-15);  // inside, 3 mm under +z
 }
 
+// Oracle: the sphere's normal is radial; a box point nearest a face gets that face's normal.
+TEST(ObjectSpec, OutwardNormalIsRadialOrTheNearestFaces) {
+    ObjectSpec sphere;
+    sphere.shape = ObjectShape::Sphere;
+    sphere.radius = 0.05;
+    const Vec3 n = sphere.findOutwardNormal({0.03, 0.0, -0.04});
+    EXPECT_NEAR(n[0], 0.6, 1e-15);
+    EXPECT_NEAR(n[2], -0.8, 1e-15);
+    ObjectSpec box;
+    box.shape = ObjectShape::Box;
+    box.size = {0.07, 0.14, 0.008};
+    const Vec3 face = box.findOutwardNormal({0.01, 0.02, -0.004});  // on the -z face
+    EXPECT_EQ(face[2], -1.0);
+    EXPECT_EQ(face[0], 0.0);
+    const Vec3 side = box.findOutwardNormal({0.035, 0.0, 0.001});  // on the +x face
+    EXPECT_EQ(side[0], 1.0);
+}
+
 TEST(ObjectSpec, ModelIsTheObjectBuilderWithTheSpecsMassAndSize) {
     const model::ModelDescription ball = buildObjectModel(makeSphere(0.05));
     ASSERT_EQ(ball.bodies.size(), 1u);

@@ -53,6 +53,10 @@ struct ObjectSpec {
     /// Signed distance (m) from the point p_OP (object frame, m) to the object's surface:
     /// positive outside, negative inside, zero on the surface.
     double calcSurfaceDistance(const Vec3& p_OP) const;
+
+    /// Outward unit normal of the surface nearest to point P (given in O), in O: the radial
+    /// direction for a sphere, the normal of the face whose plane is nearest for a box.
+    Vec3 findOutwardNormal(const Vec3& p_OP) const;
 };
 
 /// The object as a one-body model (body "ball" for a sphere, "phone" for a box), built by
