@@ -10,7 +10,15 @@ double calcSlipFraction(double stiffness, double limit, double onsetWidth, doubl
     // from creeping and makes reversal elastic, as in elasto-plastic (and Dahl) friction.
     if (!(e * r > 0) || std::isinf(limit)) return 0;
     const double u = limit > 0 ? stiffness * std::abs(e) / limit : SimTK::Infinity;
-    const double t = std::clamp((u - (1 - onsetWidth)) / onsetWidth, 0.0, 1.0);
+    if (u > 1) {
+        // Past the limit (an integrator's overshoot, or drift of e = relative pose - anchor,
+        // a difference of two large integrated quantities): the anchor outruns the relative
+        // motion a little, pulling |K e| back to L while loading. C1 at u = 1.
+        if (std::isinf(u)) return 1;
+        const double excess = (u - 1) / onsetWidth;
+        return 1 + excess * excess;
+    }
+    const double t = std::max(0.0, (u - (1 - onsetWidth)) / onsetWidth);
     // C1 smoothstep: zdot stays continuous in the state, so error-controlled integrators see
     // no discontinuity at slip onset (the hard switch is the limit onsetWidth -> 0).
     return t * t * (3 - 2 * t);

@@ -66,25 +66,30 @@ struct BushedBox {
     }
 };
 
-std::unique_ptr<SimTK::Integrator> makeIntegrator(IntegratorKind kind,
-                                                  const SimTK::MultibodySystem& system) {
-    std::unique_ptr<SimTK::Integrator> integrator;
-    if (kind == IntegratorKind::CPodes) {
-        integrator = std::make_unique<SimTK::CPodesIntegrator>(system);
-    } else {
-        integrator = std::make_unique<SimTK::RungeKuttaMersonIntegrator>(system);
+// An integrator of the given kind driven by a TimeStepper (which also runs event handlers;
+// a bare Integrator::stepTo() returns early at the start of each continuous interval).
+class BushedRun {
+public:
+    BushedRun(IntegratorKind kind, const SimTK::MultibodySystem& system, const SimTK::State& initial) {
+        if (kind == IntegratorKind::CPodes) {
+            integrator_ = std::make_unique<SimTK::CPodesIntegrator>(system);
+        } else {
+            integrator_ = std::make_unique<SimTK::RungeKuttaMersonIntegrator>(system);
+        }
+        integrator_->setAccuracy(1e-6);
+        stepper_ = std::make_unique<SimTK::TimeStepper>(system, *integrator_);
+        stepper_->initialize(initial);
     }
-    integrator->setAccuracy(1e-6);
-    return integrator;
-}
+    const SimTK::State& stepTo(double t) {
+        stepper_->stepTo(t);
+        EXPECT_DOUBLE_EQ(stepper_->getTime(), t);
+        return stepper_->getState();
+    }
 
-// O's spatial velocity (angular, linear) in Ground at time t.
-SimTK::SpatialVec velocityAt(SimTK::Integrator& integrator, const SimTK::MobilizedBody& box,
-                             double t) {
-    integrator.stepTo(t);
-    const SimTK::State& state = integrator.getState();
-    return box.getBodyVelocity(state);
-}
+private:
+    std::unique_ptr<SimTK::Integrator> integrator_;
+    std::unique_ptr<SimTK::TimeStepper> stepper_;
+};
 
 // Angle (rad) of a rotation about Ground's z axis.
 double calcAngleAboutZ(const SimTK::Rotation& R_GB) { return std::atan2(R_GB.asMat33()(1, 0), R_GB.asMat33()(0, 0)); }
@@ -95,10 +100,8 @@ TEST_P(LimitedBushingDynamics, HoldsAForceBelowTheLimit) {
     BushedBox scene;
     const double force = 0.75 * kLinearLimit;
     scene.addForce(Vec3(force, 0, 0));
-    auto integrator = makeIntegrator(GetParam(), scene.system);
-    integrator->initialize(scene.makeState(BushingAxis::TranslationX, kLinearLimit));
-    integrator->stepTo(0.2);  // 28 time constants sqrt(m/K) = 7 ms
-    const SimTK::State& state = integrator->getState();
+    BushedRun run(GetParam(), scene.system, scene.makeState(BushingAxis::TranslationX, kLinearLimit));
+    const SimTK::State& state = run.stepTo(0.2);  // 28 time constants sqrt(m/K) = 7 ms
     const Vec3 p = scene.box.getBodyOriginLocation(state);
     EXPECT_NEAR(p[0], force / kLinearStiffness, 1e-3 * force / kLinearStiffness);
     EXPECT_LT((p - Vec3(p[0], 0, 0)).norm(), 1e-12);
@@ -111,14 +114,13 @@ TEST_P(LimitedBushingDynamics, SlidesWithTheExcessForceAboveTheLimit) {
     BushedBox scene;
     const double force = 2.5 * kLinearLimit;
     scene.addForce(Vec3(force, 0, 0));
-    auto integrator = makeIntegrator(GetParam(), scene.system);
-    integrator->initialize(scene.makeState(BushingAxis::TranslationX, kLinearLimit));
+    BushedRun run(GetParam(), scene.system, scene.makeState(BushingAxis::TranslationX, kLinearLimit));
     const double t1 = 0.1, t2 = 0.3;
-    const double v1 = velocityAt(*integrator, scene.box, t1)[1][0];
-    const double v2 = velocityAt(*integrator, scene.box, t2)[1][0];
+    const double v1 = scene.box.getBodyVelocity(run.stepTo(t1))[1][0];
+    const SimTK::State& state = run.stepTo(t2);
+    const double v2 = scene.box.getBodyVelocity(state)[1][0];
     const double expected = (force - kLinearLimit) / kMass;
     EXPECT_NEAR((v2 - v1) / (t2 - t1), expected, 0.02 * expected);
-    const SimTK::State& state = integrator->getState();
     EXPECT_TRUE(scene.bushing.isSliding(state, BushingAxis::TranslationX));
     EXPECT_NEAR(scene.bushing.findWrench(state)[1][0], -kLinearLimit, 0.02 * kLinearLimit);
     // The anchor followed O: its elastic displacement stays at the limit's deflection L/K.
@@ -130,10 +132,8 @@ TEST_P(LimitedBushingDynamics, HoldsATorqueBelowTheLimit) {
     BushedBox scene;
     const double torque = 0.5 * kAngularLimit;
     scene.addTorque(Vec3(0, 0, torque));
-    auto integrator = makeIntegrator(GetParam(), scene.system);
-    integrator->initialize(scene.makeState(BushingAxis::RotationZ, kAngularLimit));
-    integrator->stepTo(0.2);  // 20 time constants sqrt(I/K) = 10 ms
-    const SimTK::State& state = integrator->getState();
+    BushedRun run(GetParam(), scene.system, scene.makeState(BushingAxis::RotationZ, kAngularLimit));
+    const SimTK::State& state = run.stepTo(0.2);  // 20 time constants sqrt(I/K) = 10 ms
     const double angle = calcAngleAboutZ(scene.box.getBodyRotation(state));
     EXPECT_NEAR(angle, torque / kAngularStiffness, 1e-3 * torque / kAngularStiffness);
     EXPECT_LT(scene.box.getBodyVelocity(state).norm(), 1e-6);
@@ -144,15 +144,14 @@ TEST_P(LimitedBushingDynamics, SpinsWithTheExcessTorqueAboveTheLimit) {
     BushedBox scene;
     const double torque = 3 * kAngularLimit;
     scene.addTorque(Vec3(0, 0, torque));
-    auto integrator = makeIntegrator(GetParam(), scene.system);
-    integrator->initialize(scene.makeState(BushingAxis::RotationZ, kAngularLimit));
+    BushedRun run(GetParam(), scene.system, scene.makeState(BushingAxis::RotationZ, kAngularLimit));
     // Spins about 2.5 rad by t2, well past small angles: exercises the anchor's rotation chart.
     const double t1 = 0.2, t2 = 0.5;
-    const double w1 = velocityAt(*integrator, scene.box, t1)[0][2];
-    const double w2 = velocityAt(*integrator, scene.box, t2)[0][2];
+    const double w1 = scene.box.getBodyVelocity(run.stepTo(t1))[0][2];
+    const SimTK::State& state = run.stepTo(t2);
+    const double w2 = scene.box.getBodyVelocity(state)[0][2];
     const double expected = (torque - kAngularLimit) / kInertia;
     EXPECT_NEAR((w2 - w1) / (t2 - t1), expected, 0.02 * expected);
-    const SimTK::State& state = integrator->getState();
     EXPECT_TRUE(scene.bushing.isSliding(state, BushingAxis::RotationZ));
     const SimTK::SpatialVec wrench = scene.bushing.findWrench(state);
     EXPECT_NEAR(wrench[0][2], -kAngularLimit, 0.02 * kAngularLimit);
@@ -271,21 +270,16 @@ private:
 
 TEST_P(LimitedBushingDynamics, LimitSetByAnEventHandlerStartsTheSlide) {
     BushedBox scene;
-    const double force = 2.5 * kLinearLimit, switchTime = 0.05;
+    const double force = 2.5 * kLinearLimit, switchTime = 0.15;  // 21 sqrt(m/K)
     scene.addForce(Vec3(force, 0, 0));
     scene.system.addEventHandler(new LimitSwitch(scene.bushing, switchTime));
-    SimTK::State state = scene.makeState(BushingAxis::TranslationX, SimTK::Infinity);
-    auto integrator = makeIntegrator(GetParam(), scene.system);
-    SimTK::TimeStepper stepper(scene.system, *integrator);
-    stepper.initialize(state);
-    stepper.stepTo(switchTime - 1e-3);
-    EXPECT_NEAR(scene.box.getBodyOriginLocation(stepper.getState())[0], force / kLinearStiffness,
-                1e-3 * force / kLinearStiffness);  // held by the locked axis
-    const double t1 = 0.15, t2 = 0.35;
-    stepper.stepTo(t1);
-    const double v1 = scene.box.getBodyVelocity(stepper.getState())[1][0];
-    stepper.stepTo(t2);
-    const double v2 = scene.box.getBodyVelocity(stepper.getState())[1][0];
+    BushedRun run(GetParam(), scene.system,
+            scene.makeState(BushingAxis::TranslationX, SimTK::Infinity));
+    EXPECT_NEAR(scene.box.getBodyOriginLocation(run.stepTo(switchTime - 1e-3))[0],
+                force / kLinearStiffness, 1e-3 * force / kLinearStiffness);  // held while locked
+    const double t1 = 0.25, t2 = 0.45;
+    const double v1 = scene.box.getBodyVelocity(run.stepTo(t1))[1][0];
+    const double v2 = scene.box.getBodyVelocity(run.stepTo(t2))[1][0];
     const double expected = (force - kLinearLimit) / kMass;
     EXPECT_NEAR((v2 - v1) / (t2 - t1), expected, 0.02 * expected);
 }

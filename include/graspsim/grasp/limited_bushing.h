@@ -19,7 +19,8 @@
 /// e_p = p_AM expressed in A (m)), r the velocity of M relative to F expressed in A (angular
 /// rad/s, linear m/s of M's origin), and L_k the axis's limit (N m or N):
 ///  - slip fraction  s_k = g(K_k |e_k| / L_k) if e_k r_k > 0 (loading), else 0; g is 0 below
-///    1 - w, 1 at and above 1, C1 smoothstep between (w = getSlipOnsetWidth());
+///    1 - w, a C1 smoothstep to 1 at u = 1 (w = getSlipOnsetWidth()), and 1 + ((u - 1) / w)^2
+///    above, so an overshoot past the limit is pulled back (see limited_bushing_law.h);
 ///  - anchor rate    (rate of A in F, in A)_k = s_k r_k;   elastic rate  edot_k = (1 - s_k) r_k;
 ///  - generalized force  f_k = clamp(-K_k e_k - D_k edot_k, -L_k, +L_k).
 /// O receives moment (f_0, f_1, f_2) and force (f_3, f_4, f_5), expressed in A, at M's origin;
@@ -86,7 +87,8 @@ public:
     /// Whether the element applies force (and its anchor moves) in `state`.
     bool isEnabled(const SimTK::State& state) const;
     /// Switches the element on or off; invalidates Stage::Instance. A disabled element applies
-    /// nothing and its anchor is frozen: call resetAnchor() when enabling it again.
+    /// nothing and its anchor is frozen: call resetAnchor() when enabling it again. Use this,
+    /// not Force::disable(), which would also skip the element's zdot computation.
     void setEnabled(SimTK::State& state, bool enabled) const;
 
     /// Per-axis force limits L (N m for 0-2, N for 3-5) in `state`, before locking.

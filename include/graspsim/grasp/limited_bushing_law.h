@@ -11,9 +11,11 @@
 
 namespace graspsim::grasp {
 
-/// Fraction s in [0, 1] of the relative rate r that the anchor takes over (zdot = s r).
-/// s = 0 unless the axis is loading (e r > 0); then s = g(K |e| / L), with g = 0 below 1 - w,
-/// g = 1 at and above 1 and the C1 smoothstep 3 t^2 - 2 t^3, t = (u - 1 + w) / w, between.
+/// Fraction s of the relative rate r that the anchor takes over (zdot = s r).
+/// s = 0 unless the axis is loading (e r > 0); then s = g(u), u = K |e| / L, with g = 0 below
+/// 1 - w, the C1 smoothstep 3 t^2 - 2 t^3, t = (u - 1 + w) / w, up to u = 1 (g = 1), and
+/// g = 1 + ((u - 1) / w)^2 above: beyond the limit the anchor outruns the motion slightly,
+/// which returns |K e| to L (corrects integrator overshoot and drift of e while sliding).
 /// L = +Infinity gives 0; L = 0 gives 1 for any loading e != 0.
 /// @param onsetWidth w in (0, 1]: the band of |K e| / L below 1 in which slip begins.
 double calcSlipFraction(double stiffness, double limit, double onsetWidth, double e, double r);
