@@ -23,23 +23,37 @@ struct SimulateCommand::Options {
     std::string mode = "full";
     std::string perturbation = "none";
     std::string duration;
+    std::string qThreshold, qMinimum;
     std::string out = "out";
 };
 
 SimulateCommand::SimulateCommand(CLI::App& app) : options_(std::make_shared<Options>()) {
     Options& o = *options_;
-    command_ = app.add_subcommand("simulate", "Simulate a grasp scenario with full contact and write the results");
+    command_ = app.add_subcommand("simulate", "Simulate a grasp scenario (full contact or the grasp approximation) and write the results");
     command_->add_option("scenario", o.scenario, "built-in scenario (ball-clutch, phone-pinch) or a scenario file")->required();
     command_->add_option("--contact", o.contact, "compliant (default) or rigid");
     command_->add_option("--mode", o.mode, "full (default) or approx");
     command_->add_option("--perturbation", o.perturbation, "none (default) or a perturbation of the scenario (f1, f2)");
     command_->add_option("--duration", o.duration, "simulated time in s (default: the scenario's)");
-    command_->add_option("--out", o.out, "output folder (default out); receives trajectory.csv, contacts.csv, summary.json");
+    command_->add_option("--q-threshold", o.qThreshold, "approx: grasp quality Q_Th (N) to engage (default: 0.8 x the settled grasp's)");
+    command_->add_option("--q-minimum", o.qMinimum, "approx: grasp quality Q_M (N) below which to release (default: 0.5 x Q_Th)");
+    command_->add_option("--out", o.out,
+                         "output folder (default out); receives trajectory.csv, contacts.csv, summary.json (and events.csv in approx mode)");
 }
 
 bool SimulateCommand::parsed() const { return command_->parsed(); }
 
 namespace {
+
+// A quality threshold (N): empty keeps the automatic choice (0).
+double parseQuality(const std::string& text, const std::string& source) {
+    if (text.empty()) return 0;
+    const double value = parseNumber(text, source, "the grasp quality must be a number of newtons > 0");
+    if (!(value > 0) || !std::isfinite(value)) {
+        throw InputError(source + ": value " + text + " is not accepted; the grasp quality must be a number of newtons > 0");
+    }
+    return value;
+}
 
 // Everything the user gave is checked here, before the output folder is touched.
 simulation::SimulationOptions parseOptions(const std::string& contact, const std::string& mode,
@@ -88,7 +102,12 @@ simulation::ProgressCallback makeProgress() {
 int SimulateCommand::run() const {
     const Options& o = *options_;
     const scenario::Scenario scenario = scenario::loadScenario(o.scenario);
-    const simulation::SimulationOptions options = parseOptions(o.contact, o.mode, o.perturbation, o.duration, scenario);
+    simulation::SimulationOptions options = parseOptions(o.contact, o.mode, o.perturbation, o.duration, scenario);
+    options.approx.qThreshold = parseQuality(o.qThreshold, "--q-threshold");
+    options.approx.qMinimum = parseQuality(o.qMinimum, "--q-minimum");
+    if (options.approx.qThreshold > 0 && options.approx.qMinimum > options.approx.qThreshold) {
+        throw InputError("--q-minimum: value " + o.qMinimum + " is not accepted; Q_M must not exceed --q-threshold " + o.qThreshold);
+    }
     prepareFolder(o.out);
     const simulation::SimulationResult result = simulation::runGraspSimulation(scenario, options, makeProgress());
     results::writeResultFiles(o.out, result);
@@ -97,6 +116,10 @@ int SimulateCommand::run() const {
               << "): " << s.simTime << " s simulated in " << s.wallTime << " s, " << s.steps << " steps, held "
               << (s.held ? "yes" : "no") << ", object moved " << s.objectDisplacement * 1000 << " mm after settling; "
               << "results in " << o.out << "\n";
+    if (s.mode == "approx") {
+        std::cout << "approximation: " << (s.engaged ? "engaged at t = " + std::to_string(s.engageTime) + " s" : "never engaged")
+                  << ", " << result.events.size() << " switch event(s) in events.csv\n";
+    }
     if (!s.complete) {
         std::cerr << "graspsim: simulation stopped early: " << s.failure << " (summary.json is marked incomplete)\n";
         return 3;

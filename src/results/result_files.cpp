@@ -83,13 +83,40 @@ std::string formatSummaryJson(const simulation::SimulationSummary& s) {
     j["max_grasp_quality_n"] = s.maxGraspQuality;
     j["held"] = s.held;
     j["max_fingertip_goal_distance_m"] = s.maxFingertipGoalDistance;
+    j["full_step_us"] = s.fullStepUs;
+    j["full_steps"] = s.fullSteps;
+    j["full_wall_s_per_sim_s"] = s.fullWallPerSimSecond;
+    if (s.mode != "approx") return j.dump(2) + "\n";
+    j["engaged"] = s.engaged;
+    j["engage_time_s"] = s.engaged ? nlohmann::ordered_json(s.engageTime) : nlohmann::ordered_json(nullptr);
+    j["release_time_s"] = s.releaseTime >= 0 ? nlohmann::ordered_json(s.releaseTime) : nlohmann::ordered_json(nullptr);
+    j["q_at_engage_n"] = s.qAtEngage;
+    j["q_threshold_n"] = s.qThreshold;
+    j["approx_step_us"] = s.approxStepUs;
+    j["approx_steps"] = s.approxSteps;
+    j["approx_wall_s_per_sim_s"] = s.approxWallPerSimSecond;
     return j.dump(2) + "\n";
+}
+
+std::string formatEventsCsv(const simulation::SimulationResult& result) {
+    std::ostringstream out;
+    out << "time_s,event,grasp_quality_n,reason\n";
+    for (const simulation::GraspEvent& e : result.events) {
+        std::ostringstream row;
+        put(row, e.quality);
+        char time[32];
+        std::snprintf(time, sizeof time, "%.17g", e.time);
+        // The reason is free text with commas: quote it (RFC 4180; it contains no quotes).
+        out << time << ',' << e.kind << row.str() << ",\"" << e.reason << "\"\n";
+    }
+    return out.str();
 }
 
 void writeResultFiles(const std::string& folder, const simulation::SimulationResult& result) {
     io::writeFileAtomically(folder + "/trajectory.csv", formatTrajectoryCsv(result));
     io::writeFileAtomically(folder + "/contacts.csv", formatContactsCsv(result));
     io::writeFileAtomically(folder + "/summary.json", formatSummaryJson(result.summary));
+    if (result.summary.mode == "approx") io::writeFileAtomically(folder + "/events.csv", formatEventsCsv(result));
 }
 
 }  // namespace graspsim::results

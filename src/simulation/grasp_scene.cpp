@@ -2,6 +2,7 @@
 
 #include "graspsim/error.h"
 #include "graspsim/model/body_model.h"
+#include "graspsim/simulation/grasp_switch.h"
 
 #include <algorithm>
 #include <cmath>
@@ -63,12 +64,10 @@ GraspScene::GraspScene(const scenario::Scenario& scenario, const SimulationOptio
                          "' is not available in simulate yet; use compliant (the rigid component, contact::RigidContact, "
                          "is not wired into grasp scenes yet)");
     }
-    if (options.mode != SimulationMode::Full) {
-        throw InputError("--mode: '" + toString(options.mode) + "' is not available yet; use full");
-    }
     addObject();
     addContacts();
-    addController();
+    if (options.mode == SimulationMode::Approx) addBushing();
+    addController(options);
     if (options.perturbation != "none") {
         const scenario::Perturbation* p = scenario.findPerturbation(options.perturbation);
         if (!p) {
@@ -110,7 +109,26 @@ void GraspScene::addContacts() {
     contacts_ = contact::CompliantContactForce(model_.updForces(), pairs);
 }
 
-void GraspScene::addController() {
+// Critically damped at kBushingFrequency with the object's own mass and central inertia (O is
+// at the centre of mass), per axis: rotation first, as the bushing's axes are ordered.
+void GraspScene::addBushing() {
+    const SimTK::MassProperties mp = object_.getBody().getDefaultRigidBodyMassProperties();
+    const SimTK::Vec3 I = mp.calcCentralInertia().getMoments();
+    const double w = kBushingFrequency;
+    SimTK::Vec6 stiffness, damping;
+    for (int k = 0; k < 3; ++k) {
+        stiffness[k] = I[k] * w * w;
+        damping[k] = 2 * I[k] * w;
+        stiffness[k + 3] = mp.getMass() * w * w;
+        damping[k + 3] = 2 * mp.getMass() * w;
+    }
+    bushing_ = grasp::LimitedBushing(model_.updForces(), getPalm(), SimTK::Transform(), object_, SimTK::Transform(),
+                                     stiffness, damping);
+}
+
+const SimTK::MobilizedBody& GraspScene::getPalm() const { return model_.getMobilizedBody(kPalm); }
+
+void GraspScene::addController(const SimulationOptions& options) {
     const model::ModelDescription& d = model_.getDescription();
     std::vector<control::ControlledJoint> joints;
     std::vector<std::string> armBodies;
@@ -119,6 +137,7 @@ void GraspScene::addController() {
         const bool finger = d.findBody(j.child)->segment == "hand" && j.name.find("wrist") == std::string::npos;
         joints.push_back({j.name, finger ? control::PdGains{scenario_.controller.kp, scenario_.controller.kd}
                                          : control::PdGains{kArmKp, kArmKd}});
+        if (finger) fingerMobilizers_.push_back(model_.getMobilizedBody(j.child).getMobilizedBodyIndex());
     }
     for (const model::Body& b : d.bodies) armBodies.push_back(b.name);
     pd_ = std::make_unique<control::JointPdController>(model_, joints, armBodies);
@@ -131,9 +150,16 @@ void GraspScene::addController() {
     }
     model_.realizeTopology();  // Simbody's Assembler (inside the IK) needs a realized topology
     ik_ = std::make_unique<control::FingertipIk>(model_, goalEndEffectors_, ikJoints);
-    controller_ = new control::GraspController(*pd_, *ik_, ikJoints, model_.getMobilizedBody(kPalm),
-                                               scenario_.controller.ikInterval, ikTiming_);
-    model_.updSystem().addEventHandler(controller_);
+    const double ikInterval = scenario_.controller.ikInterval;
+    controller_ = new control::GraspController(*pd_, *ik_, ikJoints, getPalm(), ikInterval, ikTiming_);
+    if (options.mode == SimulationMode::Full) {
+        model_.updSystem().addEventHandler(controller_);
+        return;
+    }
+    // Approx: the switch runs the IK while the grasp is not approximated, so it can pause it.
+    ownedController_.reset(controller_);
+    switch_ = new GraspSwitch(*this, *controller_, options.approx, ikInterval);
+    model_.updSystem().addEventHandler(switch_);
 }
 
 SimTK::State GraspScene::makeInitialState() {
@@ -148,6 +174,7 @@ SimTK::State GraspScene::makeInitialState() {
     pd_->setTargets(state, targets);
     object_.setQToFitTransform(state, toTransform(scenario_.object.findPose()));
     object_.lock(state, SimTK::Motion::Position);
+    if (!bushing_.isEmptyHandle()) bushing_.setEnabled(state, false);  // contact holds the object until the switch engages
     model_.getSystem().realize(state, SimTK::Stage::Position);
     // The goals: the scenario's points on the object, pressed in along the inward normal, as they
     // sit in the palm frame now that hand and object are in place.

@@ -71,6 +71,114 @@ void checkFinite(const SimTK::State& s, const std::string& lastEvent) {
     throw NumericalError("non-finite state at t = " + std::to_string(s.getTime()) + " s (last event: " + lastEvent + ")");
 }
 
+// Wall time and integrator steps per phase of the run, split at output samples: 0 object held,
+// 1 full contact (from the release to the first engagement), 2 the first engagement, 3 after it.
+class PhaseTimer {
+public:
+    explicit PhaseTimer(const GraspScene& scene) : scene_(scene) {}
+
+    void mark(const SimTK::State& s, long steps) {
+        const double now = std::chrono::duration<double>(Clock::now().time_since_epoch()).count();
+        const long taken = steps - lastSteps_;
+        seconds_[phase_] += now - lastWall_;
+        simSeconds_[phase_] += s.getTime() - lastTime_;
+        steps_[phase_] += taken;
+        lastTime_ = s.getTime();
+        totalSteps_ += taken;
+        lastWall_ = now;
+        lastSteps_ = steps;
+        phase_ = std::max(phase_, findPhase(s));
+    }
+    /// After the integrator was initialized again: new step-count baseline, and the new phase.
+    void rebase(const SimTK::State& s, long steps) {
+        lastSteps_ = steps;
+        phase_ = std::max(phase_, findPhase(s));
+    }
+    long getTotalSteps() const { return totalSteps_; }
+    double findUsPerStep(int phase) const { return steps_[phase] > 0 ? 1e6 * seconds_[phase] / steps_[phase] : 0; }
+    /// Wall-clock seconds per simulated second of `phase`.
+    double findWallPerSimSecond(int phase) const { return simSeconds_[phase] > 0 ? seconds_[phase] / simSeconds_[phase] : 0; }
+    long getSteps(int phase) const { return steps_[phase]; }
+
+private:
+    int findPhase(const SimTK::State& s) const {
+        if (scene_.getObject().isLocked(s)) return 0;
+        const GraspSwitch* grasp = scene_.getGraspSwitch();
+        if (!grasp || grasp->getEvents().empty()) return 1;
+        return grasp->isEngaged(s) && grasp->getEvents().size() == 1 ? 2 : 3;
+    }
+
+    const GraspScene& scene_;
+    int phase_ = 0;
+    double lastWall_ = std::chrono::duration<double>(Clock::now().time_since_epoch()).count();
+    long lastSteps_ = 0, totalSteps_ = 0;
+    double lastTime_ = 0;
+    double seconds_[4] = {0, 0, 0, 0};
+    double simSeconds_[4] = {0, 0, 0, 0};
+    long steps_[4] = {0, 0, 0, 0};
+};
+
+// Steps from sample to sample, releasing the object on time; `lastEvent` says what happened last.
+void stepThroughSamples(const GraspScene& scene, SimTK::TimeStepper& stepper, Recorder& recorder, PhaseTimer& phases,
+                        double duration, const ProgressCallback& progress, std::string& lastEvent) {
+    const SimTK::Integrator& integrator = stepper.getIntegrator();
+    for (double t : makeSampleTimes(scene, duration)) {
+        stepper.stepTo(t);
+        checkFinite(stepper.getState(), lastEvent);
+        phases.mark(stepper.getState(), integrator.getNumStepsTaken());
+        if (std::abs(t - scene.getReleaseTime()) < 1e-12) {
+            SimTK::State released = stepper.getState();
+            scene.releaseObject(released);
+            stepper.initialize(released);  // a lock change is an Instance-stage change
+            phases.rebase(stepper.getState(), integrator.getNumStepsTaken());  // initialize() restarts the count
+            lastEvent = "object released at t = " + std::to_string(t) + " s";
+        }
+        recorder.record(stepper.getState());
+        if (progress) progress(t, duration);
+    }
+}
+
+SimulationSummary makeSummaryHeader(const scenario::Scenario& scenario, const SimulationOptions& options, double duration) {
+    SimulationSummary summary;
+    summary.scenario = scenario.name;
+    summary.contact = toString(options.contact);
+    summary.mode = toString(options.mode);
+    summary.perturbation = options.perturbation;
+    summary.settleTime = std::min(scenario.simulation.settleTime, duration);
+    return summary;
+}
+
+// Steps are counted by the phase timer over the whole run: the release's initialize() restarts
+// the integrator's own count, which would leave the held phase's steps out.
+void summarizeCost(const GraspScene& scene, const PhaseTimer& timer, double ikSeconds, SimulationSummary& summary) {
+    summary.steps = timer.getTotalSteps();
+    summary.ikSolves = scene.getIkTiming().solves;
+    const double perStep = summary.steps > 0 ? 1e6 / static_cast<double>(summary.steps) : 0;
+    summary.meanStepUs = summary.wallTime * perStep;
+    summary.ikUsPerStep = ikSeconds * perStep;
+    summary.dynamicsUsPerStep = (summary.wallTime - ikSeconds) * perStep;
+}
+
+void summarizeSwitch(const GraspScene& scene, const PhaseTimer& timer, SimulationResult& result) {
+    SimulationSummary& summary = result.summary;
+    summary.fullStepUs = timer.findUsPerStep(1);
+    summary.approxStepUs = timer.findUsPerStep(2);
+    summary.fullWallPerSimSecond = timer.findWallPerSimSecond(1);
+    summary.approxWallPerSimSecond = timer.findWallPerSimSecond(2);
+    summary.fullSteps = timer.getSteps(1);
+    summary.approxSteps = timer.getSteps(2);
+    const GraspSwitch* grasp = scene.getGraspSwitch();
+    if (!grasp) return;
+    result.events = grasp->getEvents();
+    summary.qThreshold = grasp->getQualityThreshold();
+    if (result.events.empty()) return;
+    summary.engaged = true;
+    summary.engageTime = result.events.front().time;
+    summary.qAtEngage = result.events.front().quality;
+    if (result.events.size() > 1) summary.releaseTime = result.events[1].time;
+}
+
+
 // Held: every goal's fingertip still within the tolerance of its goal point on the object.
 void summarizeGrip(const GraspScene& scene, const SimTK::State& s, SimulationSummary& summary) {
     scene.getSystem().realize(s, SimTK::Stage::Position);
@@ -99,11 +207,7 @@ SimulationResult runGraspSimulation(const scenario::Scenario& scenario, const Si
     GraspScene scene(scenario, options);
     SimulationResult result;
     SimulationSummary& summary = result.summary;
-    summary.scenario = scenario.name;
-    summary.contact = toString(options.contact);
-    summary.mode = toString(options.mode);
-    summary.perturbation = options.perturbation;
-    summary.settleTime = std::min(scenario.simulation.settleTime, duration);
+    summary = makeSummaryHeader(scenario, options, duration);
     Recorder recorder(scene, result);
 
     SimTK::CPodesIntegrator integrator(scene.getSystem(), SimTK::CPodes::BDF, SimTK::CPodes::Newton);
@@ -113,21 +217,11 @@ SimulationResult runGraspSimulation(const scenario::Scenario& scenario, const Si
     stepper.initialize(initial);
     recorder.record(stepper.getState());
     std::string lastEvent = "start";
+    PhaseTimer phases(scene);
     const auto start = Clock::now();
     const double ikBefore = scene.getIkTiming().totalSeconds;
     try {
-        for (double t : makeSampleTimes(scene, duration)) {
-            stepper.stepTo(t);
-            checkFinite(stepper.getState(), lastEvent);
-            if (std::abs(t - scene.getReleaseTime()) < 1e-12) {
-                SimTK::State released = stepper.getState();
-                scene.releaseObject(released);
-                stepper.initialize(released);  // a lock change is an Instance-stage change
-                lastEvent = "object released at t = " + std::to_string(t) + " s";
-            }
-            recorder.record(stepper.getState());
-            if (progress) progress(t, duration);
-        }
+        stepThroughSamples(scene, stepper, recorder, phases, duration, progress, lastEvent);
         summary.complete = true;
     } catch (const NumericalError& e) {
         summary.failure = e.what();
@@ -137,15 +231,10 @@ SimulationResult runGraspSimulation(const scenario::Scenario& scenario, const Si
     }
     summary.wallTime = std::chrono::duration<double>(Clock::now() - start).count();
     summary.simTime = stepper.getState().getTime();
-    summary.steps = integrator.getNumStepsTaken();
-    summary.ikSolves = scene.getIkTiming().solves;
-    const double ikSeconds = scene.getIkTiming().totalSeconds - ikBefore;
-    const double perStep = summary.steps > 0 ? 1e6 / static_cast<double>(summary.steps) : 0;
-    summary.meanStepUs = summary.wallTime * perStep;
-    summary.ikUsPerStep = ikSeconds * perStep;
-    summary.dynamicsUsPerStep = (summary.wallTime - ikSeconds) * perStep;
+    summarizeCost(scene, phases, scene.getIkTiming().totalSeconds - ikBefore, summary);
     summarizeDrift(result, summary);
     summarizeGrip(scene, stepper.getState(), summary);
+    summarizeSwitch(scene, phases, result);
     return result;
 }
 

@@ -42,6 +42,20 @@ TEST_F(SimulateCommand, ShortRunWritesTheResultFilesDeterministically) {
     }
 }
 
+TEST_F(SimulateCommand, ApproxModeWritesTheSwitchEvents) {
+    const std::string out = (dir_ / "approx").string();
+    const RunResult r = run("simulate phone-pinch --mode approx --duration 1.1 --out " + out);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const std::string events = slurp(fs::path(out) / "events.csv");
+    EXPECT_EQ(events.rfind("time_s,event,grasp_quality_n,reason\n", 0), 0u) << events;
+    EXPECT_NE(events.find(",engage,"), std::string::npos) << events;
+    const std::string summary = slurp(fs::path(out) / "summary.json");
+    for (const char* key : {"\"engaged\": true", "\"engage_time_s\"", "\"release_time_s\": null", "\"q_at_engage_n\"",
+                            "\"full_step_us\"", "\"approx_step_us\""}) {
+        EXPECT_NE(summary.find(key), std::string::npos) << key << " in " << summary;
+    }
+}
+
 TEST_F(SimulateCommand, RejectsBadOptionsWithoutTouchingTheOutputFolder) {
     const std::string out = " --out " + (dir_ / "out").string();
     expectBadInput("simulate juggling" + out, {"juggling", "ball-clutch"});
@@ -49,6 +63,8 @@ TEST_F(SimulateCommand, RejectsBadOptionsWithoutTouchingTheOutputFolder) {
     expectBadInput("simulate ball-clutch --contact soft" + out, {"--contact", "soft", "compliant or rigid"});
     expectBadInput("simulate ball-clutch --duration -1" + out, {"--duration", "-1"});
     expectBadInput("simulate ball-clutch --duration soon" + out, {"--duration", "soon"});
+    expectBadInput("simulate ball-clutch --mode approx --q-threshold -1" + out, {"--q-threshold", "-1"});
+    expectBadInput("simulate ball-clutch --mode approx --q-threshold 1 --q-minimum 2" + out, {"--q-minimum", "2"});
     EXPECT_FALSE(fs::exists(dir_ / "out"));
 }
 

@@ -9,7 +9,10 @@
 ///   shape_b, contact point x, y, z (m, ground), normal x, y, z (from a toward b), normal force
 ///   (N), friction force on b x, y, z (N, ground), penetration (m);
 /// - summary.json: the SimulationSummary fields (see grasp_simulation.h), with "complete": false
-///   and "failure" when the run stopped early.
+///   and "failure" when the run stopped early; approx runs add engaged, engage_time_s and
+///   release_time_s (null when none), q_at_engage_n, q_threshold_n and approx_step_us;
+/// - events.csv (approx runs only): time (s), event (engage or release), grasp quality (N), and
+///   the reason in double quotes.
 /// Each file is written whole to a temporary name and renamed, so a crash never leaves half a file.
 
 #include "graspsim/simulation/grasp_simulation.h"
@@ -25,7 +28,10 @@ std::string formatContactsCsv(const simulation::SimulationResult& result);
 /// summary.json's text.
 std::string formatSummaryJson(const simulation::SimulationSummary& summary);
 
-/// Writes the three files into `folder`, which must exist.
+/// events.csv's text.
+std::string formatEventsCsv(const simulation::SimulationResult& result);
+
+/// Writes the three files (four in approx mode) into `folder`, which must exist.
 /// @throws graspsim::InputError naming the file when it cannot be written.
 void writeResultFiles(const std::string& folder, const simulation::SimulationResult& result);
 

@@ -7,9 +7,14 @@
 /// ("forward kinematics once"); IK then tracks the fingertips to goal points just inside the
 /// object's surface so the fingers press. The object is held in place (its mobilizer locked)
 /// until the scenario's approach time, when it is released and only the grasp holds it.
+///
+/// In SimulationMode::Approx the scene also holds the approximation's parts: a LimitedBushing
+/// palm-object (disabled at t = 0) and a GraspSwitch that runs the IK controller and switches
+/// between contact and bushing (grasp_switch.h).
 
 #include "graspsim/contact/compliant_contact_force.h"
 #include "graspsim/control/grasp_controller.h"
+#include "graspsim/grasp/limited_bushing.h"
 #include "graspsim/scenario/scenario.h"
 #include "graspsim/simulation/perturbation_force.h"
 #include "graspsim/simulation/simulation_options.h"
@@ -28,6 +33,13 @@ namespace graspsim::simulation {
 /// millimetres, so the hand, not the arm, decides whether the object slips.
 constexpr double kArmKp = 200.0;  ///< N m/rad
 constexpr double kArmKd = 20.0;   ///< N m s/rad
+
+/// Natural frequency of the approximation's bushing with the object's own mass and inertia
+/// (rad/s, critically damped): stiff enough that gravity sags the object by g / w^2 = 0.25 mm,
+/// soft enough to leave the integrator steps of the full-contact run (about 5 ms period).
+constexpr double kBushingFrequency = 200.0;
+
+class GraspSwitch;
 
 /// The assembled experiment. Neither copyable nor movable (Simbody elements refer into it).
 class GraspScene {
@@ -48,6 +60,15 @@ public:
     const std::vector<std::string>& getGoalEndEffectors() const { return goalEndEffectors_; }
     /// The goals on the object's surface (not pressed in), in O (m), in goal order.
     const std::vector<SimTK::Vec3>& getSurfaceGoals() const { return surfaceGoals_; }
+    /// The palm: frame H of the approximation's bushing and the goals' frame.
+    const SimTK::MobilizedBody& getPalm() const;
+    /// Mobilizers of the finger joints (the ones merged into the palm while the approximation
+    /// is engaged).
+    const std::vector<SimTK::MobilizedBodyIndex>& getFingerMobilizers() const { return fingerMobilizers_; }
+    /// The approximation's bushing palm (H, palm frame) - object (M = O); an empty handle in full mode.
+    const grasp::LimitedBushing& getBushing() const { return bushing_; }
+    /// The grasp switch (owned by the System) in approx mode, nullptr in full mode.
+    const GraspSwitch* getGraspSwitch() const { return switch_; }
     /// The perturbation of this run, or nullptr.
     const PerturbationForce* getPerturbation() const { return perturbation_.get(); }
 
@@ -61,7 +82,8 @@ public:
 private:
     void addObject();
     void addContacts();
-    void addController();
+    void addController(const SimulationOptions& options);
+    void addBushing();
 
     const scenario::Scenario& scenario_;
     system::MultibodyModel model_;
@@ -69,7 +91,11 @@ private:
     contact::CompliantContactForce contacts_;
     std::unique_ptr<control::JointPdController> pd_;
     std::unique_ptr<control::FingertipIk> ik_;
-    control::GraspController* controller_ = nullptr;  // owned by the system
+    control::GraspController* controller_ = nullptr;  // owned by the system (full) or ownedController_ (approx)
+    std::unique_ptr<control::GraspController> ownedController_;  // approx: run by the switch, not the system
+    grasp::LimitedBushing bushing_;
+    GraspSwitch* switch_ = nullptr;  // owned by the system
+    std::vector<SimTK::MobilizedBodyIndex> fingerMobilizers_;
     control::IkTiming ikTiming_;
     std::unique_ptr<PerturbationForce> perturbation_;
     std::vector<std::string> goalEndEffectors_;

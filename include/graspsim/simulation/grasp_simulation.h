@@ -4,6 +4,7 @@
 
 #include "graspsim/contact/compliant_contact_force.h"
 #include "graspsim/scenario/scenario.h"
+#include "graspsim/simulation/grasp_switch.h"
 #include "graspsim/simulation/simulation_options.h"
 
 #include <simbody/Simbody.h>
@@ -47,6 +48,24 @@ struct SimulationSummary {
     double maxGraspQuality = 0;     ///< largest grasp quality over the output samples (N)
     bool held = false;              ///< at the end every goal's fingertip is within the held tolerance of its goal
     double maxFingertipGoalDistance = 0;  ///< at the end (m)
+    // The grasp approximation (mode approx; see grasp_switch.h).
+    bool engaged = false;           ///< the approximation engaged at least once
+    double engageTime = -1;         ///< first engagement (s); < 0 if none
+    double releaseTime = -1;        ///< first release after it (s); < 0 if none
+    double qAtEngage = 0;           ///< grasp quality at the first engagement (N)
+    double qThreshold = 0;          ///< Q_Th in use (N)
+    /// Wall time per integrator step (µs) from the object's release to the first engagement (or
+    /// the end): the full-contact grasp with IK. Boundaries fall on output samples, so up to one
+    /// output interval of the other phase may be included.
+    double fullStepUs = 0;
+    /// Wall time per step (µs) while the first engagement lasts (to its release or the end); 0 if none.
+    double approxStepUs = 0;
+    /// The same two phases measured per simulated second (wall s per simulated s), the fair
+    /// comparison for a variable-step integrator, whose steps lengthen once contact is gone.
+    double fullWallPerSimSecond = 0;
+    double approxWallPerSimSecond = 0;
+    long fullSteps = 0;    ///< integrator steps of the full-contact phase
+    long approxSteps = 0;  ///< integrator steps of the first engagement
 };
 
 /// Everything a run produces.
@@ -55,6 +74,7 @@ struct SimulationResult {
     std::vector<TrajectorySample> trajectory;
     std::vector<ContactSample> contacts;
     SimulationSummary summary;
+    std::vector<GraspEvent> events;  ///< engage/release switches of the approximation, in time order
 };
 
 /// Called after each output sample with the simulated time reached (s).

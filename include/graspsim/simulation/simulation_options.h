@@ -2,6 +2,7 @@
 /// @file
 /// What a user chooses per simulation run, on top of the scenario.
 
+#include <array>
 #include <string>
 
 namespace graspsim::simulation {
@@ -18,12 +19,36 @@ enum class SimulationMode {
     Approx  ///< the grasp approximation (one 6-DOF constraint once the grasp is firm)
 };
 
+/// Settings of the grasp switch of `--mode approx` (thesis Figure 4.1; see grasp_switch.h).
+/// Defaults are this project's choices, documented where they are used.
+struct ApproxOptions {
+    /// Q_Th (N): engage when the full-contact grasp quality reaches it. 0 = automatic:
+    /// autoThresholdFraction times the quality observed when the grasp first settles.
+    double qThreshold = 0;
+    /// Q_M (N): release when the monitored quality falls below it; 0 = hysteresisFraction * Q_Th.
+    double qMinimum = 0;
+    /// Automatic Q_Th as a fraction of the settled grasp's quality. 0.8: engages on the settled
+    /// grasp itself while leaving 20 % margin for the quality's ripple (the IK updates every
+    /// ik_interval, and the quality follows the contact forces).
+    double autoThresholdFraction = 0.8;
+    /// Q_M as a fraction of Q_Th (hysteresis, so that one noisy sample does not toggle the switch).
+    double hysteresisFraction = 0.5;
+    /// Release once the object has moved more than this relative to the palm since engagement
+    /// (m): about the radius of a fingertip pad, beyond which the fingers would have lost the
+    /// spots they pressed into.
+    double releaseSlideDistance = 0.005;
+    /// Which bushing axes are relaxed (friction-limited); the others are locked (rigid). SpatialVec
+    /// order, rotation x, y, z then translation x, y, z of the object frame. Default: all relaxed.
+    std::array<bool, 6> relaxedAxes{true, true, true, true, true, true};
+};
+
 /// Per-run choices. Defaults: compliant full contact, no perturbation, the scenario's duration.
 struct SimulationOptions {
     ContactModel contact = ContactModel::Compliant;
     SimulationMode mode = SimulationMode::Full;
     std::string perturbation = "none";  ///< "none" or the name of one of the scenario's perturbations
     double duration = 0;                ///< simulated time (s); 0 takes the scenario's
+    ApproxOptions approx;               ///< used in SimulationMode::Approx only
 };
 
 /// Parses "compliant" or "rigid". @throws graspsim::InputError naming `source`, the value and the choices.

@@ -1,0 +1,108 @@
+#pragma once
+/// @file
+/// The grasp switch of `--mode approx` (thesis Figure 4.1, section 4.2): a Simbody periodic
+/// event handler that replaces the finger-object contacts by one friction-limited 6-DOF element
+/// once the grasp is firm, and gives them back when the approximation stops being believable.
+///
+/// Every `ik_interval` (the IK's own period, so the check costs no extra event):
+///  - UNGRASPED (bushing disabled): run the grasp controller's IK update, then, once the object
+///    has been released, compute the grasp quality Q from the contact reports exactly as the
+///    recorder does (calcContactGraspQuality, static friction). In full contact (every goal
+///    fingertip touching the object) and Q >= Q_Th, ENGAGE:
+///     (a) limits from the contacts (eq. 4.1-4.3): F_perp = sum f_i . n_i, r = mean distance of
+///         the contact points to their centroid; translation limits mu F_perp, rotation limits
+///         mu r F_perp, with mu the scenario's DYNAMIC friction: the limit is reached only when
+///         the object slides, and sliding skin-on-object friction is the dynamic one (below
+///         the limit the bushing sticks elastically, which is what static friction gives);
+///     (b) disable every hand-object contact pair;
+///     (c) MERGE: lock every finger joint's mobilizer at its current angle, so hand and fingers
+///         move as one composite body. Realism lost: the fingers no longer flex while engaged
+///         (the thesis notes the same loss of dexterity), and their PD torques do nothing;
+///     (d) enable the bushing palm (H) - object (O), anchor reset at the current pose (no force
+///         jump), limits set, axes relaxed or locked per ApproxOptions::relaxedAxes;
+///     (e) record an "engage" event.
+///  - GRASPED (bushing enabled): IK is skipped (the fingers are locked, and skipping it is where
+///    the approximation saves its time). The contacts are still monitored without entering the
+///    dynamics: Q is evaluated on a scratch copy of the state with the pairs switched on. RELEASE
+///    (bushing off, fingers unlocked, contacts on, "release" event) when the object has moved
+///    more than releaseSlideDistance relative to the palm since engagement, when a fingertip is
+///    farther than the scenario's held tolerance from its goal on the object, or when Q < Q_M.
+///
+/// Q_Th: ApproxOptions::qThreshold, or automatically autoThresholdFraction times the quality of
+/// the first full-contact check at or after the scenario's settle_time (the thesis sets Q_Th by
+/// hand as the quality at which the object rests under gravity without slipping; the settled
+/// full-contact grasp is that state). Q_M: qMinimum, or hysteresisFraction * Q_Th.
+///
+/// Every switch changes Instance-stage variables (pair flags, locks, bushing flag); doing it in
+/// an event handler makes the TimeStepper re-realize and reinitialize the integrator.
+/// The handler keeps the event log and the engagement pose outside the State: it assumes one
+/// forward run (a TimeStepper never rewinds), as the run of grasp_simulation.h is.
+
+#include "graspsim/control/grasp_controller.h"
+#include "graspsim/simulation/simulation_options.h"
+
+#include <simbody/Simbody.h>
+
+#include <string>
+#include <vector>
+
+namespace graspsim::simulation {
+
+class GraspScene;
+
+/// One switch of the approximation.
+struct GraspEvent {
+    double time = 0;     ///< s
+    std::string kind;    ///< "engage" or "release"
+    double quality = 0;  ///< grasp quality Q at the switch (N; monitored on a scratch state when releasing)
+    std::string reason;  ///< why, with the numbers
+};
+
+/// The periodic event handler described in the file comment (owned by the System once added).
+class GraspSwitch : public SimTK::PeriodicEventHandler {
+public:
+    /// @param scene the approx-mode scene (its contacts, bushing and finger mobilizers).
+    /// @param controller the IK controller this handler runs while ungrasped (not itself added
+    ///        to the System, so IK can be paused).
+    /// @throws graspsim::InputError for a negative threshold or a slide distance <= 0.
+    GraspSwitch(const GraspScene& scene, const control::GraspController& controller, const ApproxOptions& options,
+                double interval);
+
+    void handleEvent(SimTK::State& state, SimTK::Real accuracy, bool& shouldTerminate) const override;
+
+    /// Whether the approximation is engaged in `state`.
+    bool isEngaged(const SimTK::State& state) const;
+    /// The switches so far, in time order.
+    const std::vector<GraspEvent>& getEvents() const { return events_; }
+    /// Q_Th in use (N); 0 until the automatic threshold has been set.
+    double getQualityThreshold() const { return qThreshold_; }
+    /// Q_M in use (N).
+    double getQualityMinimum() const { return qMinimum_; }
+
+    /// Grasp quality of the contacts active in `state` (N). Needs Stage::Velocity.
+    double calcQuality(const SimTK::State& state) const;
+    /// Q of the contacts the pairs would produce if switched on (a scratch copy of `state`).
+    double calcMonitoredQuality(const SimTK::State& state) const;
+    /// Largest distance of a goal fingertip from its goal on the object's surface (m).
+    double findFingertipGoalDistance(const SimTK::State& state) const;
+
+private:
+    void checkEngage(SimTK::State& state) const;
+    void checkRelease(SimTK::State& state) const;
+    bool isFullContact(const SimTK::State& state) const;
+    void engage(SimTK::State& state, double quality) const;
+    void release(SimTK::State& state, double quality, const std::string& reason) const;
+    void setFingersMerged(SimTK::State& state, bool merged) const;
+    std::string describeRelease(const SimTK::State& state, double quality) const;
+
+    const GraspScene& scene_;
+    const control::GraspController& controller_;
+    ApproxOptions options_;
+    std::vector<std::string> goalBodies_;  // body of each goal end-effector
+    mutable double qThreshold_ = 0;
+    mutable double qMinimum_ = 0;
+    mutable SimTK::Transform X_HO_engaged_;  // object pose in the palm frame at engagement
+    mutable std::vector<GraspEvent> events_;
+};
+
+}  // namespace graspsim::simulation

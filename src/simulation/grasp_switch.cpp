@@ -1,0 +1,182 @@
+#include "graspsim/simulation/grasp_switch.h"
+
+#include "graspsim/error.h"
+#include "graspsim/simulation/contact_grasp_quality.h"
+#include "graspsim/simulation/grasp_scene.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <numeric>
+
+namespace graspsim::simulation {
+
+namespace {
+
+std::string format(const char* pattern, double a, double b = 0) {
+    char buffer[160];
+    std::snprintf(buffer, sizeof buffer, pattern, a, b);
+    return buffer;
+}
+
+std::vector<int> allPairs(const contact::CompliantContactForce& contacts) {
+    std::vector<int> pairs(static_cast<std::size_t>(contacts.getNumPairs()));
+    std::iota(pairs.begin(), pairs.end(), 0);
+    return pairs;
+}
+
+// Eq. 4.1-4.3: F_perp = sum f_i . n_i; r = mean distance of the contact points to their centroid.
+// Returns the bushing limits, rotation first: mu r F_perp (N m), then mu F_perp (N).
+SimTK::Vec6 calcFrictionLimits(const std::vector<contact::ContactReport>& reports, double mu) {
+    double fPerp = 0;
+    SimTK::Vec3 centroid(0);
+    for (const contact::ContactReport& c : reports) {
+        const SimTK::Vec3 f = c.normalForce * SimTK::Vec3(c.n_G) + c.frictionForce_G;
+        fPerp += ~f * SimTK::Vec3(c.n_G);
+        centroid += c.p_G;
+    }
+    centroid /= static_cast<double>(reports.size());
+    double r = 0;
+    for (const contact::ContactReport& c : reports) r += (c.p_G - centroid).norm();
+    r /= static_cast<double>(reports.size());
+    const double linear = mu * fPerp, angular = mu * r * fPerp;
+    return SimTK::Vec6(angular, angular, angular, linear, linear, linear);
+}
+
+}  // namespace
+
+GraspSwitch::GraspSwitch(const GraspScene& scene, const control::GraspController& controller,
+                         const ApproxOptions& options, double interval)
+    : SimTK::PeriodicEventHandler(interval), scene_(scene), controller_(controller), options_(options) {
+    if (!(options.qThreshold >= 0) || !(options.qMinimum >= 0)) {
+        throw InputError("approx: the quality thresholds Q_Th and Q_M must be >= 0 (0 = automatic)");
+    }
+    if (!(options.releaseSlideDistance > 0)) throw InputError("approx: the release slide distance must be > 0 m");
+    if (options.qThreshold > 0 && options.qMinimum > options.qThreshold) {
+        throw InputError(format("approx: Q_M (%g N) must not exceed Q_Th (%g N)", options.qMinimum, options.qThreshold));
+    }
+    qThreshold_ = options.qThreshold;
+    qMinimum_ = options.qMinimum > 0 ? options.qMinimum : options.hysteresisFraction * qThreshold_;
+    const model::ModelDescription& d = scene.getModel().getDescription();
+    for (const std::string& e : scene.getGoalEndEffectors()) goalBodies_.push_back(d.findEndEffector(e)->body);
+}
+
+bool GraspSwitch::isEngaged(const SimTK::State& state) const { return scene_.getBushing().isEnabled(state); }
+
+void GraspSwitch::handleEvent(SimTK::State& state, SimTK::Real accuracy, bool& shouldTerminate) const {
+    shouldTerminate = false;
+    if (isEngaged(state)) {
+        checkRelease(state);  // IK paused: the fingers are locked to the palm
+        return;
+    }
+    controller_.handleEvent(state, accuracy, shouldTerminate);
+    if (!scene_.getObject().isLocked(state)) checkEngage(state);  // only once the object is released
+}
+
+double GraspSwitch::calcQuality(const SimTK::State& state) const {
+    scene_.getSystem().realize(state, SimTK::Stage::Velocity);
+    grasp::QualityOptions quality;
+    quality.mu = scene_.getScenario().contact.staticFriction;  // as the recorder (grasp_simulation.cpp)
+    return calcContactGraspQuality(scene_.getContacts().findContactReports(state),
+                                   scene_.getObject().getBodyTransform(state), quality);
+}
+
+double GraspSwitch::calcMonitoredQuality(const SimTK::State& state) const {
+    SimTK::State scratch = state;
+    scene_.getContacts().setPairsEnabled(scratch, allPairs(scene_.getContacts()), true);
+    return calcQuality(scratch);
+}
+
+bool GraspSwitch::isFullContact(const SimTK::State& state) const {
+    scene_.getSystem().realize(state, SimTK::Stage::Velocity);
+    const std::vector<contact::ContactReport> reports = scene_.getContacts().findContactReports(state);
+    return std::all_of(goalBodies_.begin(), goalBodies_.end(), [&](const std::string& body) {
+        return std::any_of(reports.begin(), reports.end(), [&](const contact::ContactReport& c) { return c.bodyA == body; });
+    });
+}
+
+double GraspSwitch::findFingertipGoalDistance(const SimTK::State& state) const {
+    scene_.getSystem().realize(state, SimTK::Stage::Position);
+    const SimTK::Transform& X_GO = scene_.getObject().getBodyTransform(state);
+    double worst = 0;
+    for (std::size_t k = 0; k < scene_.getGoalEndEffectors().size(); ++k) {
+        const SimTK::Vec3 p_GE = scene_.getModel().findEndEffectorLocationInGround(state, scene_.getGoalEndEffectors()[k]);
+        worst = std::max(worst, (p_GE - X_GO * scene_.getSurfaceGoals()[k]).norm());
+    }
+    return worst;
+}
+
+void GraspSwitch::checkEngage(SimTK::State& state) const {
+    if (!isFullContact(state)) return;
+    const double q = calcQuality(state);
+    if (qThreshold_ == 0) {
+        // Automatic Q_Th from the first full-contact check once the grasp has settled.
+        if (state.getTime() < scene_.getScenario().simulation.settleTime - 1e-12) return;
+        qThreshold_ = options_.autoThresholdFraction * q;
+        if (options_.qMinimum == 0) qMinimum_ = options_.hysteresisFraction * qThreshold_;
+    }
+    if (q > 0 && q >= qThreshold_) engage(state, q);
+}
+
+void GraspSwitch::engage(SimTK::State& state, double quality) const {
+    const SimTK::MultibodySystem& system = scene_.getSystem();
+    system.realize(state, SimTK::Stage::Velocity);
+    const std::vector<contact::ContactReport> reports = scene_.getContacts().findContactReports(state);
+    const SimTK::Vec6 limits = calcFrictionLimits(reports, scene_.getScenario().contact.dynamicFriction);
+    scene_.getContacts().setPairsEnabled(state, allPairs(scene_.getContacts()), false);  // (b)
+    setFingersMerged(state, true);                                                        // (c)
+    const grasp::LimitedBushing& bushing = scene_.getBushing();                            // (d)
+    bushing.setEnabled(state, true);
+    system.realize(state, SimTK::Stage::Position);
+    bushing.resetAnchor(state);
+    bushing.setLimits(state, limits);
+    for (int k = 0; k < 6; ++k) bushing.setAxisLocked(state, static_cast<grasp::BushingAxis>(k), !options_.relaxedAxes[k]);
+    system.realize(state, SimTK::Stage::Position);
+    X_HO_engaged_ = ~scene_.getPalm().getBodyTransform(state) * scene_.getObject().getBodyTransform(state);
+    events_.push_back({state.getTime(), "engage", quality,
+                       format("Q >= Q_Th = %.6g N; limits %.6g N", qThreshold_, limits[3]) +
+                           format(", %.6g N m", limits[0])});  // (e)
+}
+
+void GraspSwitch::checkRelease(SimTK::State& state) const {
+    const double q = calcMonitoredQuality(state);
+    const std::string reason = describeRelease(state, q);
+    if (!reason.empty()) release(state, q, reason);
+}
+
+// Empty while the approximation still holds; otherwise the first reason to release, with numbers.
+std::string GraspSwitch::describeRelease(const SimTK::State& state, double quality) const {
+    scene_.getSystem().realize(state, SimTK::Stage::Position);
+    const SimTK::Transform X_HO = ~scene_.getPalm().getBodyTransform(state) * scene_.getObject().getBodyTransform(state);
+    const double slide = (X_HO.p() - X_HO_engaged_.p()).norm();
+    if (slide > options_.releaseSlideDistance) {
+        return format("object slid %.6g m in the hand (limit %.6g m)", slide, options_.releaseSlideDistance);
+    }
+    const double distance = findFingertipGoalDistance(state);
+    const double tolerance = scene_.getScenario().simulation.heldTolerance;
+    if (distance > tolerance) return format("fingertip %.6g m from its goal (held tolerance %.6g m)", distance, tolerance);
+    if (quality < qMinimum_) return format("Q < Q_M = %.6g N", qMinimum_);
+    return {};
+}
+
+void GraspSwitch::release(SimTK::State& state, double quality, const std::string& reason) const {
+    scene_.getBushing().setEnabled(state, false);
+    setFingersMerged(state, false);
+    scene_.getContacts().setPairsEnabled(state, allPairs(scene_.getContacts()), true);
+    events_.push_back({state.getTime(), "release", quality, reason});
+}
+
+// Locking at Motion::Position keeps each finger joint at its current angle (and zero rate
+// relative to its parent): the fingers become part of one rigid body with the palm.
+void GraspSwitch::setFingersMerged(SimTK::State& state, bool merged) const {
+    const SimTK::SimbodyMatterSubsystem& matter = scene_.getModel().getMatter();
+    for (SimTK::MobilizedBodyIndex index : scene_.getFingerMobilizers()) {
+        const SimTK::MobilizedBody& mobod = matter.getMobilizedBody(index);
+        if (merged) {
+            mobod.lock(state, SimTK::Motion::Position);
+        } else {
+            mobod.unlock(state);
+        }
+    }
+}
+
+}  // namespace graspsim::simulation
