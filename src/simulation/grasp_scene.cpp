@@ -192,6 +192,17 @@ SimTK::State GraspScene::makeInitialState() {
     return state;
 }
 
+double GraspScene::findMaxFingertipGoalDistance(const SimTK::State& state) const {
+    getSystem().realize(state, SimTK::Stage::Position);
+    const SimTK::Transform& X_GO = object_.getBodyTransform(state);
+    double worst = 0;
+    for (std::size_t k = 0; k < goalEndEffectors_.size(); ++k) {
+        const SimTK::Vec3 p_GE = model_.findEndEffectorLocationInGround(state, goalEndEffectors_[k]);
+        worst = std::max(worst, (p_GE - X_GO * surfaceGoals_[k]).norm());
+    }
+    return worst;
+}
+
 void GraspScene::releaseObject(SimTK::State& state) const { object_.unlock(state); }
 
 }  // namespace graspsim::simulation

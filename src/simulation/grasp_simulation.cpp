@@ -181,15 +181,8 @@ void summarizeSwitch(const GraspScene& scene, const PhaseTimer& timer, Simulatio
 
 // Held: every goal's fingertip still within the tolerance of its goal point on the object.
 void summarizeGrip(const GraspScene& scene, const SimTK::State& s, SimulationSummary& summary) {
-    scene.getSystem().realize(s, SimTK::Stage::Position);
-    const SimTK::Transform& X_GO = scene.getObject().getBodyTransform(s);
-    double worst = 0;
-    for (std::size_t k = 0; k < scene.getGoalEndEffectors().size(); ++k) {
-        const SimTK::Vec3 p_GE = scene.getModel().findEndEffectorLocationInGround(s, scene.getGoalEndEffectors()[k]);
-        worst = std::max(worst, (p_GE - X_GO * scene.getSurfaceGoals()[k]).norm());
-    }
-    summary.maxFingertipGoalDistance = worst;
-    summary.held = summary.complete && worst <= scene.getScenario().simulation.heldTolerance;
+    summary.maxFingertipGoalDistance = scene.findMaxFingertipGoalDistance(s);
+    summary.held = summary.complete && summary.maxFingertipGoalDistance <= scene.getScenario().simulation.heldTolerance;
 }
 
 void summarizeDrift(const SimulationResult& result, SimulationSummary& summary) {

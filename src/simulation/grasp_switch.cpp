@@ -94,17 +94,6 @@ bool GraspSwitch::isFullContact(const SimTK::State& state) const {
     });
 }
 
-double GraspSwitch::findFingertipGoalDistance(const SimTK::State& state) const {
-    scene_.getSystem().realize(state, SimTK::Stage::Position);
-    const SimTK::Transform& X_GO = scene_.getObject().getBodyTransform(state);
-    double worst = 0;
-    for (std::size_t k = 0; k < scene_.getGoalEndEffectors().size(); ++k) {
-        const SimTK::Vec3 p_GE = scene_.getModel().findEndEffectorLocationInGround(state, scene_.getGoalEndEffectors()[k]);
-        worst = std::max(worst, (p_GE - X_GO * scene_.getSurfaceGoals()[k]).norm());
-    }
-    return worst;
-}
-
 void GraspSwitch::checkEngage(SimTK::State& state) const {
     if (!isFullContact(state)) return;
     const double q = calcQuality(state);
@@ -151,7 +140,7 @@ std::string GraspSwitch::describeRelease(const SimTK::State& state, double quali
     if (slide > options_.releaseSlideDistance) {
         return format("object slid %.6g m in the hand (limit %.6g m)", slide, options_.releaseSlideDistance);
     }
-    const double distance = findFingertipGoalDistance(state);
+    const double distance = scene_.findMaxFingertipGoalDistance(state);
     const double tolerance = scene_.getScenario().simulation.heldTolerance;
     if (distance > tolerance) return format("fingertip %.6g m from its goal (held tolerance %.6g m)", distance, tolerance);
     if (quality < qMinimum_) return format("Q < Q_M = %.6g N", qMinimum_);

@@ -69,6 +69,9 @@ public:
     const grasp::LimitedBushing& getBushing() const { return bushing_; }
     /// The grasp switch (owned by the System) in approx mode, nullptr in full mode.
     const GraspSwitch* getGraspSwitch() const { return switch_; }
+    /// Largest distance between a goal's fingertip and its goal point on the object's surface
+    /// (m): how far the object has left the hand. Realizes `state` to Stage::Position.
+    double findMaxFingertipGoalDistance(const SimTK::State& state) const;
     /// The perturbation of this run, or nullptr.
     const PerturbationForce* getPerturbation() const { return perturbation_.get(); }
 

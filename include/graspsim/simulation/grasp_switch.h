@@ -83,8 +83,6 @@ public:
     double calcQuality(const SimTK::State& state) const;
     /// Q of the contacts the pairs would produce if switched on (a scratch copy of `state`).
     double calcMonitoredQuality(const SimTK::State& state) const;
-    /// Largest distance of a goal fingertip from its goal on the object's surface (m).
-    double findFingertipGoalDistance(const SimTK::State& state) const;
 
 private:
     void checkEngage(SimTK::State& state) const;
