@@ -2,6 +2,8 @@
 
 #include "graspsim/error.h"
 
+#include <utility>
+
 namespace graspsim::contact {
 
 using SimTK::Array_;
@@ -9,6 +11,17 @@ using SimTK::ConstrainedBodyIndex;
 using SimTK::SpatialVec;
 using SimTK::Transform;
 using SimTK::Vec3;
+
+namespace {
+
+// The two friction directions; the velocity errors, their derivatives and the applied forces
+// must all use this one basis, or the friction multipliers would act along other directions.
+std::pair<Vec3, Vec3> findFrictionDirections(const SimTK::UnitVec3& n_F) {
+    const SimTK::UnitVec3 tx = n_F.perp();
+    return {Vec3(tx), n_F % tx};
+}
+
+}  // namespace
 
 RigidContactConstraint::RigidContactConstraint(SimTK::SimbodyMatterSubsystem& matter,
                                                const SimTK::MobilizedBody& bodyA,
@@ -106,8 +119,7 @@ void RigidContactConstraint::calcVelocityErrors(
     const SimTK::State& state, const Array_<SpatialVec, ConstrainedBodyIndex>& V_AB,
     const Array_<SimTK::Real, SimTK::ConstrainedUIndex>&, Array_<SimTK::Real>& verr) const {
     const RigidContactGeometry g = findGeometryFromState(state);
-    const SimTK::UnitVec3 tx = g.n_F.perp();
-    const Vec3 ty = g.n_F % tx;
+    const auto [tx, ty] = findFrictionDirections(g.n_F);
     const Vec3 v = findSlipVelocity(state, V_AB, g.p_F);
     verr[0] = ~tx * v;
     verr[1] = ~ty * v;
@@ -117,8 +129,7 @@ void RigidContactConstraint::calcVelocityDotErrors(
     const SimTK::State& state, const Array_<SpatialVec, ConstrainedBodyIndex>& A_AB,
     const Array_<SimTK::Real, SimTK::ConstrainedUIndex>&, Array_<SimTK::Real>& vaerr) const {
     const RigidContactGeometry g = findGeometryFromState(state);
-    const SimTK::UnitVec3 tx = g.n_F.perp();
-    const Vec3 ty = g.n_F % tx;
+    const auto [tx, ty] = findFrictionDirections(g.n_F);
     const Vec3 a = findRelativeAcceleration(state, A_AB, g.p_F);
     vaerr[0] = ~tx * a;
     vaerr[1] = ~ty * a;
@@ -129,9 +140,8 @@ void RigidContactConstraint::addInVelocityConstraintForces(
     Array_<SpatialVec, ConstrainedBodyIndex>& bodyForcesInA,
     Array_<SimTK::Real, SimTK::ConstrainedUIndex>&) const {
     const RigidContactGeometry g = findGeometryFromState(state);
-    const SimTK::UnitVec3 tx = g.n_F.perp();
-    const Vec3 ty = g.n_F % tx;
-    addInContactForce(state, g.p_F, multipliers[0] * Vec3(tx) + multipliers[1] * ty, bodyForcesInA);
+    const auto [tx, ty] = findFrictionDirections(g.n_F);
+    addInContactForce(state, g.p_F, multipliers[0] * tx + multipliers[1] * ty, bodyForcesInA);
 }
 
 }  // namespace graspsim::contact
