@@ -1,8 +1,10 @@
 // graspsim's command line: thin. Parse, call the library, map errors to exit codes:
-// 0 success, 2 bad input (one line on stderr), 3 numerical failure, 1 anything unexpected.
+// 0 success, 2 bad input (one line on stderr), 3 numerical failure, 4 a validation bound failed,
+// 1 anything unexpected.
 
 #include "model_command.h"
 #include "simulate_command.h"
+#include "validate_command.h"
 
 #include "graspsim/error.h"
 
@@ -16,10 +18,12 @@ int main(int argc, char** argv) {
     app.set_version_flag("--version", "graspsim 0.1.0");
     graspsim::cli::ModelCommand model(app);
     graspsim::cli::SimulateCommand simulate(app);
+    graspsim::cli::ValidateCommand validate(app);
     try {
         app.parse(argc, argv);
         if (simulate.parsed()) return simulate.run();
-        if (!model.parsed()) throw graspsim::InputError("a command is required: model or simulate (see graspsim --help)");
+        if (validate.parsed()) return validate.run();
+        if (!model.parsed()) throw graspsim::InputError("a command is required: model, simulate or validate (see graspsim --help)");
         return model.run();
     } catch (const CLI::ParseError& e) {
         // Help and version requests are "errors" with exit code 0: let CLI11 print the help of

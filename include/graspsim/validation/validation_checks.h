@@ -1,0 +1,58 @@
+#pragma once
+/// @file
+/// The bounds `graspsim validate` holds each run to, taken from the issues that defined them,
+/// and what one run measured against its full-contact reference.
+
+#include "graspsim/simulation/grasp_simulation.h"
+#include "graspsim/validation/trajectory_comparison.h"
+#include "graspsim/validation/validation_plan.h"
+
+#include <string>
+#include <vector>
+
+namespace graspsim::validation {
+
+/// Bound of the full-contact hold: drift of the object after settling, no perturbation (m).
+constexpr double kFullHoldDrift = 0.005;
+/// Bounds of the approximation against full contact, no perturbation, 2 s after engaging.
+constexpr double kApproxPositionError = 0.002;  ///< m
+constexpr double kApproxAngleError = 2.0 * 3.14159265358979323846 / 180.0;  ///< rad (2 degrees)
+constexpr double kApproxWindow = 2.0;           ///< s after engagement
+/// Bound of the long hold: drift after settling (m).
+constexpr double kLongHoldDrift = 0.001;
+/// Distance from the settled position that counts as the object slipping (m).
+constexpr double kSlipDistance = 0.002;
+
+/// What one run measured (and, for an approximation run, how it compares with its reference).
+struct RunRecord {
+    ValidationRun run;
+    simulation::SimulationSummary summary;
+    double slipOnset = -1;           ///< findSlipOnset() with kSlipDistance (s); -1 if none
+    bool hasReference = false;
+    PoseErrors errors;               ///< against the reference, from engagement (or settling) to the end
+    PoseErrors windowErrors;         ///< the same over the kApproxWindow after engagement
+    double referenceSlipOnset = -1;  ///< the reference's slip onset (s)
+    bool referenceHeld = false;
+    double referenceDisplacement = 0;  ///< the reference's object displacement after settling (m)
+};
+
+/// One bound checked on one run.
+struct ValidationCheck {
+    std::string run;     ///< run id
+    std::string name;    ///< what is checked, e.g. "position error vs full contact (max)"
+    double value = 0;    ///< measured, in `unit`
+    double bound = 0;    ///< limit, in `unit`
+    std::string unit;    ///< "mm", "deg", "s", "" (booleans: 1 = true)
+    std::string relation;  ///< "<=", ">=" or "=="
+    bool pass = false;
+    std::string source;  ///< where the bound comes from (issue and item)
+};
+
+/// Fills the comparison fields of `record` from its own and its reference's results.
+void compareWithReference(const simulation::SimulationResult& reference, const simulation::SimulationResult& candidate,
+                          RunRecord& record);
+
+/// The bounds that apply to `record` (see the constants above); empty if none applies.
+std::vector<ValidationCheck> checkRun(const RunRecord& record);
+
+}  // namespace graspsim::validation

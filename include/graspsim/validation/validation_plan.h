@@ -1,0 +1,45 @@
+#pragma once
+/// @file
+/// What `graspsim validate` runs: the thesis experiments x perturbations x contact models x
+/// modes, each approximation run paired with the full-contact run it is measured against.
+
+#include "graspsim/simulation/simulation_options.h"
+
+#include <string>
+#include <vector>
+
+namespace graspsim::validation {
+
+/// One simulation of the suite.
+struct ValidationRun {
+    std::string id;            ///< unique, also its folder under DIR/runs, e.g. "ball-clutch_f1_compliant_approx-bushing-merged"
+    std::string scenario;      ///< built-in scenario name
+    std::string variant;       ///< "full" or an approximation variant, e.g. "approx-bushing-merged"
+    simulation::SimulationOptions options;
+    std::string reference;     ///< id of the full-contact run it is compared with; empty for a full-contact run
+    /// The long hold of the reliability issue: an approximation run of several minutes checked
+    /// for finite states and drift, not compared with full contact.
+    bool longHold = false;
+};
+
+/// The suite's selection (the command line of `graspsim validate`).
+struct PlanOptions {
+    bool quick = false;                    ///< the reduced set run by ctest (label validation)
+    std::vector<std::string> experiments;  ///< scenario names; empty = both thesis experiments
+    std::vector<std::string> variants;     ///< "full" and approximation variants; empty = all available
+    double longHoldDuration = 600;         ///< simulated s of the long hold (full suite only; 0 = none)
+};
+
+/// The experiments of the thesis (chapter 5): "ball-clutch", "phone-pinch".
+const std::vector<std::string>& getThesisExperiments();
+/// Every variant this build can run: "full" first, then the approximation variants.
+const std::vector<std::string>& getAvailableVariants();
+
+/// The runs for `options`, references before the runs that compare against them.
+/// Quick: ball-clutch without perturbation, full vs every approximation variant, 2 s after settling.
+/// Full suite: every experiment x {none, its perturbations} x compliant contact x every variant,
+/// the scenario's whole duration, plus the long hold (ball-clutch, first approximation variant).
+/// @throws graspsim::InputError naming the option, the unknown value and the accepted ones.
+std::vector<ValidationRun> makeValidationPlan(const PlanOptions& options);
+
+}  // namespace graspsim::validation

@@ -1,0 +1,89 @@
+#include "validate_command.h"
+
+#include "number_option.h"
+
+#include "graspsim/error.h"
+#include "graspsim/validation/plot_script.h"
+#include "graspsim/validation/validation_report.h"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+namespace graspsim::cli {
+
+struct ValidateCommand::Options {
+    bool quick = false;
+    bool plots = true;
+    std::vector<std::string> experiments, modes;
+    std::string longHold;
+    std::string out = "out/validation";
+};
+
+ValidateCommand::ValidateCommand(CLI::App& app) : options_(std::make_shared<Options>()) {
+    Options& o = *options_;
+    command_ = app.add_subcommand("validate",
+                                  "Run the validation suite: full contact vs the approximation for the thesis experiments, "
+                                  "with report.md, results.csv, checks.csv and plots");
+    command_->add_flag("--quick", o.quick, "the reduced set (ball-clutch, no perturbation, 2 s after settling)");
+    command_->add_option("--experiment", o.experiments, "ball-clutch or phone-pinch (repeatable; default both)");
+    command_->add_option("--mode", o.modes, "full or an approximation variant, e.g. approx-bushing-merged (repeatable; default all)");
+    command_->add_option("--long-hold", o.longHold, "simulated seconds of the long approximation hold (default 600; 0 skips it)");
+    command_->add_flag("!--no-plots", o.plots, "skip the plots (no Python needed)");
+    command_->add_option("--out", o.out, "output folder (default out/validation)");
+}
+
+bool ValidateCommand::parsed() const { return command_->parsed(); }
+
+namespace {
+
+// Fails before any simulation when the folder cannot take files.
+void prepareFolder(const std::string& folder) {
+    std::error_code ec;
+    std::filesystem::create_directories(folder, ec);
+    const std::filesystem::path probe = std::filesystem::path(folder) / ".graspsim-write-test";
+    std::ofstream test(probe);
+    const bool writable = !ec && test.good();
+    test.close();
+    std::filesystem::remove(probe, ec);
+    if (!writable) throw InputError("--out: folder '" + folder + "' cannot be created or written");
+}
+
+void printProgress(std::size_t index, std::size_t count, const validation::ValidationRun& run) {
+    std::cerr << "[" << index + 1 << "/" << count << "] " << run.id << (::isatty(STDERR_FILENO) ? "\r" : "\n") << std::flush;
+}
+
+}  // namespace
+
+int ValidateCommand::run() const {
+    const Options& o = *options_;
+    validation::PlanOptions plan{o.quick, o.experiments, o.modes};
+    if (!o.longHold.empty()) {
+        plan.longHoldDuration = parseNumber(o.longHold, "--long-hold", "a number of seconds >= 0");
+        if (!(plan.longHoldDuration >= 0) || !std::isfinite(plan.longHoldDuration)) {
+            throw InputError("--long-hold: value " + o.longHold + " is not accepted; use a number of seconds >= 0");
+        }
+    }
+    const std::vector<validation::ValidationRun> runs = validation::makeValidationPlan(plan);
+    prepareFolder(o.out);
+    const validation::ValidationResults results = validation::runValidation(runs, o.out, printProgress);
+    // The tables first, so that a plotting failure still leaves the numbers.
+    validation::writeValidationReport(o.out, results, {});
+    const std::vector<std::string> plots = o.plots ? validation::runPlotScript(o.out) : std::vector<std::string>{};
+    validation::writeValidationReport(o.out, results, plots);
+    std::size_t failed = 0;
+    for (const validation::ValidationCheck& c : results.checks) {
+        if (c.pass) continue;
+        ++failed;
+        std::cerr << "FAIL " << c.run << ": " << c.name << " = " << c.value << " " << c.unit << " (bound " << c.relation << " "
+                  << c.bound << ")\n";
+    }
+    std::cout << "validation: " << results.runs.size() << " runs, " << results.checks.size() << " checks, " << failed
+              << " failed, " << plots.size() << " plots; report in " << o.out << "/report.md\n";
+    return failed == 0 ? 0 : 4;
+}
+
+}  // namespace graspsim::cli

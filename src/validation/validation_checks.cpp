@@ -1,0 +1,76 @@
+#include "graspsim/validation/validation_checks.h"
+
+#include <algorithm>
+
+namespace graspsim::validation {
+
+namespace {
+
+constexpr double kMm = 1000;                               // m -> mm, for the report only
+constexpr double kDeg = 180.0 / 3.14159265358979323846;    // rad -> degree, for the report only
+
+ValidationCheck makeCheck(const RunRecord& r, std::string name, double value, const std::string& relation, double bound,
+                          std::string unit, std::string source) {
+    bool pass = false;
+    if (relation == "<=") pass = value <= bound;
+    if (relation == ">=") pass = value >= bound;
+    if (relation == "==") pass = value == bound;
+    return {r.run.id, std::move(name), value, bound, std::move(unit), relation, pass, std::move(source)};
+}
+
+void checkFullRun(const RunRecord& r, std::vector<ValidationCheck>& checks) {
+    checks.push_back(makeCheck(r, "run complete", r.summary.complete ? 1 : 0, "==", 1, "", "issue 3, bad input / divergence"));
+    if (r.run.options.perturbation != "none") return;
+    checks.push_back(makeCheck(r, "held without perturbation", r.summary.held ? 1 : 0, "==", 1, "", "issue 3, must show 1"));
+    checks.push_back(makeCheck(r, "drift after settling", r.summary.objectDisplacement * kMm, "<=", kFullHoldDrift * kMm,
+                               "mm", "issue 3, must show 1"));
+}
+
+void checkApproxRun(const RunRecord& r, std::vector<ValidationCheck>& checks) {
+    const simulation::SimulationSummary& s = r.summary;
+    checks.push_back(makeCheck(r, "run complete", s.complete ? 1 : 0, "==", 1, "", "issue 4"));
+    checks.push_back(makeCheck(r, "engaged after the grasp settled", s.engaged && s.engageTime >= s.settleTime - 1e-9 ? 1 : 0,
+                               "==", 1, "", "issue 4, must show 3"));
+    checks.push_back(makeCheck(r, "hold/slide verdict equals full contact's", s.held == r.referenceHeld ? 1 : 0, "==", 1, "",
+                               "issue 4, must show 3"));
+    if (r.run.options.perturbation != "none" || !s.engaged) return;
+    checks.push_back(makeCheck(r, "position error vs full contact, 2 s after engaging (max)", r.windowErrors.maxPosition * kMm,
+                               "<=", kApproxPositionError * kMm, "mm", "issue 4, must show 3"));
+    checks.push_back(makeCheck(r, "orientation error vs full contact, 2 s after engaging (max)", r.windowErrors.maxAngle * kDeg,
+                               "<=", kApproxAngleError * kDeg, "deg", "issue 4, must show 3"));
+}
+
+void checkLongHold(const RunRecord& r, std::vector<ValidationCheck>& checks) {
+    checks.push_back(makeCheck(r, "long hold complete (no NaN, no step collapse)", r.summary.complete ? 1 : 0, "==", 1, "",
+                               "issue 6, item 4"));
+    checks.push_back(makeCheck(r, "long hold drift after settling", r.summary.objectDisplacement * kMm, "<=",
+                               kLongHoldDrift * kMm, "mm", "issue 6, item 4"));
+}
+
+}  // namespace
+
+void compareWithReference(const simulation::SimulationResult& reference, const simulation::SimulationResult& candidate,
+                          RunRecord& record) {
+    const simulation::SimulationSummary& s = candidate.summary;
+    const double from = s.engaged ? s.engageTime : s.settleTime;
+    record.hasReference = true;
+    record.errors = comparePoses(reference.trajectory, candidate.trajectory, from, s.simTime);
+    record.windowErrors = comparePoses(reference.trajectory, candidate.trajectory, from, from + kApproxWindow);
+    record.referenceSlipOnset = findSlipOnset(reference.trajectory, reference.summary.settleTime, kSlipDistance);
+    record.referenceHeld = reference.summary.held;
+    record.referenceDisplacement = reference.summary.objectDisplacement;
+}
+
+std::vector<ValidationCheck> checkRun(const RunRecord& record) {
+    std::vector<ValidationCheck> checks;
+    if (record.run.longHold) {
+        checkLongHold(record, checks);
+    } else if (record.run.reference.empty()) {
+        checkFullRun(record, checks);
+    } else {
+        checkApproxRun(record, checks);
+    }
+    return checks;
+}
+
+}  // namespace graspsim::validation

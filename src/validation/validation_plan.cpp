@@ -1,0 +1,86 @@
+#include "graspsim/validation/validation_plan.h"
+
+#include "graspsim/error.h"
+#include "graspsim/scenario/scenario_file.h"
+
+#include <algorithm>
+
+namespace graspsim::validation {
+
+namespace {
+
+std::string joinNames(const std::vector<std::string>& names) {
+    std::string text;
+    for (const std::string& n : names) text += (text.empty() ? "" : ", ") + n;
+    return text;
+}
+
+void checkKnown(const std::vector<std::string>& given, const std::vector<std::string>& known, const std::string& option) {
+    for (const std::string& g : given) {
+        if (std::find(known.begin(), known.end(), g) == known.end()) {
+            throw InputError(option + ": '" + g + "' is not accepted; use one of " + joinNames(known));
+        }
+    }
+}
+
+simulation::SimulationOptions makeOptions(const std::string& variant, const std::string& perturbation, double duration) {
+    simulation::SimulationOptions options;
+    options.contact = simulation::ContactModel::Compliant;
+    options.mode = variant == "full" ? simulation::SimulationMode::Full : simulation::SimulationMode::Approx;
+    options.perturbation = perturbation;
+    options.duration = duration;
+    return options;
+}
+
+// The perturbations to run: none, then the scenario's own, in file order.
+std::vector<std::string> findPerturbations(const scenario::Scenario& s, bool quick) {
+    std::vector<std::string> names{"none"};
+    if (quick) return names;
+    for (const scenario::Perturbation& p : s.perturbations) names.push_back(p.name);
+    return names;
+}
+
+}  // namespace
+
+const std::vector<std::string>& getThesisExperiments() {
+    static const std::vector<std::string> names{"ball-clutch", "phone-pinch"};
+    return names;
+}
+
+const std::vector<std::string>& getAvailableVariants() {
+    static const std::vector<std::string> names{"full", "approx-bushing-merged"};
+    return names;
+}
+
+std::vector<ValidationRun> makeValidationPlan(const PlanOptions& options) {
+    checkKnown(options.experiments, getThesisExperiments(), "--experiment");
+    checkKnown(options.variants, getAvailableVariants(), "--mode");
+    std::vector<std::string> experiments = options.experiments.empty() ? getThesisExperiments() : options.experiments;
+    if (options.quick && options.experiments.empty()) experiments = {"ball-clutch"};
+    const std::vector<std::string>& variants = options.variants.empty() ? getAvailableVariants() : options.variants;
+    std::vector<ValidationRun> runs;
+    for (const std::string& experiment : experiments) {
+        const scenario::Scenario s = scenario::findBuiltinScenario(experiment);
+        // Quick: 2 s after settling, the window of the 2-mm/2-degree bound.
+        const double duration = options.quick ? s.simulation.settleTime + 2.0 : s.simulation.duration;
+        for (const std::string& perturbation : findPerturbations(s, options.quick)) {
+            const std::string stem = experiment + "_" + perturbation + "_compliant_";
+            // Every comparison needs its full-contact reference, whether or not "full" was asked for.
+            runs.push_back({stem + "full", experiment, "full", makeOptions("full", perturbation, duration), ""});
+            for (const std::string& variant : variants) {
+                if (variant == "full") continue;
+                runs.push_back({stem + variant, experiment, variant, makeOptions(variant, perturbation, duration), stem + "full"});
+            }
+        }
+    }
+    const auto approx = std::find_if(variants.begin(), variants.end(), [](const std::string& v) { return v != "full"; });
+    if (!options.quick && options.longHoldDuration > 0 && approx != variants.end()) {
+        const std::string experiment = experiments.front();
+        ValidationRun hold{experiment + "_none_compliant_" + *approx + "_long-hold", experiment, *approx,
+                           makeOptions(*approx, "none", options.longHoldDuration), "", true};
+        runs.push_back(hold);
+    }
+    return runs;
+}
+
+}  // namespace graspsim::validation

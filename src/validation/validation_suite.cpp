@@ -1,0 +1,56 @@
+#include "graspsim/validation/validation_suite.h"
+
+#include "graspsim/error.h"
+#include "graspsim/results/result_files.h"
+#include "graspsim/scenario/scenario_file.h"
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <map>
+
+namespace graspsim::validation {
+
+bool ValidationResults::passed() const {
+    return std::all_of(checks.begin(), checks.end(), [](const ValidationCheck& c) { return c.pass; });
+}
+
+namespace {
+
+void writeRunFiles(const std::string& folder, const ValidationRun& run, const simulation::SimulationResult& result) {
+    const std::filesystem::path dir = std::filesystem::path(folder) / "runs" / run.id;
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec) throw InputError(dir.string() + ": cannot be created (" + ec.message() + ")");
+    results::writeResultFiles(dir.string(), result);
+}
+
+}  // namespace
+
+ValidationResults runValidation(const std::vector<ValidationRun>& plan, const std::string& folder,
+                                const ValidationProgress& progress) {
+    const auto start = std::chrono::steady_clock::now();
+    ValidationResults results;
+    // Full-contact results are kept only until the runs compared with them are done.
+    std::map<std::string, simulation::SimulationResult> references;
+    for (std::size_t k = 0; k < plan.size(); ++k) {
+        const ValidationRun& run = plan[k];
+        if (progress) progress(k, plan.size(), run);
+        const scenario::Scenario s = scenario::findBuiltinScenario(run.scenario);
+        simulation::SimulationResult result = simulation::runGraspSimulation(s, run.options);
+        writeRunFiles(folder, run, result);
+        RunRecord record;
+        record.run = run;
+        record.summary = result.summary;
+        record.slipOnset = findSlipOnset(result.trajectory, result.summary.settleTime, kSlipDistance);
+        const auto reference = references.find(run.reference);
+        if (reference != references.end()) compareWithReference(reference->second, result, record);
+        for (ValidationCheck& c : checkRun(record)) results.checks.push_back(std::move(c));
+        results.runs.push_back(std::move(record));
+        if (run.reference.empty() && !run.longHold) references[run.id] = std::move(result);
+    }
+    results.wallTime = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return results;
+}
+
+}  // namespace graspsim::validation

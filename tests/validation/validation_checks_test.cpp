@@ -1,0 +1,71 @@
+// The bounds: a record just inside passes, just outside fails, and each kind of run gets its
+// own checks.
+
+#include "graspsim/validation/validation_checks.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+using namespace graspsim;
+
+namespace {
+
+validation::RunRecord makeApproxRecord(double windowError) {
+    validation::RunRecord r;
+    r.run.id = "ball-clutch_none_compliant_approx-bushing-merged";
+    r.run.reference = "ball-clutch_none_compliant_full";
+    r.run.options.perturbation = "none";
+    r.summary.complete = true;
+    r.summary.engaged = true;
+    r.summary.settleTime = 1.0;
+    r.summary.engageTime = 1.0;
+    r.summary.held = true;
+    r.referenceHeld = true;
+    r.hasReference = true;
+    r.windowErrors.maxPosition = windowError;
+    return r;
+}
+
+const validation::ValidationCheck& findCheck(const std::vector<validation::ValidationCheck>& checks, const std::string& start) {
+    const auto it = std::find_if(checks.begin(), checks.end(), [&](const auto& c) { return c.name.rfind(start, 0) == 0; });
+    if (it == checks.end()) throw std::runtime_error("no check " + start);
+    return *it;
+}
+
+}  // namespace
+
+TEST(ValidationChecks, PositionErrorBoundIsTwoMillimetres) {
+    EXPECT_TRUE(findCheck(validation::checkRun(makeApproxRecord(0.00199)), "position error").pass);
+    EXPECT_FALSE(findCheck(validation::checkRun(makeApproxRecord(0.00201)), "position error").pass);
+}
+
+TEST(ValidationChecks, VerdictMismatchFails) {
+    validation::RunRecord r = makeApproxRecord(0);
+    r.run.options.perturbation = "f1";
+    r.summary.held = true;
+    r.referenceHeld = false;
+    const auto checks = validation::checkRun(r);
+    EXPECT_FALSE(findCheck(checks, "hold/slide verdict").pass);
+    // Under a perturbation the trajectories may legitimately differ: no pose-error bound.
+    EXPECT_THROW(findCheck(checks, "position error"), std::runtime_error);
+}
+
+TEST(ValidationChecks, EngagingBeforeSettlingFails) {
+    validation::RunRecord r = makeApproxRecord(0);
+    r.summary.engageTime = 0.9;
+    EXPECT_FALSE(findCheck(validation::checkRun(r), "engaged after").pass);
+}
+
+TEST(ValidationChecks, FullRunHoldAndLongHoldDrift) {
+    validation::RunRecord full;
+    full.run.options.perturbation = "none";
+    full.summary.complete = full.summary.held = true;
+    full.summary.objectDisplacement = 0.006;
+    EXPECT_FALSE(findCheck(validation::checkRun(full), "drift after settling").pass);
+    full.summary.objectDisplacement = 0.004;
+    EXPECT_TRUE(findCheck(validation::checkRun(full), "drift after settling").pass);
+    validation::RunRecord hold = full;
+    hold.run.longHold = true;
+    EXPECT_FALSE(findCheck(validation::checkRun(hold), "long hold drift").pass);  // 4 mm > 1 mm
+}

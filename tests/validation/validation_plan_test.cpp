@@ -1,0 +1,71 @@
+// The suite's plan: every approximation run follows the full-contact run it is compared with,
+// and unknown names are rejected naming the option.
+
+#include "graspsim/validation/validation_plan.h"
+
+#include "graspsim/error.h"
+#include "graspsim/scenario/scenario_file.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+using namespace graspsim;
+
+TEST(ValidationPlan, FullSuiteCoversEveryExperimentPerturbationAndVariantWithReferencesFirst) {
+    const std::vector<validation::ValidationRun> runs = validation::makeValidationPlan({});
+    std::size_t expected = 0;
+    for (const std::string& e : validation::getThesisExperiments()) {
+        expected += (1 + scenario::findBuiltinScenario(e).perturbations.size()) * validation::getAvailableVariants().size();
+    }
+    ASSERT_EQ(runs.size(), expected + 1);  // + the long hold
+    std::set<std::string> seen;
+    for (const validation::ValidationRun& r : runs) {
+        EXPECT_TRUE(seen.insert(r.id).second) << "duplicate id " << r.id;
+        if (!r.reference.empty()) {
+            EXPECT_TRUE(seen.count(r.reference)) << r.id << " before its reference";
+        }
+        EXPECT_EQ(r.options.mode == simulation::SimulationMode::Full, r.variant == "full") << r.id;
+    }
+    EXPECT_TRUE(runs.back().longHold);
+    EXPECT_EQ(runs.back().options.duration, 600);
+}
+
+TEST(ValidationPlan, QuickIsBallClutchWithoutPerturbationTwoSecondsAfterSettling) {
+    validation::PlanOptions options;
+    options.quick = true;
+    const std::vector<validation::ValidationRun> runs = validation::makeValidationPlan(options);
+    ASSERT_EQ(runs.size(), validation::getAvailableVariants().size());
+    const double settle = scenario::findBuiltinScenario("ball-clutch").simulation.settleTime;
+    for (const validation::ValidationRun& r : runs) {
+        EXPECT_EQ(r.scenario, "ball-clutch");
+        EXPECT_EQ(r.options.perturbation, "none");
+        EXPECT_DOUBLE_EQ(r.options.duration, settle + 2.0);
+        EXPECT_FALSE(r.longHold);
+    }
+}
+
+TEST(ValidationPlan, ApproximationOnlyStillRunsItsReference) {
+    validation::PlanOptions options;
+    options.experiments = {"phone-pinch"};
+    options.variants = {"approx-bushing-merged"};
+    options.longHoldDuration = 0;
+    const std::vector<validation::ValidationRun> runs = validation::makeValidationPlan(options);
+    ASSERT_EQ(runs.size(), 2 * (1 + scenario::findBuiltinScenario("phone-pinch").perturbations.size()));
+    EXPECT_EQ(runs[0].variant, "full");
+    EXPECT_EQ(runs[1].reference, runs[0].id);
+}
+
+TEST(ValidationPlan, UnknownNamesAreRejectedNamingTheOption) {
+    validation::PlanOptions options;
+    options.experiments = {"mug-grasp"};
+    try {
+        validation::makeValidationPlan(options);
+        FAIL() << "accepted an unknown experiment";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("--experiment: 'mug-grasp'"), std::string::npos) << e.what();
+    }
+    options.experiments.clear();
+    options.variants = {"approx-glue"};
+    EXPECT_THROW(validation::makeValidationPlan(options), InputError);
+}
