@@ -2,6 +2,7 @@
 // 0 success, 2 bad input (one line on stderr), 3 numerical failure, 4 a validation bound failed,
 // 1 anything unexpected.
 
+#include "bench_command.h"
 #include "model_command.h"
 #include "simulate_command.h"
 #include "validate_command.h"
@@ -19,11 +20,13 @@ int main(int argc, char** argv) {
     graspsim::cli::ModelCommand model(app);
     graspsim::cli::SimulateCommand simulate(app);
     graspsim::cli::ValidateCommand validate(app);
+    graspsim::cli::BenchCommand bench(app);
     try {
         app.parse(argc, argv);
         if (simulate.parsed()) return simulate.run();
         if (validate.parsed()) return validate.run();
-        if (!model.parsed()) throw graspsim::InputError("a command is required: model, simulate or validate (see graspsim --help)");
+        if (bench.parsed()) return bench.run();
+        if (!model.parsed()) throw graspsim::InputError("a command is required: model, simulate, validate or bench (see graspsim --help)");
         return model.run();
     } catch (const CLI::ParseError& e) {
         // Help and version requests are "errors" with exit code 0: let CLI11 print the help of

@@ -120,7 +120,8 @@ private:
 
 // Steps from sample to sample, releasing the object on time; `lastEvent` says what happened last.
 void stepThroughSamples(const GraspScene& scene, SimTK::TimeStepper& stepper, Recorder& recorder, PhaseTimer& phases,
-                        double duration, const ProgressCallback& progress, std::string& lastEvent) {
+                        double duration, const ProgressCallback& progress, const SampleObserver& observer,
+                        std::string& lastEvent) {
     const SimTK::Integrator& integrator = stepper.getIntegrator();
     for (double t : makeSampleTimes(scene, duration)) {
         stepper.stepTo(t);
@@ -134,6 +135,7 @@ void stepThroughSamples(const GraspScene& scene, SimTK::TimeStepper& stepper, Re
             lastEvent = "object released at t = " + std::to_string(t) + " s";
         }
         recorder.record(stepper.getState());
+        if (observer) observer(scene, stepper.getState());
         if (progress) progress(t, duration);
     }
 }
@@ -195,7 +197,7 @@ void summarizeDrift(const SimulationResult& result, SimulationSummary& summary) 
 }  // namespace
 
 SimulationResult runGraspSimulation(const scenario::Scenario& scenario, const SimulationOptions& options,
-                                    const ProgressCallback& progress) {
+                                    const ProgressCallback& progress, const SampleObserver& observer) {
     const double duration = options.duration > 0 ? options.duration : scenario.simulation.duration;
     GraspScene scene(scenario, options);
     SimulationResult result;
@@ -214,7 +216,7 @@ SimulationResult runGraspSimulation(const scenario::Scenario& scenario, const Si
     const auto start = Clock::now();
     const double ikBefore = scene.getIkTiming().totalSeconds;
     try {
-        stepThroughSamples(scene, stepper, recorder, phases, duration, progress, lastEvent);
+        stepThroughSamples(scene, stepper, recorder, phases, duration, progress, observer, lastEvent);
         summary.complete = true;
     } catch (const NumericalError& e) {
         summary.failure = e.what();

@@ -26,3 +26,11 @@ TEST_F(ValidateCommand, RejectsUnknownNamesAndUnwritableFoldersBeforeSimulating)
     EXPECT_EQ(r.exitCode, 2) << r.err;
     EXPECT_NE(r.err.find("--out"), std::string::npos) << r.err;
 }
+
+TEST_F(ValidateCommand, BenchRejectsADurationTooShortToEngage) {
+    const RunResult r = run("bench --duration 1");
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find("--duration: value 1"), std::string::npos) << r.err;
+    EXPECT_TRUE(r.out.empty()) << r.out;
+}

@@ -80,12 +80,17 @@ struct SimulationResult {
 /// Called after each output sample with the simulated time reached (s).
 using ProgressCallback = std::function<void(double time, double duration)>;
 
+class GraspScene;
+/// Called after each output sample with the scene and its state there (realized to Velocity at
+/// least), e.g. to measure the cost of the dynamics in that state. Must not change the scene.
+using SampleObserver = std::function<void(const GraspScene& scene, const SimTK::State& state)>;
+
 /// Runs the scenario with Simbody's implicit CPodes (BDF) integrator at the scenario's accuracy,
 /// sampling every output interval, at the perturbation's start and end, and at the object's
 /// release. A numerical failure (a non-finite state, an integrator that cannot step) ends the
 /// run early: the result keeps every sample so far and summary.complete is false.
 /// @throws graspsim::InputError for options the scenario cannot take (before simulating).
 SimulationResult runGraspSimulation(const scenario::Scenario& scenario, const SimulationOptions& options,
-                                    const ProgressCallback& progress = {});
+                                    const ProgressCallback& progress = {}, const SampleObserver& observer = {});
 
 }  // namespace graspsim::simulation

@@ -1,0 +1,64 @@
+#pragma once
+/// @file
+/// The thesis's Table 5.1 measured on this machine (`graspsim bench`): what one step of full
+/// contact costs (IK and dynamics apart), what the engaged approximation costs, the floor
+/// (same model, no object, no contact), and how full contact grows with the end-effectors.
+///
+/// Two kinds of figures, both from one run each, measured in the same process:
+///  - per integrator step and per simulated second, from the phases of a simulation
+///    (SimulationSummary: full-contact phase vs first engagement). The variable-step integrator
+///    takes longer steps once contact is gone, so per simulated second is the fair whole-run
+///    comparison;
+///  - per dynamics evaluation (one realization of the system to Stage::Acceleration from
+///    Stage::Time, i.e. one right-hand side of the ODE, what every integrator step pays at
+///    least once): in the full-contact state just before the approximation engages, in the
+///    engaged state, and in that engaged state with the object locked in place and the
+///    bushing off (the floor: the same arm and merged hand with no object dynamics and no
+///    contact). This is the thesis's "time to solve the contacts of one step".
+
+#include <string>
+#include <vector>
+
+namespace graspsim::validation {
+
+/// The figures of one experiment.
+struct ExperimentCost {
+    std::string scenario;
+    // Full-contact run (IK every ik_interval, all contacts), per integrator step (µs).
+    double fullStepUs = 0;
+    double fullIkUsPerStep = 0;
+    double fullDynamicsUsPerStep = 0;
+    double fullWallPerSimSecond = 0;     ///< wall s per simulated s, after the object's release
+    // Approximation run, first engagement (µs per step; wall s per simulated s).
+    double approxStepUs = 0;
+    double approxWallPerSimSecond = 0;
+    double engageTime = -1;              ///< s; < 0 if it never engaged (then no approx figures)
+    // One dynamics evaluation (µs).
+    double fullRealizeUs = 0;            ///< full contact, just before engaging
+    double engagedRealizeUs = 0;         ///< engaged
+    double floorRealizeUs = 0;           ///< engaged state, object locked, bushing off
+};
+
+/// Full-contact cost with `endEffectors` fingertip goals (thumb first, then index, middle, ...).
+struct EndEffectorCost {
+    int endEffectors = 0;
+    double stepUs = 0, ikUsPerStep = 0, dynamicsUsPerStep = 0;
+    double realizeUs = 0;                ///< one dynamics evaluation at the end of the run (µs)
+};
+
+struct CostTable {
+    std::vector<ExperimentCost> experiments;
+    std::vector<EndEffectorCost> scaling;  ///< ball-clutch with 2 .. 5 fingertip goals
+    double wallTime = 0;                   ///< s, the whole measurement
+};
+
+/// Measures the table. `duration`: simulated s of each run (>= the settle time + 0.5 s so that
+/// the approximation has engaged for a while); `realizations`: dynamics evaluations per timing.
+CostTable measureCostTable(double duration = 2.0, int realizations = 400);
+
+/// The table as text, with the thesis's Table 5.1 figures beside ours.
+std::string formatCostTable(const CostTable& table);
+/// The table as JSON (field names as in the structs, snake_case, units in the names).
+std::string formatCostTableJson(const CostTable& table);
+
+}  // namespace graspsim::validation
