@@ -2,6 +2,7 @@
 
 #include "graspsim/error.h"
 #include "graspsim/results/result_files.h"
+#include "graspsim/validation/analytic_cases.h"
 #include "graspsim/scenario/scenario_file.h"
 
 #include <algorithm>
@@ -49,6 +50,7 @@ ValidationResults runValidation(const std::vector<ValidationRun>& plan, const st
         results.runs.push_back(std::move(record));
         if (run.reference.empty() && !run.longHold) references[run.id] = std::move(result);
     }
+    for (ValidationCheck& c : runAnalyticCases()) results.checks.push_back(std::move(c));
     results.wallTime = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return results;
 }
