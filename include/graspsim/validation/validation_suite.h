@@ -27,7 +27,8 @@ struct ValidationResults {
 /// Called before each run with its index (from 0), the number of runs and the run.
 using ValidationProgress = std::function<void(std::size_t index, std::size_t count, const ValidationRun& run)>;
 
-/// Runs `plan` (from makeValidationPlan()) and writes every run's files under `folder`/runs.
+/// Runs `plan` (from makeValidationPlan()), then the analytic cases (analytic_cases.h), and
+/// writes every run's files under `folder`/runs.
 /// The folder must exist and be writable. A run that stops early is kept (its checks fail).
 /// @throws graspsim::InputError when a file cannot be written.
 ValidationResults runValidation(const std::vector<ValidationRun>& plan, const std::string& folder,
