@@ -23,6 +23,7 @@ struct SimulateCommand::Options {
     std::string mode = "full";
     std::string perturbation = "none";
     std::string duration;
+    std::string integrator = "simbody";
     std::string qThreshold, qMinimum;
     std::string out = "out";
 };
@@ -35,6 +36,8 @@ SimulateCommand::SimulateCommand(CLI::App& app) : options_(std::make_shared<Opti
     command_->add_option("--mode", o.mode, "full (default) or approx");
     command_->add_option("--perturbation", o.perturbation, "none (default) or a perturbation of the scenario (f1, f2)");
     command_->add_option("--duration", o.duration, "simulated time in s (default: the scenario's)");
+    command_->add_option("--integrator", o.integrator,
+                         "simbody (default: Simbody's CPodes BDF) or cvode (the SUNDIALS CVODE BDF reference)");
     command_->add_option("--q-threshold", o.qThreshold, "approx: grasp quality Q_Th (N) to engage (default: 0.8 x the settled grasp's)");
     command_->add_option("--q-minimum", o.qMinimum, "approx: grasp quality Q_M (N) below which to release (default: 0.5 x Q_Th)");
     command_->add_option("--out", o.out,
@@ -103,6 +106,7 @@ int SimulateCommand::run() const {
     const Options& o = *options_;
     const scenario::Scenario scenario = scenario::loadScenario(o.scenario);
     simulation::SimulationOptions options = parseOptions(o.contact, o.mode, o.perturbation, o.duration, scenario);
+    options.integrator = simulation::parseIntegratorChoice(o.integrator, "--integrator");
     options.approx.qThreshold = parseQuality(o.qThreshold, "--q-threshold");
     options.approx.qMinimum = parseQuality(o.qMinimum, "--q-minimum");
     if (options.approx.qThreshold > 0 && options.approx.qMinimum > options.approx.qThreshold) {

@@ -62,6 +62,27 @@ std::string formatContactsCsv(const simulation::SimulationResult& result) {
     return out.str();
 }
 
+namespace {
+
+// The integrator's own counts; -1 where it does not report one.
+nlohmann::ordered_json formatIntegratorStatistics(const integration::IntegrationStatistics& s) {
+    nlohmann::ordered_json j;
+    j["steps"] = s.steps;
+    j["rhs_evaluations"] = s.rhsEvaluations;
+    j["jacobian_evaluations"] = s.jacobianEvaluations;
+    j["linear_solver_setups"] = s.linearSolverSetups;
+    j["error_test_failures"] = s.errorTestFailures;
+    j["convergence_failures"] = s.convergenceFailures;
+    j["projections"] = s.projections;
+    j["root_evaluations"] = s.rootEvaluations;
+    j["triggered_events"] = s.triggeredEvents;
+    j["scheduled_events"] = s.scheduledEvents;
+    j["restarts"] = s.restarts;
+    return j;
+}
+
+}  // namespace
+
 std::string formatSummaryJson(const simulation::SimulationSummary& s) {
     nlohmann::ordered_json j;
     j["scenario"] = s.scenario;
@@ -86,6 +107,8 @@ std::string formatSummaryJson(const simulation::SimulationSummary& s) {
     j["full_step_us"] = s.fullStepUs;
     j["full_steps"] = s.fullSteps;
     j["full_wall_s_per_sim_s"] = s.fullWallPerSimSecond;
+    j["integrator"] = s.integrator;
+    j["integrator_statistics"] = formatIntegratorStatistics(s.integratorStatistics);
     if (s.mode != "approx") return j.dump(2) + "\n";
     j["engaged"] = s.engaged;
     j["engage_time_s"] = s.engaged ? nlohmann::ordered_json(s.engageTime) : nlohmann::ordered_json(nullptr);

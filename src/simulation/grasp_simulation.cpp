@@ -1,12 +1,15 @@
 #include "graspsim/simulation/grasp_simulation.h"
 
 #include "graspsim/error.h"
+#include "graspsim/integration/cvode_integrator.h"
+#include "graspsim/integration/simbody_stepper.h"
 #include "graspsim/simulation/contact_grasp_quality.h"
 #include "graspsim/simulation/grasp_scene.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <set>
 
 namespace graspsim::simulation {
@@ -119,25 +122,37 @@ private:
 };
 
 // Steps from sample to sample, releasing the object on time; `lastEvent` says what happened last.
-void stepThroughSamples(const GraspScene& scene, SimTK::TimeStepper& stepper, Recorder& recorder, PhaseTimer& phases,
+void stepThroughSamples(const GraspScene& scene, integration::Stepper& stepper, Recorder& recorder, PhaseTimer& phases,
                         double duration, const ProgressCallback& progress, const SampleObserver& observer,
                         std::string& lastEvent) {
-    const SimTK::Integrator& integrator = stepper.getIntegrator();
     for (double t : makeSampleTimes(scene, duration)) {
         stepper.stepTo(t);
         checkFinite(stepper.getState(), lastEvent);
-        phases.mark(stepper.getState(), integrator.getNumStepsTaken());
+        phases.mark(stepper.getState(), stepper.getNumStepsTaken());
         if (std::abs(t - scene.getReleaseTime()) < 1e-12) {
             SimTK::State released = stepper.getState();
             scene.releaseObject(released);
             stepper.initialize(released);  // a lock change is an Instance-stage change
-            phases.rebase(stepper.getState(), integrator.getNumStepsTaken());  // initialize() restarts the count
+            phases.rebase(stepper.getState(), stepper.getNumStepsTaken());  // initialize() restarts the count
             lastEvent = "object released at t = " + std::to_string(t) + " s";
         }
         recorder.record(stepper.getState());
         if (observer) observer(scene, stepper.getState());
         if (progress) progress(t, duration);
     }
+}
+
+// The accuracy is a relative tolerance for both; CVODE takes its atol and constraint tolerance
+// from it as Simbody's integrators do (cvode_integrator.h).
+std::unique_ptr<integration::Stepper> makeStepper(const SimTK::System& system, const SimulationOptions& options,
+                                                  double scenarioAccuracy) {
+    const double accuracy = options.accuracy > 0 ? options.accuracy : scenarioAccuracy;
+    if (options.integrator == IntegratorChoice::SimbodyCpodes) {
+        return std::make_unique<integration::SimbodyCpodesStepper>(system, accuracy);
+    }
+    integration::CvodeOptions cvode;
+    cvode.relativeTolerance = accuracy;
+    return std::make_unique<integration::CvodeIntegrator>(system, cvode);
 }
 
 SimulationSummary makeSummaryHeader(const scenario::Scenario& scenario, const SimulationOptions& options, double duration) {
@@ -205,9 +220,8 @@ SimulationResult runGraspSimulation(const scenario::Scenario& scenario, const Si
     summary = makeSummaryHeader(scenario, options, duration);
     Recorder recorder(scene, result);
 
-    SimTK::CPodesIntegrator integrator(scene.getSystem(), SimTK::CPodes::BDF, SimTK::CPodes::Newton);
-    integrator.setAccuracy(scenario.simulation.accuracy);
-    SimTK::TimeStepper stepper(scene.getSystem(), integrator);
+    const std::unique_ptr<integration::Stepper> stepperOwner = makeStepper(scene.getSystem(), options, scenario.simulation.accuracy);
+    integration::Stepper& stepper = *stepperOwner;
     SimTK::State initial = scene.makeInitialState();
     stepper.initialize(initial);
     recorder.record(stepper.getState());
@@ -230,6 +244,8 @@ SimulationResult runGraspSimulation(const scenario::Scenario& scenario, const Si
     summarizeDrift(result, summary);
     summarizeGrip(scene, stepper.getState(), summary);
     summarizeSwitch(scene, phases, result);
+    summary.integrator = stepper.getMethodName();
+    summary.integratorStatistics = stepper.getStatistics();
     return result;
 }
 

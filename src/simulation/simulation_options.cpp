@@ -16,6 +16,13 @@ SimulationMode parseSimulationMode(const std::string& text, const std::string& s
     throw InputError(source + ": mode '" + text + "' is not accepted; use full or approx");
 }
 
+IntegratorChoice parseIntegratorChoice(const std::string& text, const std::string& source) {
+    if (text == "simbody") return IntegratorChoice::SimbodyCpodes;
+    if (text == "cvode") return IntegratorChoice::Cvode;
+    throw InputError(source + ": integrator '" + text + "' is not accepted; use simbody or cvode");
+}
+
+std::string toString(IntegratorChoice integrator) { return integrator == IntegratorChoice::Cvode ? "cvode" : "simbody"; }
 std::string toString(ContactModel model) { return model == ContactModel::Compliant ? "compliant" : "rigid"; }
 std::string toString(SimulationMode mode) { return mode == SimulationMode::Full ? "full" : "approx"; }
 

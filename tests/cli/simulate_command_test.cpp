@@ -61,6 +61,7 @@ TEST_F(SimulateCommand, RejectsBadOptionsWithoutTouchingTheOutputFolder) {
     expectBadInput("simulate juggling" + out, {"juggling", "ball-clutch"});
     expectBadInput("simulate ball-clutch --perturbation f7" + out, {"--perturbation", "f7"});
     expectBadInput("simulate ball-clutch --contact soft" + out, {"--contact", "soft", "compliant or rigid"});
+    expectBadInput("simulate ball-clutch --integrator euler" + out, {"--integrator", "euler", "simbody or cvode"});
     expectBadInput("simulate ball-clutch --duration -1" + out, {"--duration", "-1"});
     expectBadInput("simulate ball-clutch --duration soon" + out, {"--duration", "soon"});
     expectBadInput("simulate ball-clutch --mode approx --q-threshold -1" + out, {"--q-threshold", "-1"});

@@ -3,6 +3,7 @@
 /// Running one grasp experiment and what comes out of it.
 
 #include "graspsim/contact/compliant_contact_force.h"
+#include "graspsim/integration/stepper.h"
 #include "graspsim/scenario/scenario.h"
 #include "graspsim/simulation/grasp_switch.h"
 #include "graspsim/simulation/simulation_options.h"
@@ -66,6 +67,8 @@ struct SimulationSummary {
     double approxWallPerSimSecond = 0;
     long fullSteps = 0;    ///< integrator steps of the full-contact phase
     long approxSteps = 0;  ///< integrator steps of the first engagement
+    std::string integrator;  ///< the stepper's method name (integration::Stepper::getMethodName)
+    integration::IntegrationStatistics integratorStatistics;  ///< its own counts over the run
 };
 
 /// Everything a run produces.
@@ -85,7 +88,8 @@ class GraspScene;
 /// least), e.g. to measure the cost of the dynamics in that state. Must not change the scene.
 using SampleObserver = std::function<void(const GraspScene& scene, const SimTK::State& state)>;
 
-/// Runs the scenario with Simbody's implicit CPodes (BDF) integrator at the scenario's accuracy,
+/// Runs the scenario with the chosen implicit integrator (SimulationOptions::integrator: Simbody's
+/// CPodes by default, or the SUNDIALS CVODE reference) at the scenario's accuracy,
 /// sampling every output interval, at the perturbation's start and end, and at the object's
 /// release. A numerical failure (a non-finite state, an integrator that cannot step) ends the
 /// run early: the result keeps every sample so far and summary.complete is false.

@@ -19,6 +19,12 @@ enum class SimulationMode {
     Approx  ///< the grasp approximation (one 6-DOF constraint once the grasp is firm)
 };
 
+/// Which integrator advances the simulation.
+enum class IntegratorChoice {
+    SimbodyCpodes,  ///< Simbody's CPodes (BDF, Newton) via SimTK::TimeStepper: the default
+    Cvode           ///< SUNDIALS CVODE (BDF, Newton), the reference (integration/cvode_integrator.h)
+};
+
 /// Settings of the grasp switch of `--mode approx` (thesis Figure 4.1; see grasp_switch.h).
 /// Defaults are this project's choices, documented where they are used.
 struct ApproxOptions {
@@ -49,13 +55,20 @@ struct SimulationOptions {
     std::string perturbation = "none";  ///< "none" or the name of one of the scenario's perturbations
     double duration = 0;                ///< simulated time (s); 0 takes the scenario's
     ApproxOptions approx;               ///< used in SimulationMode::Approx only
+    IntegratorChoice integrator = IntegratorChoice::SimbodyCpodes;
+    /// Integrator accuracy (relative tolerance; CVODE's atol and both integrators' constraint
+    /// tolerance follow it); 0 takes the scenario's simulation.accuracy.
+    double accuracy = 0;
 };
 
 /// Parses "compliant" or "rigid". @throws graspsim::InputError naming `source`, the value and the choices.
 ContactModel parseContactModel(const std::string& text, const std::string& source);
 /// Parses "full" or "approx". @throws graspsim::InputError naming `source`, the value and the choices.
 SimulationMode parseSimulationMode(const std::string& text, const std::string& source);
+/// Parses "simbody" or "cvode". @throws graspsim::InputError naming `source`, the value and the choices.
+IntegratorChoice parseIntegratorChoice(const std::string& text, const std::string& source);
 std::string toString(ContactModel model);
+std::string toString(IntegratorChoice integrator);
 std::string toString(SimulationMode mode);
 
 }  // namespace graspsim::simulation

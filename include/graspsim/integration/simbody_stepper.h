@@ -1,0 +1,35 @@
+#pragma once
+/// @file
+/// Simbody's own implicit integrator behind the Stepper interface: CPodes (variable-order BDF,
+/// Newton iteration) driven by SimTK::TimeStepper. The default of grasp simulations, whose
+/// finger joints are stiff (µs time constants).
+
+#include "graspsim/integration/stepper.h"
+
+#include <simbody/Simbody.h>
+
+namespace graspsim::integration {
+
+/// SimTK::TimeStepper with SimTK::CPodesIntegrator(BDF, Newton). The System must outlive it.
+class SimbodyCpodesStepper : public Stepper {
+public:
+    /// `accuracy`: Simbody's integrator accuracy (relative, also the constraint tolerance).
+    SimbodyCpodesStepper(const SimTK::System& system, double accuracy);
+
+    void initialize(const SimTK::State& initial) override;
+    void stepTo(double time) override;
+    const SimTK::State& getState() const override { return stepper_.getState(); }
+    long getNumStepsTaken() const override { return integrator_.getNumStepsTaken(); }
+    IntegrationStatistics getStatistics() const override;
+    std::string getMethodName() const override { return "simbody-cpodes-bdf"; }
+
+private:
+    void addCurrentCountsTo(IntegrationStatistics& statistics) const;
+
+    SimTK::CPodesIntegrator integrator_;
+    SimTK::TimeStepper stepper_;
+    IntegrationStatistics totals_;  // of the runs before the last initialize()
+    bool initialized_ = false;
+};
+
+}  // namespace graspsim::integration
