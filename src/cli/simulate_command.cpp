@@ -24,6 +24,7 @@ struct SimulateCommand::Options {
     std::string perturbation = "none";
     std::string duration;
     std::string integrator = "simbody";
+    std::string accuracy;
     std::string qThreshold, qMinimum;
     std::string out = "out";
 };
@@ -38,6 +39,7 @@ SimulateCommand::SimulateCommand(CLI::App& app) : options_(std::make_shared<Opti
     command_->add_option("--duration", o.duration, "simulated time in s (default: the scenario's)");
     command_->add_option("--integrator", o.integrator,
                          "simbody (default: Simbody's CPodes BDF) or cvode (the SUNDIALS CVODE BDF reference)");
+    command_->add_option("--accuracy", o.accuracy, "integrator relative accuracy in (0, 1) (default: the scenario's)");
     command_->add_option("--q-threshold", o.qThreshold, "approx: grasp quality Q_Th (N) to engage (default: 0.8 x the settled grasp's)");
     command_->add_option("--q-minimum", o.qMinimum, "approx: grasp quality Q_M (N) below which to release (default: 0.5 x Q_Th)");
     command_->add_option("--out", o.out,
@@ -107,6 +109,12 @@ int SimulateCommand::run() const {
     const scenario::Scenario scenario = scenario::loadScenario(o.scenario);
     simulation::SimulationOptions options = parseOptions(o.contact, o.mode, o.perturbation, o.duration, scenario);
     options.integrator = simulation::parseIntegratorChoice(o.integrator, "--integrator");
+    if (!o.accuracy.empty()) {
+        options.accuracy = parseNumber(o.accuracy, "--accuracy", "a number in (0, 1)");
+        if (!(options.accuracy > 0 && options.accuracy < 1)) {
+            throw InputError("--accuracy: value " + o.accuracy + " is not accepted; use a number in (0, 1)");
+        }
+    }
     options.approx.qThreshold = parseQuality(o.qThreshold, "--q-threshold");
     options.approx.qMinimum = parseQuality(o.qMinimum, "--q-minimum");
     if (options.approx.qThreshold > 0 && options.approx.qMinimum > options.approx.qThreshold) {
