@@ -21,6 +21,7 @@ struct SimulateCommand::Options {
     std::string scenario;
     std::string contact = "compliant";
     std::string mode = "full";
+    std::string constraint = "bushing";
     std::string perturbation = "none";
     std::string duration;
     std::string integrator = "simbody";
@@ -35,6 +36,8 @@ SimulateCommand::SimulateCommand(CLI::App& app) : options_(std::make_shared<Opti
     command_->add_option("scenario", o.scenario, "built-in scenario (ball-clutch, phone-pinch) or a scenario file")->required();
     command_->add_option("--contact", o.contact, "compliant (default) or rigid");
     command_->add_option("--mode", o.mode, "full (default) or approx");
+    command_->add_option("--constraint", o.constraint,
+                         "approx: the friction-limited palm-object constraint, bushing (compliant, default) or weld (rigid)");
     command_->add_option("--perturbation", o.perturbation, "none (default) or a perturbation of the scenario (f1, f2)");
     command_->add_option("--duration", o.duration, "simulated time in s (default: the scenario's)");
     command_->add_option("--integrator", o.integrator,
@@ -115,6 +118,7 @@ int SimulateCommand::run() const {
             throw InputError("--accuracy: value " + o.accuracy + " is not accepted; use a number in (0, 1)");
         }
     }
+    options.approx.constraint = simulation::parseApproxConstraint(o.constraint, "--constraint");
     options.approx.qThreshold = parseQuality(o.qThreshold, "--q-threshold");
     options.approx.qMinimum = parseQuality(o.qMinimum, "--q-minimum");
     if (options.approx.qThreshold > 0 && options.approx.qMinimum > options.approx.qThreshold) {
@@ -129,7 +133,7 @@ int SimulateCommand::run() const {
               << (s.held ? "yes" : "no") << ", object moved " << s.objectDisplacement * 1000 << " mm after settling; "
               << "results in " << o.out << "\n";
     if (s.mode == "approx") {
-        std::cout << "approximation: " << (s.engaged ? "engaged at t = " + std::to_string(s.engageTime) + " s" : "never engaged")
+        std::cout << "approximation (" << simulation::toString(options.approx.constraint) << "): " << (s.engaged ? "engaged at t = " + std::to_string(s.engageTime) + " s" : "never engaged")
                   << ", " << result.events.size() << " switch event(s) in events.csv\n";
     }
     if (!s.complete) {

@@ -66,7 +66,13 @@ GraspScene::GraspScene(const scenario::Scenario& scenario, const SimulationOptio
     }
     addObject();
     addContacts();
-    if (options.mode == SimulationMode::Approx) addBushing();
+    if (options.mode == SimulationMode::Approx) {
+        if (options.approx.constraint == ApproxConstraint::Weld) {
+            addWeld();
+        } else {
+            addBushing();
+        }
+    }
     addController(options);
     if (options.perturbation != "none") {
         const scenario::Perturbation* p = scenario.findPerturbation(options.perturbation);
@@ -124,6 +130,12 @@ void GraspScene::addBushing() {
     }
     bushing_ = grasp::LimitedBushing(model_.updForces(), getPalm(), SimTK::Transform(), object_, SimTK::Transform(),
                                      stiffness, damping);
+}
+
+// Rigid: no stiffness to choose; the limits are set by the switch on engagement.
+void GraspScene::addWeld() {
+    weld_ = std::make_unique<grasp::LimitedWeld>(model_.updSystem(), model_.updMatter(), model_.updForces(), getPalm(),
+                                                 SimTK::Transform(), object_, SimTK::Transform());
 }
 
 const SimTK::MobilizedBody& GraspScene::getPalm() const { return model_.getMobilizedBody(kPalm); }

@@ -25,7 +25,7 @@ std::vector<int> allPairs(const contact::CompliantContactForce& contacts) {
 }
 
 // Eq. 4.1-4.3: F_perp = sum f_i . n_i; r = mean distance of the contact points to their centroid.
-// Returns the bushing limits, rotation first: mu r F_perp (N m), then mu F_perp (N).
+// Returns the constraint's limits, rotation first: mu r F_perp (N m), then mu F_perp (N).
 SimTK::Vec6 calcFrictionLimits(const std::vector<contact::ContactReport>& reports, double mu) {
     double fPerp = 0;
     SimTK::Vec3 centroid(0);
@@ -60,7 +60,10 @@ GraspSwitch::GraspSwitch(const GraspScene& scene, const control::GraspController
     for (const std::string& e : scene.getGoalEndEffectors()) goalBodies_.push_back(d.findEndEffector(e)->body);
 }
 
-bool GraspSwitch::isEngaged(const SimTK::State& state) const { return scene_.getBushing().isEnabled(state); }
+bool GraspSwitch::isEngaged(const SimTK::State& state) const {
+    if (const grasp::LimitedWeld* weld = scene_.getWeld()) return weld->isEnabled(state);
+    return scene_.getBushing().isEnabled(state);
+}
 
 void GraspSwitch::handleEvent(SimTK::State& state, SimTK::Real accuracy, bool& shouldTerminate) const {
     shouldTerminate = false;
@@ -113,17 +116,31 @@ void GraspSwitch::engage(SimTK::State& state, double quality) const {
     const SimTK::Vec6 limits = calcFrictionLimits(reports, scene_.getScenario().contact.dynamicFriction);
     scene_.getContacts().setPairsEnabled(state, allPairs(scene_.getContacts()), false);  // (b)
     setFingersMerged(state, true);                                                        // (c)
-    const grasp::LimitedBushing& bushing = scene_.getBushing();                            // (d)
+    enableConstraint(state, limits);                                                      // (d)
+    X_HO_engaged_ = ~scene_.getPalm().getBodyTransform(state) * scene_.getObject().getBodyTransform(state);
+    events_.push_back({state.getTime(), "engage", quality,
+                       format("Q >= Q_Th = %.6g N; limits %.6g N", qThreshold_, limits[3]) +
+                           format(", %.6g N m", limits[0])});  // (e)
+}
+
+// At the current relative pose, so nothing jumps: the bushing's anchor is reset there; the weld
+// holds the pose it is enabled at (stopping only the palm-object relative velocity, if any).
+void GraspSwitch::enableConstraint(SimTK::State& state, const SimTK::Vec6& limits) const {
+    const SimTK::MultibodySystem& system = scene_.getSystem();
+    if (const grasp::LimitedWeld* weld = scene_.getWeld()) {
+        weld->setLimits(state, limits);
+        for (int k = 0; k < 6; ++k) weld->setAxisLocked(state, static_cast<grasp::WeldAxis>(k), !options_.relaxedAxes[k]);
+        weld->setEnabled(state, true);  // last: axes over their limits start sliding at once
+        system.realize(state, SimTK::Stage::Position);
+        return;
+    }
+    const grasp::LimitedBushing& bushing = scene_.getBushing();
     bushing.setEnabled(state, true);
     system.realize(state, SimTK::Stage::Position);
     bushing.resetAnchor(state);
     bushing.setLimits(state, limits);
     for (int k = 0; k < 6; ++k) bushing.setAxisLocked(state, static_cast<grasp::BushingAxis>(k), !options_.relaxedAxes[k]);
     system.realize(state, SimTK::Stage::Position);
-    X_HO_engaged_ = ~scene_.getPalm().getBodyTransform(state) * scene_.getObject().getBodyTransform(state);
-    events_.push_back({state.getTime(), "engage", quality,
-                       format("Q >= Q_Th = %.6g N; limits %.6g N", qThreshold_, limits[3]) +
-                           format(", %.6g N m", limits[0])});  // (e)
 }
 
 void GraspSwitch::checkRelease(SimTK::State& state) const {
@@ -148,7 +165,11 @@ std::string GraspSwitch::describeRelease(const SimTK::State& state, double quali
 }
 
 void GraspSwitch::release(SimTK::State& state, double quality, const std::string& reason) const {
-    scene_.getBushing().setEnabled(state, false);
+    if (const grasp::LimitedWeld* weld = scene_.getWeld()) {
+        weld->setEnabled(state, false);
+    } else {
+        scene_.getBushing().setEnabled(state, false);
+    }
     setFingersMerged(state, false);
     scene_.getContacts().setPairsEnabled(state, allPairs(scene_.getContacts()), true);
     events_.push_back({state.getTime(), "release", quality, reason});

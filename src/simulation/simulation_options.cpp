@@ -23,7 +23,17 @@ IntegratorChoice parseIntegratorChoice(const std::string& text, const std::strin
 }
 
 std::string toString(IntegratorChoice integrator) { return integrator == IntegratorChoice::Cvode ? "cvode" : "simbody"; }
+
+ApproxConstraint parseApproxConstraint(const std::string& text, const std::string& source) {
+    if (text == "bushing") return ApproxConstraint::Bushing;
+    if (text == "weld") return ApproxConstraint::Weld;
+    throw InputError(source + ": constraint '" + text + "' is not accepted; use bushing or weld");
+}
+
 std::string toString(ContactModel model) { return model == ContactModel::Compliant ? "compliant" : "rigid"; }
+std::string toString(ApproxConstraint constraint) {
+    return constraint == ApproxConstraint::Bushing ? "bushing" : "weld";
+}
 std::string toString(SimulationMode mode) { return mode == SimulationMode::Full ? "full" : "approx"; }
 
 }  // namespace graspsim::simulation

@@ -65,6 +65,7 @@ TEST_F(SimulateCommand, RejectsBadOptionsWithoutTouchingTheOutputFolder) {
     expectBadInput("simulate ball-clutch --duration -1" + out, {"--duration", "-1"});
     expectBadInput("simulate ball-clutch --duration soon" + out, {"--duration", "soon"});
     expectBadInput("simulate ball-clutch --mode approx --q-threshold -1" + out, {"--q-threshold", "-1"});
+    expectBadInput("simulate ball-clutch --mode approx --constraint hinge" + out, {"--constraint", "hinge", "weld"});
     expectBadInput("simulate ball-clutch --mode approx --q-threshold 1 --q-minimum 2" + out, {"--q-minimum", "2"});
     EXPECT_FALSE(fs::exists(dir_ / "out"));
 }

@@ -9,15 +9,64 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <string>
+
 using namespace graspsim;
 
 namespace {
 
-simulation::SimulationOptions makeOptions(simulation::SimulationMode mode, double duration) {
+simulation::SimulationOptions makeOptions(simulation::SimulationMode mode, double duration,
+                                          simulation::ApproxConstraint constraint = simulation::ApproxConstraint::Bushing) {
     simulation::SimulationOptions options;
     options.mode = mode;
     options.duration = duration;
+    options.approx.constraint = constraint;
     return options;
+}
+
+// Largest position (m) and orientation (rad) difference between two runs of the same scenario at
+// the common output times from `from` on (both runs sample at the same times).
+struct Deviation {
+    double distance = 0;
+    double angle = 0;
+};
+Deviation findLargestDeviation(const simulation::SimulationResult& a, const simulation::SimulationResult& b, double from) {
+    Deviation worst;
+    EXPECT_EQ(a.trajectory.size(), b.trajectory.size());
+    for (std::size_t k = 0; k < std::min(a.trajectory.size(), b.trajectory.size()); ++k) {
+        const simulation::TrajectorySample& x = a.trajectory[k];
+        const simulation::TrajectorySample& y = b.trajectory[k];
+        EXPECT_DOUBLE_EQ(x.time, y.time);
+        if (x.time < from) continue;
+        worst.distance = std::max(worst.distance, (x.p_GO - y.p_GO).norm());
+        const double cosHalf = std::min(1.0, std::abs(~x.q_GO.asVec4() * y.q_GO.asVec4()));
+        worst.angle = std::max(worst.angle, 2 * std::acos(cosHalf));
+    }
+    return worst;
+}
+
+// Both realizations against the full-contact run of `scenario` (the second method): engaged once,
+// after the grasp settled, and within 2 mm and 2 degrees of the full-contact object for 2 s.
+void expectBothRealizationsFollowFullContact(const std::string& scenario) {
+    const scenario::Scenario s = scenario::findBuiltinScenario(scenario);
+    const double duration = s.simulation.settleTime + 2.0;
+    const auto full = simulation::runGraspSimulation(s, makeOptions(simulation::SimulationMode::Full, duration));
+    ASSERT_TRUE(full.summary.complete) << full.summary.failure;
+    for (const auto constraint : {simulation::ApproxConstraint::Bushing, simulation::ApproxConstraint::Weld}) {
+        SCOPED_TRACE(simulation::toString(constraint));
+        const auto approx = simulation::runGraspSimulation(s, makeOptions(simulation::SimulationMode::Approx, duration, constraint));
+        ASSERT_TRUE(approx.summary.complete) << approx.summary.failure;
+        ASSERT_TRUE(approx.summary.engaged);
+        ASSERT_EQ(approx.events.size(), 1u) << approx.events.back().reason;
+        EXPECT_GE(approx.summary.engageTime, s.simulation.settleTime - 1e-9);
+        EXPECT_LE(approx.summary.engageTime, duration - 2.0 + 1e-9);
+        EXPECT_TRUE(approx.summary.held);
+        const Deviation d = findLargestDeviation(approx, full, approx.summary.engageTime);
+        EXPECT_LT(d.distance, 0.002) << "object " << d.distance << " m from the full-contact object";
+        EXPECT_LT(d.angle, 2 * SimTK::Pi / 180) << "object turned " << d.angle << " rad from the full-contact object";
+    }
 }
 
 // Largest distance of the object, at any sample from `from` on, from the point `p_G` (m).
@@ -51,6 +100,14 @@ TEST(GraspSwitch, BallClutchEngagesAfterSettlingAndHoldsTheObjectWhereFullContac
     EXPECT_LT(gap, 0.002) << "approx object strays " << gap << " m from the full-contact final position";
     // While engaged there are no contacts to solve and no IK: a simulated second costs far less.
     EXPECT_LT(approx.summary.approxWallPerSimSecond, approx.summary.fullWallPerSimSecond);
+}
+
+TEST(GraspSwitch, BallClutchBushingAndWeldFollowFullContactForTwoSeconds) {
+    expectBothRealizationsFollowFullContact("ball-clutch");
+}
+
+TEST(GraspSwitch, PhonePinchBushingAndWeldFollowFullContactForTwoSeconds) {
+    expectBothRealizationsFollowFullContact("phone-pinch");
 }
 
 TEST(GraspSwitch, PhonePinchEngages) {

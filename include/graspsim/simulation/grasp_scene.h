@@ -8,13 +8,15 @@
 /// object's surface so the fingers press. The object is held in place (its mobilizer locked)
 /// until the scenario's approach time, when it is released and only the grasp holds it.
 ///
-/// In SimulationMode::Approx the scene also holds the approximation's parts: a LimitedBushing
-/// palm-object (disabled at t = 0) and a GraspSwitch that runs the IK controller and switches
-/// between contact and bushing (grasp_switch.h).
+/// In SimulationMode::Approx the scene also holds the approximation's parts: the friction-limited
+/// palm-object constraint chosen by ApproxOptions::constraint, a LimitedBushing or a LimitedWeld
+/// (disabled at t = 0), and a GraspSwitch that runs the IK controller and switches between
+/// contact and that constraint (grasp_switch.h).
 
 #include "graspsim/contact/compliant_contact_force.h"
 #include "graspsim/control/grasp_controller.h"
 #include "graspsim/grasp/limited_bushing.h"
+#include "graspsim/grasp/limited_weld.h"
 #include "graspsim/scenario/scenario.h"
 #include "graspsim/simulation/perturbation_force.h"
 #include "graspsim/simulation/simulation_options.h"
@@ -65,8 +67,12 @@ public:
     /// Mobilizers of the finger joints (the ones merged into the palm while the approximation
     /// is engaged).
     const std::vector<SimTK::MobilizedBodyIndex>& getFingerMobilizers() const { return fingerMobilizers_; }
-    /// The approximation's bushing palm (H, palm frame) - object (M = O); an empty handle in full mode.
+    /// The approximation's bushing palm (H, palm frame) - object (M = O); an empty handle unless
+    /// in approx mode with the bushing realization.
     const grasp::LimitedBushing& getBushing() const { return bushing_; }
+    /// The approximation's weld palm (F = palm frame) - object (M = O), or nullptr unless in
+    /// approx mode with the weld realization.
+    const grasp::LimitedWeld* getWeld() const { return weld_.get(); }
     /// The grasp switch (owned by the System) in approx mode, nullptr in full mode.
     const GraspSwitch* getGraspSwitch() const { return switch_; }
     /// Largest distance between a goal's fingertip and its goal point on the object's surface
@@ -87,6 +93,7 @@ private:
     void addContacts();
     void addController(const SimulationOptions& options);
     void addBushing();
+    void addWeld();
 
     const scenario::Scenario& scenario_;
     system::MultibodyModel model_;
@@ -97,6 +104,7 @@ private:
     control::GraspController* controller_ = nullptr;  // owned by the system (full) or ownedController_ (approx)
     std::unique_ptr<control::GraspController> ownedController_;  // approx: run by the switch, not the system
     grasp::LimitedBushing bushing_;
+    std::unique_ptr<grasp::LimitedWeld> weld_;  // its handlers refer to it: destroyed before the System
     GraspSwitch* switch_ = nullptr;  // owned by the system
     std::vector<SimTK::MobilizedBodyIndex> fingerMobilizers_;
     control::IkTiming ikTiming_;

@@ -5,7 +5,7 @@
 /// once the grasp is firm, and gives them back when the approximation stops being believable.
 ///
 /// Every `ik_interval` (the IK's own period, so the check costs no extra event):
-///  - UNGRASPED (bushing disabled): run the grasp controller's IK update, then, once the object
+///  - UNGRASPED (constraint disabled): run the grasp controller's IK update, then, once the object
 ///    has been released, compute the grasp quality Q from the contact reports exactly as the
 ///    recorder does (calcContactGraspQuality, static friction). In full contact (every goal
 ///    fingertip touching the object) and Q >= Q_Th, ENGAGE:
@@ -13,18 +13,20 @@
 ///         the contact points to their centroid; translation limits mu F_perp, rotation limits
 ///         mu r F_perp, with mu the scenario's DYNAMIC friction: the limit is reached only when
 ///         the object slides, and sliding skin-on-object friction is the dynamic one (below
-///         the limit the bushing sticks elastically, which is what static friction gives);
+///         the limit the bushing sticks elastically and the weld rigidly, which is what static friction gives);
 ///     (b) disable every hand-object contact pair;
 ///     (c) MERGE: lock every finger joint's mobilizer at its current angle, so hand and fingers
 ///         move as one composite body. Realism lost: the fingers no longer flex while engaged
 ///         (the thesis notes the same loss of dexterity), and their PD torques do nothing;
-///     (d) enable the bushing palm (H) - object (O), anchor reset at the current pose (no force
-///         jump), limits set, axes relaxed or locked per ApproxOptions::relaxedAxes;
+///     (d) enable the palm (H) - object (O) constraint of ApproxOptions::constraint at the current
+///         pose, limits set, axes relaxed or locked per ApproxOptions::relaxedAxes: the bushing
+///         with its anchor reset there (no force jump), or the weld (every axis stuck, those
+///         already over their limit sliding);
 ///     (e) record an "engage" event.
-///  - GRASPED (bushing enabled): IK is skipped (the fingers are locked, and skipping it is where
+///  - GRASPED (constraint enabled): IK is skipped (the fingers are locked, and skipping it is where
 ///    the approximation saves its time). The contacts are still monitored without entering the
 ///    dynamics: Q is evaluated on a scratch copy of the state with the pairs switched on. RELEASE
-///    (bushing off, fingers unlocked, contacts on, "release" event) when the object has moved
+///    (constraint off, fingers unlocked, contacts on, "release" event) when the object has moved
 ///    more than releaseSlideDistance relative to the palm since engagement, when a fingertip is
 ///    farther than the scenario's held tolerance from its goal on the object, or when Q < Q_M.
 ///
@@ -33,7 +35,7 @@
 /// hand as the quality at which the object rests under gravity without slipping; the settled
 /// full-contact grasp is that state). Q_M: qMinimum, or hysteresisFraction * Q_Th.
 ///
-/// Every switch changes Instance-stage variables (pair flags, locks, bushing flag); doing it in
+/// Every switch changes Instance-stage variables (pair flags, locks, constraint flags); doing it in
 /// an event handler makes the TimeStepper re-realize and reinitialize the integrator.
 /// The handler keeps the event log and the engagement pose outside the State: it assumes one
 /// forward run (a TimeStepper never rewinds), as the run of grasp_simulation.h is.
@@ -61,7 +63,7 @@ struct GraspEvent {
 /// The periodic event handler described in the file comment (owned by the System once added).
 class GraspSwitch : public SimTK::PeriodicEventHandler {
 public:
-    /// @param scene the approx-mode scene (its contacts, bushing and finger mobilizers).
+    /// @param scene the approx-mode scene (its contacts, bushing or weld, and finger mobilizers).
     /// @param controller the IK controller this handler runs while ungrasped (not itself added
     ///        to the System, so IK can be paused).
     /// @throws graspsim::InputError for a negative threshold or a slide distance <= 0.
@@ -89,6 +91,7 @@ private:
     void checkRelease(SimTK::State& state) const;
     bool isFullContact(const SimTK::State& state) const;
     void engage(SimTK::State& state, double quality) const;
+    void enableConstraint(SimTK::State& state, const SimTK::Vec6& limits) const;
     void release(SimTK::State& state, double quality, const std::string& reason) const;
     void setFingersMerged(SimTK::State& state, bool merged) const;
     std::string describeRelease(const SimTK::State& state, double quality) const;

@@ -25,6 +25,12 @@ enum class IntegratorChoice {
     Cvode           ///< SUNDIALS CVODE (BDF, Newton), the reference (integration/cvode_integrator.h)
 };
 
+/// Which realization of the friction-limited 6-DOF palm-object constraint the approximation uses.
+enum class ApproxConstraint {
+    Bushing,  ///< compliant: stiff spring-damper whose anchor slips at the limits (grasp::LimitedBushing)
+    Weld      ///< rigid: per axis a stick constraint or, at the limit, the limit force (grasp::LimitedWeld)
+};
+
 /// Settings of the grasp switch of `--mode approx` (thesis Figure 4.1; see grasp_switch.h).
 /// Defaults are this project's choices, documented where they are used.
 struct ApproxOptions {
@@ -43,7 +49,10 @@ struct ApproxOptions {
     /// (m): about the radius of a fingertip pad, beyond which the fingers would have lost the
     /// spots they pressed into.
     double releaseSlideDistance = 0.005;
-    /// Which bushing axes are relaxed (friction-limited); the others are locked (rigid). SpatialVec
+    /// The constraint realization. Default bushing (the first one built; results measured so far
+    /// use it); `weld` is the rigid one, closer to the thesis's Vortex constraint.
+    ApproxConstraint constraint = ApproxConstraint::Bushing;
+    /// Which constraint axes are relaxed (friction-limited); the others are locked (rigid). SpatialVec
     /// order, rotation x, y, z then translation x, y, z of the object frame. Default: all relaxed.
     std::array<bool, 6> relaxedAxes{true, true, true, true, true, true};
 };
@@ -69,6 +78,9 @@ SimulationMode parseSimulationMode(const std::string& text, const std::string& s
 IntegratorChoice parseIntegratorChoice(const std::string& text, const std::string& source);
 std::string toString(ContactModel model);
 std::string toString(IntegratorChoice integrator);
+/// Parses "bushing" or "weld". @throws graspsim::InputError naming `source`, the value and the choices.
+ApproxConstraint parseApproxConstraint(const std::string& text, const std::string& source);
+std::string toString(ApproxConstraint constraint);
 std::string toString(SimulationMode mode);
 
 }  // namespace graspsim::simulation
