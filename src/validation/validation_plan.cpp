@@ -23,10 +23,18 @@ void checkKnown(const std::vector<std::string>& given, const std::vector<std::st
     }
 }
 
+// Variant names: "full", "full-cvode" (full contact on the CVODE reference integrator at
+// kReferenceAccuracy), "approx-<constraint>-<attach>".
 simulation::SimulationOptions makeOptions(const std::string& variant, const std::string& perturbation, double duration) {
     simulation::SimulationOptions options;
     options.contact = simulation::ContactModel::Compliant;
-    options.mode = variant == "full" ? simulation::SimulationMode::Full : simulation::SimulationMode::Approx;
+    const bool full = variant.rfind("full", 0) == 0;
+    options.mode = full ? simulation::SimulationMode::Full : simulation::SimulationMode::Approx;
+    if (variant == "full-cvode") {
+        options.integrator = simulation::IntegratorChoice::Cvode;
+        options.accuracy = kReferenceAccuracy;
+    }
+    if (variant.find("-weld") != std::string::npos) options.approx.constraint = simulation::ApproxConstraint::Weld;
     options.perturbation = perturbation;
     options.duration = duration;
     return options;
@@ -48,7 +56,7 @@ const std::vector<std::string>& getThesisExperiments() {
 }
 
 const std::vector<std::string>& getAvailableVariants() {
-    static const std::vector<std::string> names{"full", "approx-bushing-merged"};
+    static const std::vector<std::string> names{"full", "full-cvode", "approx-bushing-merged", "approx-weld-merged"};
     return names;
 }
 
@@ -69,11 +77,13 @@ std::vector<ValidationRun> makeValidationPlan(const PlanOptions& options) {
             runs.push_back({stem + "full", experiment, "full", makeOptions("full", perturbation, duration), ""});
             for (const std::string& variant : variants) {
                 if (variant == "full") continue;
+                // The integrator reference once per experiment: without perturbation.
+                if (variant == "full-cvode" && perturbation != "none") continue;
                 runs.push_back({stem + variant, experiment, variant, makeOptions(variant, perturbation, duration), stem + "full"});
             }
         }
     }
-    const auto approx = std::find_if(variants.begin(), variants.end(), [](const std::string& v) { return v != "full"; });
+    const auto approx = std::find_if(variants.begin(), variants.end(), [](const std::string& v) { return v.rfind("approx", 0) == 0; });
     if (!options.quick && options.longHoldDuration > 0 && approx != variants.end()) {
         const std::string experiment = experiments.front();
         ValidationRun hold{experiment + "_none_compliant_" + *approx + "_long-hold", experiment, *approx,

@@ -18,6 +18,11 @@ constexpr double kFullHoldDrift = 0.005;
 constexpr double kApproxPositionError = 0.002;  ///< m
 constexpr double kApproxAngleError = 2.0 * 3.14159265358979323846 / 180.0;  ///< rad (2 degrees)
 constexpr double kApproxWindow = 2.0;           ///< s after engagement
+/// Bound of Simbody's integrator at the scenario accuracy against the CVODE reference: a quarter
+/// of the approximation's 2 mm / 2 degree bounds, so that integration error cannot decide an
+/// approximation check.
+constexpr double kIntegratorPositionError = 0.0005;  ///< m
+constexpr double kIntegratorAngleError = 0.5 * 3.14159265358979323846 / 180.0;  ///< rad (0.5 degree)
 /// Bound of the long hold: drift after settling (m).
 constexpr double kLongHoldDrift = 0.001;
 /// Distance from the settled position that counts as the object slipping (m).

@@ -30,13 +30,19 @@ struct PlanOptions {
     double longHoldDuration = 600;         ///< simulated s of the long hold (full suite only; 0 = none)
 };
 
+/// Relative accuracy of the CVODE reference runs ("full-cvode"): a thousand times tighter than
+/// the scenarios' 1e-3, so that its own error is negligible next to the difference it measures.
+constexpr double kReferenceAccuracy = 1e-6;
+
 /// The experiments of the thesis (chapter 5): "ball-clutch", "phone-pinch".
 const std::vector<std::string>& getThesisExperiments();
-/// Every variant this build can run: "full" first, then the approximation variants.
+/// Every variant this build can run: "full" first, "full-cvode" (full contact on the CVODE
+/// reference integrator, compared with "full"; run without perturbation only), then the
+/// approximation variants "approx-<bushing|weld>-<merged|multi>".
 const std::vector<std::string>& getAvailableVariants();
 
 /// The runs for `options`, references before the runs that compare against them.
-/// Quick: ball-clutch without perturbation, full vs every approximation variant, 2 s after settling.
+/// Quick: ball-clutch without perturbation, full vs every other variant, 2 s after settling.
 /// Full suite: every experiment x {none, its perturbations} x compliant contact x every variant,
 /// the scenario's whole duration, plus the long hold (ball-clutch, first approximation variant).
 /// @throws graspsim::InputError naming the option, the unknown value and the accepted ones.
