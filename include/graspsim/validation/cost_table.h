@@ -21,6 +21,17 @@
 
 namespace graspsim::validation {
 
+/// The approximation's figures with one realization of its constraint.
+struct ApproxCost {
+    std::string constraint;              ///< "bushing" or "weld"
+    double stepUs = 0;                   ///< µs per integrator step during the first engagement
+    double wallPerSimSecond = 0;         ///< wall s per simulated s during the first engagement
+    double engageTime = -1;              ///< s; < 0 if it never engaged (then no figures)
+    double fullRealizeUs = 0;            ///< one dynamics evaluation, full contact just before engaging (µs)
+    double engagedRealizeUs = 0;         ///< one dynamics evaluation, engaged (µs)
+    double floorRealizeUs = 0;           ///< the engaged state with the object locked and the constraint off (µs)
+};
+
 /// The figures of one experiment.
 struct ExperimentCost {
     std::string scenario;
@@ -29,14 +40,7 @@ struct ExperimentCost {
     double fullIkUsPerStep = 0;
     double fullDynamicsUsPerStep = 0;
     double fullWallPerSimSecond = 0;     ///< wall s per simulated s, after the object's release
-    // Approximation run, first engagement (µs per step; wall s per simulated s).
-    double approxStepUs = 0;
-    double approxWallPerSimSecond = 0;
-    double engageTime = -1;              ///< s; < 0 if it never engaged (then no approx figures)
-    // One dynamics evaluation (µs).
-    double fullRealizeUs = 0;            ///< full contact, just before engaging
-    double engagedRealizeUs = 0;         ///< engaged
-    double floorRealizeUs = 0;           ///< engaged state, object locked, bushing off
+    std::vector<ApproxCost> approx;      ///< bushing, then weld
 };
 
 /// Full-contact cost with `endEffectors` fingertip goals (thumb first, then index, middle, ...).
