@@ -1,0 +1,34 @@
+#include "graspsim/system/silenced_stdout.h"
+
+#include "graspsim/error.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <iostream>
+
+namespace graspsim::system {
+
+SilencedStdout::SilencedStdout() {
+    std::cout.flush();
+    std::fflush(stdout);
+    const int null = ::open("/dev/null", O_WRONLY);
+    if (null < 0) throw Error("cannot open /dev/null to silence Simbody's debug output");
+    saved_ = ::dup(1);
+    if (saved_ < 0 || ::dup2(null, 1) < 0) {
+        ::close(null);
+        throw Error("cannot redirect standard output to silence Simbody's debug output");
+    }
+    ::close(null);
+}
+
+SilencedStdout::~SilencedStdout() {
+    // What was printed meanwhile sits in the C and C++ buffers: drop it into /dev/null first.
+    std::cout.flush();
+    std::fflush(stdout);
+    ::dup2(saved_, 1);
+    ::close(saved_);
+}
+
+}  // namespace graspsim::system
