@@ -3,6 +3,7 @@
 #include "graspsim/error.h"
 #include "graspsim/simulation/contact_grasp_quality.h"
 #include "graspsim/simulation/grasp_scene.h"
+#include "graspsim/simulation/rigid_stepping.h"
 
 #include <algorithm>
 #include <chrono>
@@ -48,7 +49,7 @@ public:
         sample.p_GO = X_GO.p();
         sample.q_GO = X_GO.R().convertRotationToQuaternion();
         for (const std::string& j : result_.jointNames) sample.jointAngles.push_back(scene_.getModel().getJointPosition(s, j));
-        ContactSample contacts{s.getTime(), scene_.getContacts().findContactReports(s)};
+        ContactSample contacts{s.getTime(), scene_.findContactReports(s)};
         sample.graspQuality = calcContactGraspQuality(contacts.contacts, X_GO, qualityOptions_);
         result_.summary.maxGraspQuality = std::max(result_.summary.maxGraspQuality, sample.graspQuality);
         result_.trajectory.push_back(std::move(sample));
@@ -138,6 +139,23 @@ void stepThroughSamples(const GraspScene& scene, SimTK::TimeStepper& stepper, Re
     }
 }
 
+// The rigid model's loop: the same samples, stepped at a fixed size by RigidStepper.
+void stepThroughSamples(const GraspScene& scene, RigidStepper& stepper, Recorder& recorder, PhaseTimer& phases,
+                        double duration, const ProgressCallback& progress, std::string& lastEvent) {
+    for (double t : makeSampleTimes(scene, duration)) {
+        stepper.stepTo(t);
+        checkFinite(stepper.getState(), lastEvent);
+        phases.mark(stepper.getState(), stepper.getNumSteps());
+        if (std::abs(t - scene.getReleaseTime()) < 1e-12) {
+            stepper.releaseObject();
+            phases.rebase(stepper.getState(), stepper.getNumSteps());
+            lastEvent = "object released at t = " + std::to_string(t) + " s";
+        }
+        recorder.record(stepper.getState());
+        if (progress) progress(t, duration);
+    }
+}
+
 SimulationSummary makeSummaryHeader(const scenario::Scenario& scenario, const SimulationOptions& options, double duration) {
     SimulationSummary summary;
     summary.scenario = scenario.name;
@@ -192,10 +210,50 @@ void summarizeDrift(const SimulationResult& result, SimulationSummary& summary) 
     summary.objectDisplacement = (result.trajectory.back().p_GO - settled->p_GO).norm();
 }
 
+void summarizeRun(const GraspScene& scene, const PhaseTimer& phases, double ikSeconds, const SimTK::State& last,
+                  SimulationResult& result) {
+    SimulationSummary& summary = result.summary;
+    summary.simTime = last.getTime();
+    summarizeCost(scene, phases, ikSeconds, summary);
+    summarizeDrift(result, summary);
+    summarizeGrip(scene, last, summary);
+    summarizeSwitch(scene, phases, result);
+}
+
+// Rigid contact: Simbody's SemiExplicitEulerTimeStepper at a fixed step (rigid_stepping.h).
+SimulationResult runRigidGraspSimulation(const scenario::Scenario& scenario, const SimulationOptions& options,
+                                         const ProgressCallback& progress) {
+    const double duration = options.duration > 0 ? options.duration : scenario.simulation.duration;
+    GraspScene scene(scenario, options);
+    SimulationResult result;
+    result.summary = makeSummaryHeader(scenario, options, duration);
+    Recorder recorder(scene, result);
+    RigidStepper stepper(scene);
+    stepper.initialize(scene.makeInitialState());
+    recorder.record(stepper.getState());
+    std::string lastEvent = "start";
+    PhaseTimer phases(scene);
+    const auto start = Clock::now();
+    const double ikBefore = scene.getIkTiming().totalSeconds;
+    try {
+        stepThroughSamples(scene, stepper, recorder, phases, duration, progress, lastEvent);
+        result.summary.complete = true;
+    } catch (const NumericalError& e) {
+        result.summary.failure = e.what();
+    } catch (const std::exception& e) {
+        result.summary.failure = "stepping failed at t = " + std::to_string(stepper.getState().getTime()) +
+                                 " s (last event: " + lastEvent + "): " + e.what();
+    }
+    result.summary.wallTime = std::chrono::duration<double>(Clock::now() - start).count();
+    summarizeRun(scene, phases, scene.getIkTiming().totalSeconds - ikBefore, stepper.getState(), result);
+    return result;
+}
+
 }  // namespace
 
 SimulationResult runGraspSimulation(const scenario::Scenario& scenario, const SimulationOptions& options,
                                     const ProgressCallback& progress) {
+    if (options.contact == ContactModel::Rigid) return runRigidGraspSimulation(scenario, options, progress);
     const double duration = options.duration > 0 ? options.duration : scenario.simulation.duration;
     GraspScene scene(scenario, options);
     SimulationResult result;
@@ -223,11 +281,7 @@ SimulationResult runGraspSimulation(const scenario::Scenario& scenario, const Si
                           " s (last event: " + lastEvent + "): " + e.what();
     }
     summary.wallTime = std::chrono::duration<double>(Clock::now() - start).count();
-    summary.simTime = stepper.getState().getTime();
-    summarizeCost(scene, phases, scene.getIkTiming().totalSeconds - ikBefore, summary);
-    summarizeDrift(result, summary);
-    summarizeGrip(scene, stepper.getState(), summary);
-    summarizeSwitch(scene, phases, result);
+    summarizeRun(scene, phases, scene.getIkTiming().totalSeconds - ikBefore, stepper.getState(), result);
     return result;
 }
 

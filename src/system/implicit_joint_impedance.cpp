@@ -82,6 +82,9 @@ private:
     void addImpedance(const State& s, Vector& K, Vector& C) const {
         for (const JointImpedance& j : joints_) {
             const SimTK::MobilizedBody& mobod = matter_.getMobilizedBody(j.mobod);
+            if (mobod.getNumU(s) != 1)
+                throw InputError("implicit joint impedance: mobilized body " + std::to_string(int(j.mobod)) + " has " +
+                                 std::to_string(mobod.getNumU(s)) + " mobilities; must have 1");
             const int i = mobod.getFirstUIndex(s);
             K[i] += j.stiffness;
             C[i] += j.damping;
@@ -124,13 +127,11 @@ private:
 
 namespace {
 
-void checkJoint(const SimTK::SimbodyMatterSubsystem& matter, const JointImpedance& j) {
+void checkJoint(const JointImpedance& j) {
     const auto bad = [](double x) { return !(std::isfinite(x) && x >= 0); };
     const std::string where = "implicit joint impedance, mobilized body " + std::to_string(int(j.mobod));
     if (bad(j.stiffness)) throw InputError(where + ": stiffness (" + std::to_string(j.stiffness) + ") must be finite and >= 0");
     if (bad(j.damping)) throw InputError(where + ": damping (" + std::to_string(j.damping) + ") must be finite and >= 0");
-    const int nu = matter.getMobilizedBody(j.mobod).getNumU(matter.getSystem().getDefaultState());
-    if (nu != 1) throw InputError(where + ": has " + std::to_string(nu) + " mobilities; must have 1");
 }
 
 }  // namespace
@@ -138,7 +139,7 @@ void checkJoint(const SimTK::SimbodyMatterSubsystem& matter, const JointImpedanc
 ImplicitJointImpedance::ImplicitJointImpedance(SimTK::GeneralForceSubsystem& forces,
                                                const SimTK::SimbodyMatterSubsystem& matter,
                                                std::vector<JointImpedance> joints) {
-    for (const JointImpedance& j : joints) checkJoint(matter, j);
+    for (const JointImpedance& j : joints) checkJoint(j);
     auto* implementation = new Implementation(forces, matter, std::move(joints));
     static_cast<SimTK::Force::Custom&>(*this) = SimTK::Force::Custom(forces, implementation);
     implementation->setSelf(getForceIndex());

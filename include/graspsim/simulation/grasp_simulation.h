@@ -82,7 +82,9 @@ using ProgressCallback = std::function<void(double time, double duration)>;
 
 /// Runs the scenario with Simbody's implicit CPodes (BDF) integrator at the scenario's accuracy,
 /// sampling every output interval, at the perturbation's start and end, and at the object's
-/// release. A numerical failure (a non-finite state, an integrator that cannot step) ends the
+/// release. With ContactModel::Rigid: Simbody's SemiExplicitEulerTimeStepper at the fixed
+/// kRigidStepSize with the same samples (rigid_stepping.h); summary.steps counts its steps.
+/// A numerical failure (a non-finite state, an integrator that cannot step) ends the
 /// run early: the result keeps every sample so far and summary.complete is false.
 /// @throws graspsim::InputError for options the scenario cannot take (before simulating).
 SimulationResult runGraspSimulation(const scenario::Scenario& scenario, const SimulationOptions& options,

@@ -61,8 +61,8 @@ public:
     ImplicitJointImpedance() = default;
 
     /// Adds the element to `forces`. It reads the forces of every other element of `forces`.
-    /// @throws graspsim::InputError for a negative or non-finite stiffness or damping, or a
-    ///         mobilizer with other than one mobility.
+    /// @throws graspsim::InputError for a negative or non-finite stiffness or damping (a
+    ///         mobilizer with other than one mobility throws when the correction is computed).
     ImplicitJointImpedance(SimTK::GeneralForceSubsystem& forces, const SimTK::SimbodyMatterSubsystem& matter,
                            std::vector<JointImpedance> joints);
 
