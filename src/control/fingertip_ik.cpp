@@ -3,6 +3,7 @@
 #include "graspsim/error.h"
 
 #include <algorithm>
+#include <memory>
 #include <cmath>
 
 namespace graspsim::control {
@@ -38,13 +39,34 @@ FingertipIk::FingertipIk(const system::MultibodyModel& model, const std::vector<
 
 FingertipIk::~FingertipIk() = default;
 
+namespace {
+
+// The Assembler satisfies every enabled constraint of its state. Conditional constraints (rigid
+// contacts, enabled while touching) are not part of the hand's kinematics: the IK places the
+// fingertips at their goals as if nothing were in the way, and contact pushes back in the
+// dynamics. Returns nullptr when `state` has none enabled (no copy needed).
+std::unique_ptr<SimTK::State> withoutConditionalConstraints(const SimTK::SimbodyMatterSubsystem& matter,
+                                                            const SimTK::State& state) {
+    std::unique_ptr<SimTK::State> copy;
+    for (SimTK::ConstraintIndex c(0); c < matter.getNumConstraints(); ++c) {
+        const SimTK::Constraint& constraint = matter.getConstraint(c);
+        if (!constraint.isConditional() || constraint.isDisabled(state)) continue;
+        if (!copy) copy = std::make_unique<SimTK::State>(state);
+        constraint.disable(*copy);
+    }
+    return copy;
+}
+
+}  // namespace
+
 SimTK::Vector FingertipIk::solve(const SimTK::State& state, const std::vector<SimTK::Vec3>& goals_G) {
     SimTK::Array_<SimTK::Vec3> observations(goals_G.begin(), goals_G.end());
     markers_->moveAllObservations(observations);
+    const std::unique_ptr<SimTK::State> unconstrained = withoutConditionalConstraints(model_.getMatter(), state);
     try {
         // The locked joints (arm, object) come from `state`; the Assembler starts the moving
         // joints from there too, which keeps consecutive solutions close (warm start).
-        assembler_->initialize(state);
+        assembler_->initialize(unconstrained ? *unconstrained : state);
         assembler_->assemble();
     } catch (const std::exception& e) {
         throw Error(std::string("fingertip IK failed at t = ") + std::to_string(state.getTime()) + " s: " + e.what());

@@ -85,7 +85,10 @@ private:
 
 JointPdController::JointPdController(system::MultibodyModel& model, const std::vector<ControlledJoint>& joints,
                                      const std::vector<std::string>& gravityBodies) {
-    for (const ControlledJoint& j : joints) jointNames_.push_back(j.name);
+    for (const ControlledJoint& j : joints) {
+        jointNames_.push_back(j.name);
+        gains_.push_back(j.gains);
+    }
     auto* impl = new Implementation(model, joints, gravityBodies);
     impl_ = impl;
     SimTK::Force::Custom(model.updForces(), impl);  // the subsystem takes ownership of impl

@@ -58,11 +58,12 @@ std::vector<std::string> findFingerJoints(const model::ModelDescription& d, cons
 }  // namespace
 
 GraspScene::GraspScene(const scenario::Scenario& scenario, const SimulationOptions& options)
-    : scenario_(scenario), model_(model::buildBodyModel(scenario.bodyOptions), makeSystemOptions(scenario)) {
-    if (options.contact != ContactModel::Compliant) {
-        throw InputError("--contact: '" + toString(options.contact) +
-                         "' is not available in simulate yet; use compliant (the rigid component, contact::RigidContact, "
-                         "is not wired into grasp scenes yet)");
+    : scenario_(scenario),
+      model_(model::buildBodyModel(scenario.bodyOptions), makeSystemOptions(scenario)),
+      contactModel_(options.contact) {
+    if (options.contact == ContactModel::Rigid && options.mode == SimulationMode::Approx) {
+        throw InputError("--mode approx: not available with --contact rigid (the grasp switch is an event handler, "
+                         "and the rigid stepper runs none); use --mode full or --contact compliant");
     }
     addObject();
     addContacts();
@@ -74,6 +75,7 @@ GraspScene::GraspScene(const scenario::Scenario& scenario, const SimulationOptio
         }
     }
     addController(options);
+    if (contactModel_ == ContactModel::Rigid) addImplicitImpedance();
     if (options.perturbation != "none") {
         const scenario::Perturbation* p = scenario.findPerturbation(options.perturbation);
         if (!p) {
@@ -112,7 +114,36 @@ void GraspScene::addContacts() {
             }
         }
     }
+    if (contactModel_ == ContactModel::Rigid) {
+        rigidContacts_ = contact::RigidContactSet(model_.updMatter(), pairs);
+        return;
+    }
     contacts_ = contact::CompliantContactForce(model_.updForces(), pairs);
+}
+
+// Every movable joint's linear impedance: passive spring and damper, the PD gains (the
+// controller drives every movable joint), and its limit stop.
+void GraspScene::addImplicitImpedance() {
+    std::vector<system::JointImpedance> joints;
+    const std::vector<std::string>& controlled = pd_->getJointNames();
+    for (const std::string& name : model_.getJointNames()) {
+        const model::Joint& j = *model_.getDescription().findJoint(name);
+        system::JointImpedance impedance{model_.getMobilizedBody(j.child).getMobilizedBodyIndex(), j.stiffness,
+                                         j.damping, model_.getPassiveJointForces(name).getStop()};
+        const auto it = std::find(controlled.begin(), controlled.end(), name);
+        if (it != controlled.end()) {
+            const control::PdGains& gains = pd_->getGains()[static_cast<std::size_t>(it - controlled.begin())];
+            impedance.stiffness += gains.kp;
+            impedance.damping += gains.kd;
+        }
+        joints.push_back(impedance);
+    }
+    impedance_ = system::ImplicitJointImpedance(model_.updForces(), model_.getMatter(), joints);
+}
+
+std::vector<contact::ContactReport> GraspScene::findContactReports(const SimTK::State& state) const {
+    if (contactModel_ == ContactModel::Rigid) return rigidContacts_.findContactReports(state);
+    return contacts_.findContactReports(state);
 }
 
 // Critically damped at kBushingFrequency with the object's own mass and central inertia (O is

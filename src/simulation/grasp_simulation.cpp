@@ -5,6 +5,7 @@
 #include "graspsim/integration/simbody_stepper.h"
 #include "graspsim/simulation/contact_grasp_quality.h"
 #include "graspsim/simulation/grasp_scene.h"
+#include "graspsim/simulation/rigid_stepping.h"
 
 #include <algorithm>
 #include <chrono>
@@ -51,7 +52,7 @@ public:
         sample.p_GO = X_GO.p();
         sample.q_GO = X_GO.R().convertRotationToQuaternion();
         for (const std::string& j : result_.jointNames) sample.jointAngles.push_back(scene_.getModel().getJointPosition(s, j));
-        ContactSample contacts{s.getTime(), scene_.getContacts().findContactReports(s)};
+        ContactSample contacts{s.getTime(), scene_.findContactReports(s)};
         sample.graspQuality = calcContactGraspQuality(contacts.contacts, X_GO, qualityOptions_);
         result_.summary.maxGraspQuality = std::max(result_.summary.maxGraspQuality, sample.graspQuality);
         result_.trajectory.push_back(std::move(sample));
@@ -155,6 +156,25 @@ std::unique_ptr<integration::Stepper> makeStepper(const SimTK::System& system, c
     return std::make_unique<integration::CvodeIntegrator>(system, cvode);
 }
 
+// The rigid model's loop: the same samples, stepped at a fixed size by RigidStepper.
+void stepThroughSamples(const GraspScene& scene, RigidStepper& stepper, Recorder& recorder, PhaseTimer& phases,
+                        double duration, const ProgressCallback& progress, const SampleObserver& observer,
+                        std::string& lastEvent) {
+    for (double t : makeSampleTimes(scene, duration)) {
+        stepper.stepTo(t);
+        checkFinite(stepper.getState(), lastEvent);
+        phases.mark(stepper.getState(), stepper.getNumSteps());
+        if (std::abs(t - scene.getReleaseTime()) < 1e-12) {
+            stepper.releaseObject();
+            phases.rebase(stepper.getState(), stepper.getNumSteps());
+            lastEvent = "object released at t = " + std::to_string(t) + " s";
+        }
+        recorder.record(stepper.getState());
+        if (observer) observer(scene, stepper.getState());
+        if (progress) progress(t, duration);
+    }
+}
+
 SimulationSummary makeSummaryHeader(const scenario::Scenario& scenario, const SimulationOptions& options, double duration) {
     SimulationSummary summary;
     summary.scenario = scenario.name;
@@ -209,10 +229,51 @@ void summarizeDrift(const SimulationResult& result, SimulationSummary& summary) 
     summary.objectDisplacement = (result.trajectory.back().p_GO - settled->p_GO).norm();
 }
 
+void summarizeRun(const GraspScene& scene, const PhaseTimer& phases, double ikSeconds, const SimTK::State& last,
+                  SimulationResult& result) {
+    SimulationSummary& summary = result.summary;
+    summary.simTime = last.getTime();
+    summarizeCost(scene, phases, ikSeconds, summary);
+    summarizeDrift(result, summary);
+    summarizeGrip(scene, last, summary);
+    summarizeSwitch(scene, phases, result);
+}
+
+// Rigid contact: Simbody's SemiExplicitEulerTimeStepper at a fixed step (rigid_stepping.h).
+SimulationResult runRigidGraspSimulation(const scenario::Scenario& scenario, const SimulationOptions& options,
+                                         const ProgressCallback& progress, const SampleObserver& observer) {
+    const double duration = options.duration > 0 ? options.duration : scenario.simulation.duration;
+    GraspScene scene(scenario, options);
+    SimulationResult result;
+    result.summary = makeSummaryHeader(scenario, options, duration);
+    Recorder recorder(scene, result);
+    RigidStepper stepper(scene);
+    stepper.initialize(scene.makeInitialState());
+    recorder.record(stepper.getState());
+    std::string lastEvent = "start";
+    PhaseTimer phases(scene);
+    const auto start = Clock::now();
+    const double ikBefore = scene.getIkTiming().totalSeconds;
+    try {
+        stepThroughSamples(scene, stepper, recorder, phases, duration, progress, observer, lastEvent);
+        result.summary.complete = true;
+    } catch (const NumericalError& e) {
+        result.summary.failure = e.what();
+    } catch (const std::exception& e) {
+        result.summary.failure = "stepping failed at t = " + std::to_string(stepper.getState().getTime()) +
+                                 " s (last event: " + lastEvent + "): " + e.what();
+    }
+    result.summary.wallTime = std::chrono::duration<double>(Clock::now() - start).count();
+    summarizeRun(scene, phases, scene.getIkTiming().totalSeconds - ikBefore, stepper.getState(), result);
+    result.summary.integrator = "simbody-semiexpliciteuler-pgs";
+    return result;
+}
+
 }  // namespace
 
 SimulationResult runGraspSimulation(const scenario::Scenario& scenario, const SimulationOptions& options,
                                     const ProgressCallback& progress, const SampleObserver& observer) {
+    if (options.contact == ContactModel::Rigid) return runRigidGraspSimulation(scenario, options, progress, observer);
     const double duration = options.duration > 0 ? options.duration : scenario.simulation.duration;
     GraspScene scene(scenario, options);
     SimulationResult result;
@@ -239,11 +300,7 @@ SimulationResult runGraspSimulation(const scenario::Scenario& scenario, const Si
                           " s (last event: " + lastEvent + "): " + e.what();
     }
     summary.wallTime = std::chrono::duration<double>(Clock::now() - start).count();
-    summary.simTime = stepper.getState().getTime();
-    summarizeCost(scene, phases, scene.getIkTiming().totalSeconds - ikBefore, summary);
-    summarizeDrift(result, summary);
-    summarizeGrip(scene, stepper.getState(), summary);
-    summarizeSwitch(scene, phases, result);
+    summarizeRun(scene, phases, scene.getIkTiming().totalSeconds - ikBefore, stepper.getState(), result);
     summary.integrator = stepper.getMethodName();
     summary.integratorStatistics = stepper.getStatistics();
     return result;

@@ -27,7 +27,8 @@
 ///
 /// Limits (not silent): one contact point per pair, so a capsule lying flat on a face or
 /// parallel to another capsule is held at the middle of the line of contact only (it can rock
-/// about it); box-box and box-half-space pairs are rejected. A contact is found on the first step
+/// about it); box-box and box-half-space pairs are rejected here (RigidContactSet turns them into
+/// contacts of the boxes' rounded corners, with the limits documented in rigid_contact_set.h). A contact is found on the first step
 /// that ends within the stepper's constraint tolerance, so an impact can leave a penetration of
 /// up to one step's approach (impact speed x step); Simbody 3.7's stepper does not project it
 /// out (its own SpherePlaneContact rests at the same depth). The stepper passes its default

@@ -39,6 +39,8 @@ public:
 
     /// Names of the controlled joints, in the order of the target vector.
     const std::vector<std::string>& getJointNames() const { return jointNames_; }
+    /// The gains, ordered as getJointNames().
+    const std::vector<PdGains>& getGains() const { return gains_; }
 
     /// Sets the targets q* (rad), ordered as getJointNames(). Invalidates Stage::Dynamics.
     void setTargets(SimTK::State& state, const SimTK::Vector& targets) const;
@@ -50,6 +52,7 @@ public:
 private:
     class Implementation;
     std::vector<std::string> jointNames_;
+    std::vector<PdGains> gains_;
     const Implementation* impl_ = nullptr;  // owned by the Force::Custom handle in the subsystem
 };
 

@@ -12,14 +12,23 @@
 /// palm-object constraint chosen by ApproxOptions::constraint, a LimitedBushing or a LimitedWeld
 /// (disabled at t = 0), and a GraspSwitch that runs the IK controller and switches between
 /// contact and that constraint (grasp_switch.h).
+///
+/// With ContactModel::Rigid the finger-object pairs are rigid contacts (contact::RigidContactSet)
+/// instead of the compliant force element, and the joints' impedance (passive spring, damper,
+/// stop, PD gains) is integrated implicitly by a system::ImplicitJointImpedance (off until a
+/// step size is set; see rigid_stepping.h). The IK controller is still a periodic event
+/// handler, but Simbody's SemiExplicitEulerTimeStepper runs no event handlers: the rigid
+/// stepping calls it (getController()).
 
 #include "graspsim/contact/compliant_contact_force.h"
+#include "graspsim/contact/rigid_contact_set.h"
 #include "graspsim/control/grasp_controller.h"
 #include "graspsim/grasp/limited_bushing.h"
 #include "graspsim/grasp/limited_weld.h"
 #include "graspsim/scenario/scenario.h"
 #include "graspsim/simulation/perturbation_force.h"
 #include "graspsim/simulation/simulation_options.h"
+#include "graspsim/system/implicit_joint_impedance.h"
 #include "graspsim/system/multibody_model.h"
 
 #include <simbody/Simbody.h>
@@ -56,7 +65,18 @@ public:
     const SimTK::MultibodySystem& getSystem() const { return model_.getSystem(); }
     /// The object's body; its frame O is at its centre of mass.
     const SimTK::MobilizedBody& getObject() const { return object_; }
+    /// The compliant contact element; an empty handle with ContactModel::Rigid.
     const contact::CompliantContactForce& getContacts() const { return contacts_; }
+    ContactModel getContactModel() const { return contactModel_; }
+    /// The rigid contacts; empty with ContactModel::Compliant.
+    const contact::RigidContactSet& getRigidContacts() const { return rigidContacts_; }
+    /// The implicit joint impedance element; an empty handle with ContactModel::Compliant.
+    const system::ImplicitJointImpedance& getImpedance() const { return impedance_; }
+    /// Every finger-object contact at `state` with its forces, from the contact model in use
+    /// (rigid: from the multipliers of the step that produced `state`). Needs Stage::Velocity.
+    std::vector<contact::ContactReport> findContactReports(const SimTK::State& state) const;
+    /// The IK grasp controller (for steppers that run no event handlers).
+    const control::GraspController& getController() const { return *controller_; }
     const control::IkTiming& getIkTiming() const { return ikTiming_; }
     /// Names of the end-effectors that have goals, in goal order.
     const std::vector<std::string>& getGoalEndEffectors() const { return goalEndEffectors_; }
@@ -94,11 +114,15 @@ private:
     void addController(const SimulationOptions& options);
     void addBushing();
     void addWeld();
+    void addImplicitImpedance();
 
     const scenario::Scenario& scenario_;
     system::MultibodyModel model_;
     SimTK::MobilizedBody::Free object_;
+    ContactModel contactModel_ = ContactModel::Compliant;
     contact::CompliantContactForce contacts_;
+    contact::RigidContactSet rigidContacts_;
+    system::ImplicitJointImpedance impedance_;
     std::unique_ptr<control::JointPdController> pd_;
     std::unique_ptr<control::FingertipIk> ik_;
     control::GraspController* controller_ = nullptr;  // owned by the system (full) or ownedController_ (approx)

@@ -91,7 +91,9 @@ using SampleObserver = std::function<void(const GraspScene& scene, const SimTK::
 /// Runs the scenario with the chosen implicit integrator (SimulationOptions::integrator: Simbody's
 /// CPodes by default, or the SUNDIALS CVODE reference) at the scenario's accuracy,
 /// sampling every output interval, at the perturbation's start and end, and at the object's
-/// release. A numerical failure (a non-finite state, an integrator that cannot step) ends the
+/// release. With ContactModel::Rigid: Simbody's SemiExplicitEulerTimeStepper at the fixed
+/// kRigidStepSize with the same samples (rigid_stepping.h); summary.steps counts its steps.
+/// A numerical failure (a non-finite state, an integrator that cannot step) ends the
 /// run early: the result keeps every sample so far and summary.complete is false.
 /// @throws graspsim::InputError for options the scenario cannot take (before simulating).
 SimulationResult runGraspSimulation(const scenario::Scenario& scenario, const SimulationOptions& options,

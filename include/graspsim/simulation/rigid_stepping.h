@@ -1,0 +1,65 @@
+#pragma once
+/// @file
+/// Stepping a grasp scene with rigid contact: Simbody's SemiExplicitEulerTimeStepper (PGS
+/// impulse solver) at a fixed step, with everything that stepper does not do itself.
+///
+/// The stepper takes exactly one step per stepTo() and has no event handling, so this loop
+///  - takes steps of the fixed size h, shortened to land exactly on every time where an input
+///    jumps or the controller acts (the caller's targets: output samples, the release, the
+///    perturbation's start and end) and on every IK update;
+///  - runs the IK grasp controller every ik_interval (GraspController::updateTargets(); the
+///    targets are a Stage::Dynamics change, picked up by the next step);
+///  - releases the object (an Instance-stage change) and re-initializes the stepper;
+///  - tells the implicit joint impedance the size of each step and, after it, the step's
+///    constraint forces (system/implicit_joint_impedance.h);
+///  - silences fd 1 while stepping (system/silenced_stdout.h: Debian's Simbody prints a debug
+///    trace at every step).
+///
+/// Stages: after stepTo() the state is realized to Stage::Dynamics and holds the last step's
+/// multipliers (contact forces), as GraspScene::findContactReports() needs.
+#include "graspsim/simulation/grasp_scene.h"
+
+#include <simbody/Simbody.h>
+
+namespace graspsim::simulation {
+
+/// The rigid model's fixed step (s). With the joint impedance implicit, the step is limited by
+/// accuracy, not stability: 1e-4 s is a hundredth of the fingers' impedance time constant
+/// (PD kd / kp = 5 ms in ball-clutch) and of the IK interval, and a fingertip closing at
+/// 0.1 m/s moves 10 micrometres per step, the contact tolerance below.
+constexpr double kRigidStepSize = 1e-4;
+
+/// Gap (m) within which a rigid contact counts as touching (proximal) for the next step: the
+/// stepper's constraint tolerance. Small against the compliant model's millimetre-scale
+/// penetrations, and about one step of a closing fingertip, so contacts are caught as they close.
+constexpr double kRigidContactTolerance = 1e-5;
+
+/// Fixed-step rigid-contact stepping of one GraspScene built with ContactModel::Rigid.
+class RigidStepper {
+public:
+    /// @throws graspsim::InputError if the scene was not built for rigid contact or h <= 0.
+    RigidStepper(const GraspScene& scene, double stepSize = kRigidStepSize);
+
+    /// Starts at `initial` (GraspScene::makeInitialState()); the next IK update is one
+    /// ik_interval later (makeInitialState() ran the first).
+    void initialize(const SimTK::State& initial);
+    /// Steps to time t (s) >= the current time, landing on it exactly.
+    void stepTo(double t);
+    /// Releases the object now (GraspScene::releaseObject()) and restarts the stepper.
+    void releaseObject();
+
+    const SimTK::State& getState() const { return stepper_.getState(); }
+    /// Steps taken since construction (s).
+    long getNumSteps() const { return steps_; }
+
+private:
+    void takeStep(double t);
+
+    const GraspScene& scene_;
+    SimTK::SemiExplicitEulerTimeStepper stepper_;
+    double stepSize_;
+    double nextIk_ = 0;
+    long steps_ = 0;
+};
+
+}  // namespace graspsim::simulation

@@ -1,0 +1,172 @@
+#include "graspsim/system/implicit_joint_impedance.h"
+
+#include "graspsim/error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace graspsim::system {
+
+using SimTK::State;
+using SimTK::Vector;
+
+class ImplicitJointImpedance::Implementation : public SimTK::Force::Custom::Implementation {
+public:
+    Implementation(const SimTK::GeneralForceSubsystem& forces, const SimTK::SimbodyMatterSubsystem& matter,
+                   std::vector<JointImpedance> joints)
+        : forces_(forces), matter_(matter), joints_(std::move(joints)) {}
+
+    void setSelf(SimTK::ForceIndex self) { self_ = self; }
+    const SimTK::SimbodyMatterSubsystem& getMatter() const { return matter_; }
+
+    void realizeTopology(State& state) const override {
+        stepSizeIndex_ = matter_.allocateDiscreteVariable(state, SimTK::Stage::Dynamics, new SimTK::Value<double>(0.0));
+        constraintForcesIndex_ =
+            matter_.allocateDiscreteVariable(state, SimTK::Stage::Dynamics, new SimTK::Value<Vector>(Vector()));
+    }
+
+    double getStepSize(const State& s) const {
+        return SimTK::Value<double>::downcast(matter_.getDiscreteVariable(s, stepSizeIndex_)).get();
+    }
+    void setStepSize(State& s, double h) const {
+        SimTK::Value<double>::updDowncast(matter_.updDiscreteVariable(s, stepSizeIndex_)).upd() = h;
+    }
+    const Vector& getConstraintForces(const State& s) const {
+        return SimTK::Value<Vector>::downcast(matter_.getDiscreteVariable(s, constraintForcesIndex_)).get();
+    }
+    Vector& updConstraintForces(State& s) const {
+        return SimTK::Value<Vector>::updDowncast(matter_.updDiscreteVariable(s, constraintForcesIndex_)).upd();
+    }
+
+    void calcForce(const State& s, SimTK::Vector_<SimTK::SpatialVec>&, SimTK::Vector_<SimTK::Vec3>&,
+                   Vector& mobilityForces) const override {
+        if (getStepSize(s) == 0) return;
+        mobilityForces += calcCorrection(s);
+    }
+
+    SimTK::Real calcPotentialEnergy(const State&) const override { return 0; }
+    bool dependsOnlyOnPositions() const override { return false; }
+
+    Vector calcCorrection(const State& s) const {
+        const double h = getStepSize(s);
+        const int nu = s.getNU();
+        Vector X(nu, 0.0);
+        if (h == 0) return X;
+        Vector K(nu, 0.0), C(nu, 0.0);
+        addImpedance(s, K, C);
+        // Right-hand side of (1): F - h K u, F including last step's constraint forces.
+        Vector rhs = calcGeneralizedForce(s);
+        const Vector& fc = getConstraintForces(s);
+        if (fc.size() == nu) rhs += fc;
+        const Vector& u = s.getU();
+        SimTK::Matrix A;
+        matter_.calcM(s, A);
+        for (int i = 0; i < nu; ++i) {
+            if (K[i] == 0 && C[i] == 0) continue;
+            rhs[i] -= h * K[i] * u[i];
+            A(i, i) += h * C[i] + h * h * K[i];
+        }
+        Vector w;
+        SimTK::FactorLU(A).solve(rhs, w);
+        for (int i = 0; i < nu; ++i) {
+            if (K[i] == 0 && C[i] == 0) continue;
+            X[i] = -h * K[i] * u[i] - (h * C[i] + h * h * K[i]) * w[i];
+        }
+        return X;
+    }
+
+private:
+    // Diagonal joint-space K and C: each joint's constant part plus its stop's linearization
+    // (stop force -k x (1 + d u) for a violation x: -dtau/dq = k (1 + d u) ~ k, -dtau/du = k d x).
+    void addImpedance(const State& s, Vector& K, Vector& C) const {
+        for (const JointImpedance& j : joints_) {
+            const SimTK::MobilizedBody& mobod = matter_.getMobilizedBody(j.mobod);
+            if (mobod.getNumU(s) != 1)
+                throw InputError("implicit joint impedance: mobilized body " + std::to_string(int(j.mobod)) + " has " +
+                                 std::to_string(mobod.getNumU(s)) + " mobilities; must have 1");
+            const int i = mobod.getFirstUIndex(s);
+            K[i] += j.stiffness;
+            C[i] += j.damping;
+            if (j.stop.isEmptyHandle() || forces_.isForceDisabled(s, j.stop.getForceIndex())) continue;
+            const double q = mobod.getOneQ(s, 0);
+            const double x = std::max(q - j.stop.getUpperBound(s), j.stop.getLowerBound(s) - q);
+            if (x <= 0) continue;
+            K[i] += j.stop.getStiffness(s);
+            C[i] += j.stop.getStiffness(s) * j.stop.getDissipation(s) * x;
+        }
+    }
+
+    // Every other enabled element's generalized force, minus the Coriolis and gyroscopic forces:
+    // F = -(residual of M udot = F at udot = 0).
+    Vector calcGeneralizedForce(const State& s) const {
+        Vector mobility(s.getNU(), 0.0);
+        SimTK::Vector_<SimTK::SpatialVec> bodies(matter_.getNumBodies(), SimTK::SpatialVec(SimTK::Vec3(0), SimTK::Vec3(0)));
+        SimTK::Vector_<SimTK::SpatialVec> elementBodies;
+        SimTK::Vector_<SimTK::Vec3> elementParticles;
+        Vector elementMobility;
+        for (SimTK::ForceIndex f(0); f < forces_.getNumForces(); ++f) {
+            if (f == self_ || forces_.isForceDisabled(s, f)) continue;
+            // calcForceContribution() zeroes its arrays: sum element by element.
+            forces_.getForce(f).calcForceContribution(s, elementBodies, elementParticles, elementMobility);
+            bodies += elementBodies;
+            mobility += elementMobility;
+        }
+        Vector residual;
+        matter_.calcResidualForceIgnoringConstraints(s, mobility, bodies, Vector(s.getNU(), 0.0), residual);
+        residual *= -1;
+        return residual;
+    }
+
+    const SimTK::GeneralForceSubsystem& forces_;
+    const SimTK::SimbodyMatterSubsystem& matter_;
+    std::vector<JointImpedance> joints_;
+    SimTK::ForceIndex self_;
+    mutable SimTK::DiscreteVariableIndex stepSizeIndex_, constraintForcesIndex_;
+};
+
+namespace {
+
+void checkJoint(const JointImpedance& j) {
+    const auto bad = [](double x) { return !(std::isfinite(x) && x >= 0); };
+    const std::string where = "implicit joint impedance, mobilized body " + std::to_string(int(j.mobod));
+    if (bad(j.stiffness)) throw InputError(where + ": stiffness (" + std::to_string(j.stiffness) + ") must be finite and >= 0");
+    if (bad(j.damping)) throw InputError(where + ": damping (" + std::to_string(j.damping) + ") must be finite and >= 0");
+}
+
+}  // namespace
+
+ImplicitJointImpedance::ImplicitJointImpedance(SimTK::GeneralForceSubsystem& forces,
+                                               const SimTK::SimbodyMatterSubsystem& matter,
+                                               std::vector<JointImpedance> joints) {
+    for (const JointImpedance& j : joints) checkJoint(j);
+    auto* implementation = new Implementation(forces, matter, std::move(joints));
+    static_cast<SimTK::Force::Custom&>(*this) = SimTK::Force::Custom(forces, implementation);
+    implementation->setSelf(getForceIndex());
+}
+
+const ImplicitJointImpedance::Implementation& ImplicitJointImpedance::getImpl() const {
+    return dynamic_cast<const Implementation&>(getImplementation());
+}
+
+void ImplicitJointImpedance::setStepSize(SimTK::State& state, double h) const {
+    if (!(std::isfinite(h) && h >= 0)) throw InputError("implicit joint impedance: step size (" + std::to_string(h) + " s) must be finite and >= 0");
+    getImpl().setStepSize(state, h);
+}
+
+double ImplicitJointImpedance::getStepSize(const SimTK::State& state) const { return getImpl().getStepSize(state); }
+
+void ImplicitJointImpedance::updateConstraintForces(SimTK::State& state) const {
+    const SimTK::SimbodyMatterSubsystem& matter = getImpl().getMatter();
+    Vector GtLambda;
+    if (state.getNMultipliers() > 0) matter.multiplyByGTranspose(state, state.updMultipliers(), GtLambda);
+    else GtLambda.resize(state.getNU()), GtLambda = 0;
+    GtLambda *= -1;
+    getImpl().updConstraintForces(state) = GtLambda;
+}
+
+SimTK::Vector ImplicitJointImpedance::calcCorrection(const SimTK::State& state) const {
+    return getImpl().calcCorrection(state);
+}
+
+}  // namespace graspsim::system
