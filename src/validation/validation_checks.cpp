@@ -50,6 +50,17 @@ void checkIntegrator(const RunRecord& r, std::vector<ValidationCheck>& checks) {
                                kIntegratorAngleError * kDeg, "deg", "issue 5, item 2"));
 }
 
+// Rigid against compliant contact, both full contact: the same verdict (issue 3), and the rigid
+// run's own hold bound without perturbation.
+void checkContactModel(const RunRecord& r, std::vector<ValidationCheck>& checks) {
+    checks.push_back(makeCheck(r, "run complete", r.summary.complete ? 1 : 0, "==", 1, "", "issue 3"));
+    checks.push_back(makeCheck(r, "hold/slide verdict equals compliant contact's", r.summary.held == r.referenceHeld ? 1 : 0,
+                               "==", 1, "", "issue 3, must show 4"));
+    if (r.run.options.perturbation != "none") return;
+    checks.push_back(makeCheck(r, "drift after settling", r.summary.objectDisplacement * kMm, "<=", kFullHoldDrift * kMm, "mm",
+                               "issue 3, must show 1"));
+}
+
 void checkLongHold(const RunRecord& r, std::vector<ValidationCheck>& checks) {
     checks.push_back(makeCheck(r, "long hold complete (no NaN, no step collapse)", r.summary.complete ? 1 : 0, "==", 1, "",
                                "issue 6, item 4"));
@@ -80,6 +91,8 @@ std::vector<ValidationCheck> checkRun(const RunRecord& record) {
         checkFullRun(record, checks);
     } else if (record.run.variant == "full-cvode") {
         checkIntegrator(record, checks);
+    } else if (record.run.variant == "full-rigid") {
+        checkContactModel(record, checks);
     } else {
         checkApproxRun(record, checks);
     }

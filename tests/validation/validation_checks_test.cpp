@@ -13,8 +13,8 @@ namespace {
 
 validation::RunRecord makeApproxRecord(double windowError) {
     validation::RunRecord r;
-    r.run.id = "ball-clutch_none_compliant_approx-bushing-merged";
-    r.run.reference = "ball-clutch_none_compliant_full";
+    r.run.id = "ball-clutch_none_approx-bushing-merged";
+    r.run.reference = "ball-clutch_none_full";
     r.run.options.perturbation = "none";
     r.summary.complete = true;
     r.summary.engaged = true;

@@ -29,6 +29,7 @@ TEST(ValidationPlan, FullSuiteCoversEveryExperimentPerturbationAndVariantWithRef
         }
         EXPECT_EQ(r.options.mode == simulation::SimulationMode::Full, r.variant.rfind("full", 0) == 0) << r.id;
         EXPECT_EQ(r.options.integrator == simulation::IntegratorChoice::Cvode, r.variant == "full-cvode") << r.id;
+        EXPECT_EQ(r.options.contact == simulation::ContactModel::Rigid, r.variant == "full-rigid") << r.id;
         EXPECT_EQ(r.options.approx.constraint == simulation::ApproxConstraint::Weld, r.variant.find("weld") != std::string::npos);
     }
     EXPECT_TRUE(runs.back().longHold);
@@ -39,13 +40,14 @@ TEST(ValidationPlan, QuickIsBallClutchWithoutPerturbationTwoSecondsAfterSettling
     validation::PlanOptions options;
     options.quick = true;
     const std::vector<validation::ValidationRun> runs = validation::makeValidationPlan(options);
-    ASSERT_EQ(runs.size(), validation::getAvailableVariants().size());
+    ASSERT_EQ(runs.size(), validation::getAvailableVariants().size() - 1);  // no full-rigid
     const double settle = scenario::findBuiltinScenario("ball-clutch").simulation.settleTime;
     for (const validation::ValidationRun& r : runs) {
         EXPECT_EQ(r.scenario, "ball-clutch");
         EXPECT_EQ(r.options.perturbation, "none");
         EXPECT_DOUBLE_EQ(r.options.duration, settle + 2.0);
         EXPECT_FALSE(r.longHold);
+        EXPECT_EQ(r.options.contact, simulation::ContactModel::Compliant);
     }
 }
 

@@ -12,7 +12,7 @@ namespace graspsim::validation {
 
 /// One simulation of the suite.
 struct ValidationRun {
-    std::string id;            ///< unique, also its folder under DIR/runs, e.g. "ball-clutch_f1_compliant_approx-bushing-merged"
+    std::string id;            ///< unique, also its folder under DIR/runs: <experiment>_<perturbation>_<variant>, e.g. "ball-clutch_f1_approx-bushing-merged"
     std::string scenario;      ///< built-in scenario name
     std::string variant;       ///< "full" or an approximation variant, e.g. "approx-bushing-merged"
     simulation::SimulationOptions options;
@@ -36,14 +36,16 @@ constexpr double kReferenceAccuracy = 1e-6;
 
 /// The experiments of the thesis (chapter 5): "ball-clutch", "phone-pinch".
 const std::vector<std::string>& getThesisExperiments();
-/// Every variant this build can run: "full" first, "full-cvode" (full contact on the CVODE
-/// reference integrator, compared with "full"; run without perturbation only), then the
-/// approximation variants "approx-<bushing|weld>-<merged|multi>".
+/// Every variant this build can run: "full" first (compliant contact, Simbody's CPodes: the
+/// reference of the others), "full-cvode" (the CVODE reference integrator; run without
+/// perturbation only), "full-rigid" (rigid contact), then the approximation variants
+/// "approx-<bushing|weld>-<merged|multi>" (compliant contact before engaging).
 const std::vector<std::string>& getAvailableVariants();
 
 /// The runs for `options`, references before the runs that compare against them.
-/// Quick: ball-clutch without perturbation, full vs every other variant, 2 s after settling.
-/// Full suite: every experiment x {none, its perturbations} x compliant contact x every variant,
+/// Quick: ball-clutch without perturbation, full vs every other variant except full-rigid (unless
+/// asked for), 2 s after settling.
+/// Full suite: every experiment x {none, its perturbations} x every variant,
 /// the scenario's whole duration, plus the long hold (ball-clutch, first approximation variant).
 /// @throws graspsim::InputError naming the option, the unknown value and the accepted ones.
 std::vector<ValidationRun> makeValidationPlan(const PlanOptions& options);
