@@ -42,6 +42,13 @@ SimTK::Vec6 calcFrictionLimits(const std::vector<contact::ContactReport>& report
     return SimTK::Vec6(angular, angular, angular, linear, linear, linear);
 }
 
+// Centroid of the contact points (Ground, m): where the friction acts, so where the constraint does.
+SimTK::Vec3 findContactCentroid(const std::vector<contact::ContactReport>& reports) {
+    SimTK::Vec3 centroid(0);
+    for (const contact::ContactReport& c : reports) centroid += c.p_G;
+    return centroid / static_cast<double>(reports.size());
+}
+
 }  // namespace
 
 GraspSwitch::GraspSwitch(const GraspScene& scene, const control::GraspController& controller,
@@ -114,6 +121,7 @@ void GraspSwitch::engage(SimTK::State& state, double quality) const {
     system.realize(state, SimTK::Stage::Velocity);
     const std::vector<contact::ContactReport> reports = scene_.getContacts().findContactReports(state);
     const SimTK::Vec6 limits = calcFrictionLimits(reports, scene_.getScenario().contact.dynamicFriction);
+    placeConstraintFrames(state, findContactCentroid(reports));
     scene_.getContacts().setPairsEnabled(state, allPairs(scene_.getContacts()), false);  // (b)
     setFingersMerged(state, true);                                                        // (c)
     enableConstraint(state, limits);                                                      // (d)
@@ -121,6 +129,19 @@ void GraspSwitch::engage(SimTK::State& state, double quality) const {
     events_.push_back({state.getTime(), "engage", quality,
                        format("Q >= Q_Th = %.6g N; limits %.6g N", qThreshold_, limits[3]) +
                            format(", %.6g N m", limits[0])});  // (e)
+}
+
+// F on the palm and M on the object coincide at the contact centroid, with O's orientation.
+void GraspSwitch::placeConstraintFrames(SimTK::State& state, const SimTK::Vec3& p_GC) const {
+    const SimTK::Transform& X_GO = scene_.getObject().getBodyTransform(state);
+    const SimTK::Transform& X_GH = scene_.getPalm().getBodyTransform(state);
+    const SimTK::Transform X_OM(SimTK::Rotation(), ~X_GO * p_GC);
+    const SimTK::Transform X_HF = ~X_GH * X_GO * X_OM;
+    if (const grasp::LimitedWeld* weld = scene_.getWeld()) {
+        weld->setFrames(state, X_HF, X_OM);
+    } else {
+        scene_.getBushing().setFrames(state, X_HF, X_OM);
+    }
 }
 
 // At the current relative pose, so nothing jumps: the bushing's anchor is reset there; the weld
