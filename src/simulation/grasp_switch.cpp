@@ -53,7 +53,7 @@ SimTK::Vec3 findContactCentroid(const std::vector<contact::ContactReport>& repor
 
 GraspSwitch::GraspSwitch(const GraspScene& scene, const control::GraspController& controller,
                          const ApproxOptions& options, double interval)
-    : SimTK::PeriodicEventHandler(interval), scene_(scene), controller_(controller), options_(options) {
+    : SimTK::PeriodicEventHandler(interval), scene_(scene), controller_(controller), options_(options), tracker_(scene) {
     if (!(options.qThreshold >= 0) || !(options.qMinimum >= 0)) {
         throw InputError("approx: the quality thresholds Q_Th and Q_M must be >= 0 (0 = automatic)");
     }
@@ -90,11 +90,7 @@ double GraspSwitch::calcQuality(const SimTK::State& state) const {
                                    scene_.getObject().getBodyTransform(state), quality);
 }
 
-double GraspSwitch::calcMonitoredQuality(const SimTK::State& state) const {
-    SimTK::State scratch = state;
-    scene_.getContacts().setPairsEnabled(scratch, allPairs(scene_.getContacts()), true);
-    return calcQuality(scratch);
-}
+double GraspSwitch::calcEngagedQuality(const SimTK::State& state) const { return tracker_.calcQuality(state); }
 
 bool GraspSwitch::isFullContact(const SimTK::State& state) const {
     scene_.getSystem().realize(state, SimTK::Stage::Velocity);
@@ -121,6 +117,7 @@ void GraspSwitch::engage(SimTK::State& state, double quality) const {
     system.realize(state, SimTK::Stage::Velocity);
     const std::vector<contact::ContactReport> reports = scene_.getContacts().findContactReports(state);
     const SimTK::Vec6 limits = calcFrictionLimits(reports, scene_.getScenario().contact.dynamicFriction);
+    tracker_.capture(state, reports);
     placeConstraintFrames(state, findContactCentroid(reports));
     scene_.getContacts().setPairsEnabled(state, allPairs(scene_.getContacts()), false);  // (b)
     setFingersMerged(state, true);                                                        // (c)
@@ -165,7 +162,8 @@ void GraspSwitch::enableConstraint(SimTK::State& state, const SimTK::Vec6& limit
 }
 
 void GraspSwitch::checkRelease(SimTK::State& state) const {
-    const double q = calcMonitoredQuality(state);
+    tracker_.measurePenetration(state);
+    const double q = calcEngagedQuality(state);
     const std::string reason = describeRelease(state, q);
     if (!reason.empty()) release(state, q, reason);
 }
@@ -186,6 +184,9 @@ std::string GraspSwitch::describeRelease(const SimTK::State& state, double quali
 }
 
 void GraspSwitch::release(SimTK::State& state, double quality, const std::string& reason) const {
+    const SimTK::MultibodySystem& system = scene_.getSystem();
+    system.realize(state, SimTK::Stage::Velocity);
+    const SimTK::Vec3 v_before = scene_.getObject().getBodyOriginVelocity(state);
     if (const grasp::LimitedWeld* weld = scene_.getWeld()) {
         weld->setEnabled(state, false);
     } else {
@@ -193,7 +194,17 @@ void GraspSwitch::release(SimTK::State& state, double quality, const std::string
     }
     setFingersMerged(state, false);
     scene_.getContacts().setPairsEnabled(state, allPairs(scene_.getContacts()), true);
-    events_.push_back({state.getTime(), "release", quality, reason});
+    events_.push_back({state.getTime(), "release", quality, reason, findVelocityJump(state, v_before)});
+}
+
+// The object's velocity as the integrator will restart from it: realized after the switch and
+// projected onto whatever constraints remain, as the TimeStepper's reinitialization does.
+double GraspSwitch::findVelocityJump(SimTK::State& state, const SimTK::Vec3& v_before) const {
+    const SimTK::MultibodySystem& system = scene_.getSystem();
+    system.realize(state, SimTK::Stage::Velocity);
+    system.projectU(state, 1e-12);
+    system.realize(state, SimTK::Stage::Velocity);
+    return (scene_.getObject().getBodyOriginVelocity(state) - v_before).norm();
 }
 
 // Locking at Motion::Position keeps each finger joint at its current angle (and zero rate

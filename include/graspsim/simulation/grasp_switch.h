@@ -33,11 +33,16 @@
 ///         centroid the same pull makes its real moment about the grip, and the verdicts agree;
 ///     (e) record an "engage" event.
 ///  - GRASPED (constraint enabled): IK is skipped (the fingers are locked, and skipping it is where
-///    the approximation saves its time). The contacts are still monitored without entering the
-///    dynamics: Q is evaluated on a scratch copy of the state with the pairs switched on. RELEASE
-///    (constraint off, fingers unlocked, contacts on, "release" event) when the object has moved
-///    more than releaseSlideDistance relative to the palm since engagement, when a fingertip is
-///    farther than the scenario's held tolerance from its goal on the object, or when Q < Q_M.
+///    the approximation saves its time). The contacts are still tracked without entering the
+///    dynamics (engaged_grasp_tracker.h): their penetration is measured on a scratch copy of the
+///    state with the pairs switched on, and Q is estimated from the constraint's reaction wrench
+///    distributed over the contacts captured at engagement. RELEASE (constraint off, fingers
+///    unlocked, contacts on, "release" event) when the object's centre of mass has moved more
+///    than releaseSlideDistance relative to the palm since engagement, when a fingertip is
+///    farther than the scenario's held tolerance from its goal on the object, or when that Q <
+///    Q_M. Nothing at the release changes a velocity (the constraint and the locks are switched
+///    off, contact comes back as a force), so the object's velocity is continuous; the event
+///    records the measured jump (GraspEvent::velocityJump) to show it.
 ///
 /// Q_Th: ApproxOptions::qThreshold, or automatically autoThresholdFraction times the quality of
 /// the first full-contact check at or after the scenario's settle_time (the thesis sets Q_Th by
@@ -50,6 +55,7 @@
 /// forward run (a TimeStepper never rewinds), as the run of grasp_simulation.h is.
 
 #include "graspsim/control/grasp_controller.h"
+#include "graspsim/simulation/engaged_grasp_tracker.h"
 #include "graspsim/simulation/simulation_options.h"
 
 #include <simbody/Simbody.h>
@@ -65,8 +71,11 @@ class GraspScene;
 struct GraspEvent {
     double time = 0;     ///< s
     std::string kind;    ///< "engage" or "release"
-    double quality = 0;  ///< grasp quality Q at the switch (N; monitored on a scratch state when releasing)
+    double quality = 0;  ///< grasp quality Q at the switch (N; when releasing, the engaged estimate)
     std::string reason;  ///< why, with the numbers
+    /// Release only: |v_after - v_before| of the object's centre of mass across the switch (m/s),
+    /// "after" being the state the integrator restarts from (realized and projected).
+    double velocityJump = 0;
 };
 
 /// The periodic event handler described in the file comment (owned by the System once added).
@@ -92,8 +101,11 @@ public:
 
     /// Grasp quality of the contacts active in `state` (N). Needs Stage::Velocity.
     double calcQuality(const SimTK::State& state) const;
-    /// Q of the contacts the pairs would produce if switched on (a scratch copy of `state`).
-    double calcMonitoredQuality(const SimTK::State& state) const;
+    /// Q while engaged (N): the constraint's wrench distributed over the tracked contacts
+    /// (EngagedGraspTracker::calcQuality). Realizes `state` to Stage::Acceleration.
+    double calcEngagedQuality(const SimTK::State& state) const;
+    /// The contacts tracked while engaged and the penetration measured so far.
+    const EngagedGraspTracker& getTracker() const { return tracker_; }
 
 private:
     void checkEngage(SimTK::State& state) const;
@@ -105,6 +117,7 @@ private:
     void release(SimTK::State& state, double quality, const std::string& reason) const;
     void setFingersMerged(SimTK::State& state, bool merged) const;
     std::string describeRelease(const SimTK::State& state, double quality) const;
+    double findVelocityJump(SimTK::State& state, const SimTK::Vec3& v_before) const;
 
     const GraspScene& scene_;
     const control::GraspController& controller_;
@@ -114,6 +127,7 @@ private:
     mutable double qMinimum_ = 0;
     mutable SimTK::Transform X_HO_engaged_;  // object pose in the palm frame at engagement
     mutable std::vector<GraspEvent> events_;
+    mutable EngagedGraspTracker tracker_;
 };
 
 }  // namespace graspsim::simulation
