@@ -49,20 +49,30 @@ SimTK::Vec3 findContactCentroid(const std::vector<contact::ContactReport>& repor
     return centroid / static_cast<double>(reports.size());
 }
 
+// The run's options over the scenario's approximation section: a value given to the run wins.
+ApproxOptions resolveOptions(const ApproxOptions& given, const scenario::ApproximationSpec& scenario) {
+    ApproxOptions options = given;
+    if (options.qThreshold == 0) options.qThreshold = scenario.qThreshold;
+    if (options.qMinimum == 0) options.qMinimum = scenario.qMinimum;
+    if (!options.relaxedAxes) options.relaxedAxes = scenario.relaxedAxes;
+    return options;
+}
+
 }  // namespace
 
 GraspSwitch::GraspSwitch(const GraspScene& scene, const control::GraspController& controller,
                          const ApproxOptions& options, double interval)
-    : SimTK::PeriodicEventHandler(interval), scene_(scene), controller_(controller), options_(options), tracker_(scene) {
-    if (!(options.qThreshold >= 0) || !(options.qMinimum >= 0)) {
+    : SimTK::PeriodicEventHandler(interval), scene_(scene), controller_(controller),
+      options_(resolveOptions(options, scene.getScenario().approximation)), tracker_(scene) {
+    if (!(options_.qThreshold >= 0) || !(options_.qMinimum >= 0)) {
         throw InputError("approx: the quality thresholds Q_Th and Q_M must be >= 0 (0 = automatic)");
     }
-    if (!(options.releaseSlideDistance > 0)) throw InputError("approx: the release slide distance must be > 0 m");
-    if (options.qThreshold > 0 && options.qMinimum > options.qThreshold) {
-        throw InputError(format("approx: Q_M (%g N) must not exceed Q_Th (%g N)", options.qMinimum, options.qThreshold));
+    if (!(options_.releaseSlideDistance > 0)) throw InputError("approx: the release slide distance must be > 0 m");
+    if (options_.qThreshold > 0 && options_.qMinimum >= options_.qThreshold) {
+        throw InputError(format("approx: Q_M (%g N) must be below Q_Th (%g N)", options_.qMinimum, options_.qThreshold));
     }
-    qThreshold_ = options.qThreshold;
-    qMinimum_ = options.qMinimum > 0 ? options.qMinimum : options.hysteresisFraction * qThreshold_;
+    qThreshold_ = options_.qThreshold;
+    qMinimum_ = options_.qMinimum > 0 ? options_.qMinimum : options_.hysteresisFraction * qThreshold_;
     const model::ModelDescription& d = scene.getModel().getDescription();
     for (const std::string& e : scene.getGoalEndEffectors()) goalBodies_.push_back(d.findEndEffector(e)->body);
 }
@@ -147,7 +157,7 @@ void GraspSwitch::enableConstraint(SimTK::State& state, const SimTK::Vec6& limit
     const SimTK::MultibodySystem& system = scene_.getSystem();
     if (const grasp::LimitedWeld* weld = scene_.getWeld()) {
         weld->setLimits(state, limits);
-        for (int k = 0; k < 6; ++k) weld->setAxisLocked(state, static_cast<grasp::WeldAxis>(k), !options_.relaxedAxes[k]);
+        for (int k = 0; k < 6; ++k) weld->setAxisLocked(state, static_cast<grasp::WeldAxis>(k), !(*options_.relaxedAxes)[k]);
         weld->setEnabled(state, true);  // last: axes over their limits start sliding at once
         system.realize(state, SimTK::Stage::Position);
         return;
@@ -157,7 +167,7 @@ void GraspSwitch::enableConstraint(SimTK::State& state, const SimTK::Vec6& limit
     system.realize(state, SimTK::Stage::Position);
     bushing.resetAnchor(state);
     bushing.setLimits(state, limits);
-    for (int k = 0; k < 6; ++k) bushing.setAxisLocked(state, static_cast<grasp::BushingAxis>(k), !options_.relaxedAxes[k]);
+    for (int k = 0; k < 6; ++k) bushing.setAxisLocked(state, static_cast<grasp::BushingAxis>(k), !(*options_.relaxedAxes)[k]);
     system.realize(state, SimTK::Stage::Position);
 }
 
