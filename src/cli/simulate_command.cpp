@@ -121,8 +121,8 @@ int SimulateCommand::run() const {
     options.approx.constraint = simulation::parseApproxConstraint(o.constraint, "--constraint");
     options.approx.qThreshold = parseQuality(o.qThreshold, "--q-threshold");
     options.approx.qMinimum = parseQuality(o.qMinimum, "--q-minimum");
-    if (options.approx.qThreshold > 0 && options.approx.qMinimum > options.approx.qThreshold) {
-        throw InputError("--q-minimum: value " + o.qMinimum + " is not accepted; Q_M must not exceed --q-threshold " + o.qThreshold);
+    if (options.approx.qThreshold > 0 && options.approx.qMinimum >= options.approx.qThreshold) {
+        throw InputError("--q-minimum: value " + o.qMinimum + " is not accepted; Q_M must be below --q-threshold " + o.qThreshold);
     }
     prepareFolder(o.out);
     const simulation::SimulationResult result = simulation::runGraspSimulation(scenario, options, makeProgress());

@@ -19,6 +19,12 @@ struct WeldModes {
     std::array<int, 6> direction = {0, 0, 0, 0, 0, 0};
 };
 
+// Instance stage: where the weld attaches, frame F on H and frame M on O.
+struct WeldFrames {
+    SimTK::Transform X_HF;
+    SimTK::Transform X_OM;
+};
+
 // Dynamics stage: what the sliding force and the witnesses read.
 struct WeldSettings {
     SimTK::Vec6 limits = SimTK::Vec6(SimTK::Infinity);
@@ -44,7 +50,7 @@ class LimitedWeld::Elements : public SimTK::Force::Custom::Implementation {
 public:
     Elements(const SimTK::GeneralForceSubsystem& forces, const SimTK::MobilizedBody& H,
              const SimTK::Transform& X_HF, const SimTK::MobilizedBody& O, const SimTK::Transform& X_OM)
-        : forces_(forces), bodyH_(H), X_HF_(X_HF), bodyO_(O), X_OM_(X_OM) {}
+        : forces_(forces), bodyH_(H), defaultFrames_{X_HF, X_OM}, bodyO_(O) {}
 
     void realizeTopology(SimTK::State& state) const override {
         modesIndex_ = forces_.allocateDiscreteVariable(state, SimTK::Stage::Instance,
@@ -53,6 +59,15 @@ public:
                                                           new SimTK::Value<WeldSettings>(WeldSettings()));
         engagedIndex_ = forces_.allocateDiscreteVariable(state, SimTK::Stage::Dynamics,
                                                          new SimTK::Value<SimTK::Transform>());
+        framesIndex_ = forces_.allocateDiscreteVariable(state, SimTK::Stage::Instance,
+                                                        new SimTK::Value<WeldFrames>(defaultFrames_));
+    }
+
+    const WeldFrames& getFrames(const SimTK::State& s) const {
+        return SimTK::Value<WeldFrames>::downcast(forces_.getDiscreteVariable(s, framesIndex_)).get();
+    }
+    void setFrames(SimTK::State& s, const WeldFrames& frames) const {
+        SimTK::Value<WeldFrames>::updDowncast(forces_.updDiscreteVariable(s, framesIndex_)).upd() = frames;
     }
 
     const WeldModes& getModes(const SimTK::State& s) const {
@@ -74,10 +89,11 @@ public:
         SimTK::Value<SimTK::Transform>::updDowncast(forces_.updDiscreteVariable(s, engagedIndex_)).upd() = X_FM;
     }
 
-    SimTK::Rotation findR_GM(const SimTK::State& s) const { return bodyO_.getBodyRotation(s) * X_OM_.R(); }
-    SimTK::Vec3 findP_GM(const SimTK::State& s) const { return bodyO_.getBodyTransform(s) * X_OM_.p(); }
+    SimTK::Rotation findR_GM(const SimTK::State& s) const { return bodyO_.getBodyRotation(s) * getFrames(s).X_OM.R(); }
+    SimTK::Vec3 findP_GM(const SimTK::State& s) const { return bodyO_.getBodyTransform(s) * getFrames(s).X_OM.p(); }
     SimTK::Transform findX_FM(const SimTK::State& s) const {
-        return ~(bodyH_.getBodyTransform(s) * X_HF_) * (bodyO_.getBodyTransform(s) * X_OM_);
+        const WeldFrames& frames = getFrames(s);
+        return ~(bodyH_.getBodyTransform(s) * frames.X_HF) * (bodyO_.getBodyTransform(s) * frames.X_OM);
     }
 
     // r: O's motion relative to H along M's axes (the quantity each stuck constraint zeroes).
@@ -131,12 +147,12 @@ public:
 private:
     const SimTK::GeneralForceSubsystem& forces_;
     SimTK::MobilizedBody bodyH_;
-    SimTK::Transform X_HF_;
+    WeldFrames defaultFrames_;
     SimTK::MobilizedBody bodyO_;
-    SimTK::Transform X_OM_;
     mutable SimTK::DiscreteVariableIndex modesIndex_;
     mutable SimTK::DiscreteVariableIndex settingsIndex_;
     mutable SimTK::DiscreteVariableIndex engagedIndex_;
+    mutable SimTK::DiscreteVariableIndex framesIndex_;
 };
 
 // One witness per axis, negative while the axis's mode is consistent: stuck, |lambda| - L;
@@ -180,7 +196,11 @@ LimitedWeld::LimitedWeld(SimTK::MultibodySystem& system, SimTK::SimbodyMatterSub
     elements_ = new Elements(forces, bodyH, X_HF, bodyO, X_OM);
     force_ = SimTK::Force::Custom(forces, elements_);
     for (int k = 0; k < 6; ++k) {
-        constraints_[k] = SimTK::Constraint::Custom(new WeldAxisConstraint(matter, bodyH, bodyO, X_OM, k));
+        const Elements* elements = elements_;
+        const auto findX_OM = [elements](const SimTK::State& s) -> const SimTK::Transform& {
+            return elements->getFrames(s).X_OM;
+        };
+        constraints_[k] = SimTK::Constraint::Custom(new WeldAxisConstraint(matter, bodyH, bodyO, findX_OM, k));
         constraints_[k].setDisabledByDefault(true);
         system.addEventHandler(new AxisEvent(*this, k));
     }
@@ -205,6 +225,18 @@ void LimitedWeld::setEnabled(SimTK::State& state, bool enabled) const {
     system_.realize(state, SimTK::Stage::Velocity);
     system_.projectU(state, kProjectionAccuracy);
     releaseOverloadedAxes(state);
+}
+
+void LimitedWeld::setFrames(SimTK::State& state, const SimTK::Transform& X_HF, const SimTK::Transform& X_OM) const {
+    elements_->setFrames(state, WeldFrames{X_HF, X_OM});
+}
+
+const SimTK::Transform& LimitedWeld::getFrameOnH(const SimTK::State& state) const {
+    return elements_->getFrames(state).X_HF;
+}
+
+const SimTK::Transform& LimitedWeld::getFrameOnO(const SimTK::State& state) const {
+    return elements_->getFrames(state).X_OM;
 }
 
 const SimTK::Vec6& LimitedWeld::getLimits(const SimTK::State& state) const {

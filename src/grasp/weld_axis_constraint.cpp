@@ -1,5 +1,7 @@
 #include "weld_axis_constraint.h"
 
+#include <utility>
+
 namespace graspsim::grasp {
 
 // Everything is measured in the constraint's ancestor frame A (Ground when one body hangs from
@@ -7,19 +9,19 @@ namespace graspsim::grasp {
 // measured in, so neither do the equations.
 
 WeldAxisConstraint::WeldAxisConstraint(SimTK::SimbodyMatterSubsystem& matter, const SimTK::MobilizedBody& bodyH,
-                                       const SimTK::MobilizedBody& bodyO, const SimTK::Transform& X_OM, int axis)
-    : Implementation(matter, 0, 1, 0), X_OM_(X_OM), axis_(axis) {
+                                       const SimTK::MobilizedBody& bodyO, FrameOnO findX_OM, int axis)
+    : Implementation(matter, 0, 1, 0), findX_OM_(std::move(findX_OM)), axis_(axis) {
     bodyH_ = addConstrainedBody(bodyH);
     bodyO_ = addConstrainedBody(bodyO);
 }
 
 SimTK::UnitVec3 WeldAxisConstraint::findAxis_A(const SimTK::State& state) const {
-    const SimTK::Rotation R_AM = getBodyRotationFromState(state, bodyO_) * X_OM_.R();
+    const SimTK::Rotation R_AM = getBodyRotationFromState(state, bodyO_) * findX_OM_(state).R();
     return R_AM.getAxisUnitVec(SimTK::CoordinateAxis(axis_ % 3));
 }
 
 SimTK::Vec3 WeldAxisConstraint::findP_OM_A(const SimTK::State& state) const {
-    return getBodyRotationFromState(state, bodyO_) * X_OM_.p();
+    return getBodyRotationFromState(state, bodyO_) * findX_OM_(state).p();
 }
 
 void WeldAxisConstraint::calcVelocityErrors(const SimTK::State& state,
@@ -83,7 +85,7 @@ void WeldAxisConstraint::addInVelocityConstraintForces(
     }
     const SimTK::Vec3 p_GM = getBodyOriginLocationFromState(state, bodyO_) + findP_OM_A(state);
     const SimTK::Transform& X_AH = getBodyTransformFromState(state, bodyH_);
-    addInStationForce(state, bodyO_, X_OM_.p(), f, bodyForcesInA);
+    addInStationForce(state, bodyO_, findX_OM_(state).p(), f, bodyForcesInA);
     addInStationForce(state, bodyH_, ~X_AH * p_GM, -f, bodyForcesInA);
 }
 

@@ -11,13 +11,18 @@
 
 #include <simbody/Simbody.h>
 
+#include <functional>
+
 namespace graspsim::grasp {
 
 class WeldAxisConstraint : public SimTK::Constraint::Custom::Implementation {
 public:
-    // `axis` 0-2: rotation about M's x, y, z; 3-5: translation along them. M is X_OM on bodyO.
+    // Pose X_OM of frame M on bodyO in a state (the weld keeps it in a state variable).
+    using FrameOnO = std::function<const SimTK::Transform&(const SimTK::State&)>;
+
+    // `axis` 0-2: rotation about M's x, y, z; 3-5: translation along them. M is findX_OM(state) on bodyO.
     WeldAxisConstraint(SimTK::SimbodyMatterSubsystem& matter, const SimTK::MobilizedBody& bodyH,
-                       const SimTK::MobilizedBody& bodyO, const SimTK::Transform& X_OM, int axis);
+                       const SimTK::MobilizedBody& bodyO, FrameOnO findX_OM, int axis);
 
     Implementation* clone() const override { return new WeldAxisConstraint(*this); }
 
@@ -39,7 +44,7 @@ private:
 
     SimTK::ConstrainedBodyIndex bodyH_;
     SimTK::ConstrainedBodyIndex bodyO_;
-    SimTK::Transform X_OM_;
+    FrameOnO findX_OM_;
     int axis_;
 };
 

@@ -110,11 +110,18 @@ std::string formatSummaryJson(const simulation::SimulationSummary& s) {
     j["integrator"] = s.integrator;
     j["integrator_statistics"] = formatIntegratorStatistics(s.integratorStatistics);
     if (s.mode != "approx") return j.dump(2) + "\n";
+    j["constraint"] = s.constraint;
     j["engaged"] = s.engaged;
     j["engage_time_s"] = s.engaged ? nlohmann::ordered_json(s.engageTime) : nlohmann::ordered_json(nullptr);
     j["release_time_s"] = s.releaseTime >= 0 ? nlohmann::ordered_json(s.releaseTime) : nlohmann::ordered_json(nullptr);
     j["q_at_engage_n"] = s.qAtEngage;
     j["q_threshold_n"] = s.qThreshold;
+    j["q_minimum_n"] = s.qMinimum;
+    j["min_engaged_grasp_quality_n"] = s.minEngagedGraspQuality;
+    j["engaged_penetration_at_engage_m"] = s.engagedPenetrationAtEngage;
+    j["max_engaged_penetration_m"] = s.maxEngagedPenetration;
+    j["max_engaged_penetration_growth_m"] = s.maxEngagedPenetrationGrowth;
+    j["max_release_velocity_jump_m_s"] = s.maxReleaseVelocityJump;
     j["approx_step_us"] = s.approxStepUs;
     j["approx_steps"] = s.approxSteps;
     j["approx_wall_s_per_sim_s"] = s.approxWallPerSimSecond;
@@ -123,10 +130,11 @@ std::string formatSummaryJson(const simulation::SimulationSummary& s) {
 
 std::string formatEventsCsv(const simulation::SimulationResult& result) {
     std::ostringstream out;
-    out << "time_s,event,grasp_quality_n,reason\n";
+    out << "time_s,event,grasp_quality_n,velocity_jump_m_s,reason\n";
     for (const simulation::GraspEvent& e : result.events) {
         std::ostringstream row;
         put(row, e.quality);
+        put(row, e.velocityJump);
         char time[32];
         std::snprintf(time, sizeof time, "%.17g", e.time);
         // The reason is free text with commas: quote it (RFC 4180; it contains no quotes).

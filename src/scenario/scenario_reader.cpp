@@ -246,11 +246,39 @@ std::vector<Perturbation> readPerturbations(const YamlField& root, const Simulat
     return perturbations;
 }
 
+std::array<bool, 6> readRelaxedAxes(const YamlField& field) {
+    std::vector<std::string> names(std::begin(ApproximationSpec::kAxisNames), std::end(ApproximationSpec::kAxisNames));
+    const std::string accepted = "a list of axis names out of " + joinNames(names);
+    std::array<bool, 6> relaxed{false, false, false, false, false, false};
+    for (const YamlField& item : field.getItems(accepted)) {
+        const std::string name = item.asText(accepted);
+        const auto it = std::find(names.begin(), names.end(), name);
+        if (it == names.end()) item.reject("axis names are " + joinNames(names));
+        relaxed[static_cast<std::size_t>(it - names.begin())] = true;
+    }
+    return relaxed;
+}
+
+ApproximationSpec readApproximation(const YamlField& root) {
+    const YamlField section = root.getSection("approximation", {"relaxed_axes", "q_threshold", "q_minimum"});
+    ApproximationSpec approximation;
+    if (const std::optional<YamlField> axes = section.find("relaxed_axes")) approximation.relaxedAxes = readRelaxedAxes(*axes);
+    approximation.qThreshold = section.findNumber("q_threshold", NumberRule::nonNegative("Q_Th (0 = automatic)", "N"),
+                                                  approximation.qThreshold);
+    NumberRule minimum = NumberRule::nonNegative("Q_M (0 = half of Q_Th)", "N");
+    if (approximation.qThreshold > 0) {
+        minimum = NumberRule::closed("Q_M (0 = half of Q_Th; below approximation.q_threshold)", "N", 0, approximation.qThreshold);
+        minimum.upperOpen = true;
+    }
+    approximation.qMinimum = section.findNumber("q_minimum", minimum, approximation.qMinimum);
+    return approximation;
+}
+
 }  // namespace
 
 Scenario readScenario(const YamlField& root) {
     root.requireMap({"name", "description", "world", "subject", "object", "grasp_pose", "goals", "perturbations",
-                     "contact", "controller", "simulation"});
+                     "contact", "controller", "simulation", "approximation"});
     Scenario scenario;
     scenario.source = root.getSource();
     scenario.name = root.require("name", "give the scenario a name").asText("name must be text");
@@ -268,6 +296,7 @@ Scenario readScenario(const YamlField& root) {
     scenario.controller = readController(root, scenario.object);
     scenario.simulation = readSimulation(root, scenario.controller);
     scenario.perturbations = readPerturbations(root, scenario.simulation);
+    scenario.approximation = readApproximation(root);
     return scenario;
 }
 

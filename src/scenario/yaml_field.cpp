@@ -137,6 +137,18 @@ std::vector<YamlField> YamlField::getEntries() const {
     return entries;
 }
 
+std::vector<YamlField> YamlField::getItems(const std::string& accepted) const {
+    if (!node_.IsSequence()) reject(accepted);
+    std::vector<YamlField> items;
+    for (std::size_t i = 0; i < node_.size(); ++i) {
+        const YAML::Node item = node_[i];
+        const std::string key = key_ + "[" + std::to_string(i) + "]";
+        const std::string path = path_.empty() ? key : path_ + "[" + std::to_string(i) + "]";
+        items.push_back(YamlField(item, source_, path, key, toLine(item.Mark(), line_)));
+    }
+    return items;
+}
+
 void YamlField::requireMap(const std::vector<std::string>& accepted) const {
     const std::string owner = path_.empty() ? "a scenario file" : "'" + path_ + "'";
     if (!node_.IsMap()) reject(owner + " must be a map with the keys: " + joinNames(accepted));

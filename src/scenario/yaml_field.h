@@ -66,6 +66,10 @@ public:
     // each key given once.
     std::vector<YamlField> getEntries() const;
 
+    // The items of a sequence, each with its place ("approximation.relaxed_axes[2]"); `accepted`
+    // says what the sequence must hold when this is not a sequence.
+    std::vector<YamlField> getItems(const std::string& accepted) const;
+
     double asNumber(const NumberRule& rule) const;
     model::Vec3 asVec3(const NumberRule& rule) const;  // a sequence of three numbers
     std::string asText(const std::string& accepted) const;

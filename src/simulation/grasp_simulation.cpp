@@ -54,6 +54,14 @@ public:
         for (const std::string& j : result_.jointNames) sample.jointAngles.push_back(scene_.getModel().getJointPosition(s, j));
         ContactSample contacts{s.getTime(), scene_.findContactReports(s)};
         sample.graspQuality = calcContactGraspQuality(contacts.contacts, X_GO, qualityOptions_);
+        const GraspSwitch* grasp = scene_.getGraspSwitch();
+        if (grasp && grasp->isEngaged(s)) {
+            // No contacts are solved while engaged: record the estimate the release test uses.
+            sample.graspQuality = grasp->calcEngagedQuality(s);
+            const double q = sample.graspQuality;
+            double& lowest = result_.summary.minEngagedGraspQuality;
+            lowest = engagedSamples_++ == 0 ? q : std::min(lowest, q);
+        }
         result_.summary.maxGraspQuality = std::max(result_.summary.maxGraspQuality, sample.graspQuality);
         result_.trajectory.push_back(std::move(sample));
         for (const auto& c : contacts.contacts) result_.summary.maxPenetration = std::max(result_.summary.maxPenetration, c.depth);
@@ -64,6 +72,7 @@ private:
     const GraspScene& scene_;
     SimulationResult& result_;
     grasp::QualityOptions qualityOptions_;  // box friction cone, smallest singular value
+    long engagedSamples_ = 0;
 };
 
 void checkFinite(const SimTK::State& s, const std::string& lastEvent) {
@@ -182,6 +191,7 @@ SimulationSummary makeSummaryHeader(const scenario::Scenario& scenario, const Si
     summary.mode = toString(options.mode);
     summary.perturbation = options.perturbation;
     summary.settleTime = std::min(scenario.simulation.settleTime, duration);
+    if (options.mode == SimulationMode::Approx) summary.constraint = toString(options.approx.constraint);
     return summary;
 }
 
@@ -208,6 +218,12 @@ void summarizeSwitch(const GraspScene& scene, const PhaseTimer& timer, Simulatio
     if (!grasp) return;
     result.events = grasp->getEvents();
     summary.qThreshold = grasp->getQualityThreshold();
+    summary.qMinimum = grasp->getQualityMinimum();
+    const PenetrationStats& penetration = grasp->getTracker().getPenetration();
+    summary.engagedPenetrationAtEngage = penetration.atEngage;
+    summary.maxEngagedPenetration = penetration.maxWhileEngaged;
+    summary.maxEngagedPenetrationGrowth = penetration.maxGrowth;
+    for (const GraspEvent& e : result.events) summary.maxReleaseVelocityJump = std::max(summary.maxReleaseVelocityJump, e.velocityJump);
     if (result.events.empty()) return;
     summary.engaged = true;
     summary.engageTime = result.events.front().time;

@@ -42,20 +42,37 @@ SimTK::Vec6 calcFrictionLimits(const std::vector<contact::ContactReport>& report
     return SimTK::Vec6(angular, angular, angular, linear, linear, linear);
 }
 
+// Centroid of the contact points (Ground, m): where the friction acts, so where the constraint does.
+SimTK::Vec3 findContactCentroid(const std::vector<contact::ContactReport>& reports) {
+    SimTK::Vec3 centroid(0);
+    for (const contact::ContactReport& c : reports) centroid += c.p_G;
+    return centroid / static_cast<double>(reports.size());
+}
+
+// The run's options over the scenario's approximation section: a value given to the run wins.
+ApproxOptions resolveOptions(const ApproxOptions& given, const scenario::ApproximationSpec& scenario) {
+    ApproxOptions options = given;
+    if (options.qThreshold == 0) options.qThreshold = scenario.qThreshold;
+    if (options.qMinimum == 0) options.qMinimum = scenario.qMinimum;
+    if (!options.relaxedAxes) options.relaxedAxes = scenario.relaxedAxes;
+    return options;
+}
+
 }  // namespace
 
 GraspSwitch::GraspSwitch(const GraspScene& scene, const control::GraspController& controller,
                          const ApproxOptions& options, double interval)
-    : SimTK::PeriodicEventHandler(interval), scene_(scene), controller_(controller), options_(options) {
-    if (!(options.qThreshold >= 0) || !(options.qMinimum >= 0)) {
+    : SimTK::PeriodicEventHandler(interval), scene_(scene), controller_(controller),
+      options_(resolveOptions(options, scene.getScenario().approximation)), tracker_(scene) {
+    if (!(options_.qThreshold >= 0) || !(options_.qMinimum >= 0)) {
         throw InputError("approx: the quality thresholds Q_Th and Q_M must be >= 0 (0 = automatic)");
     }
-    if (!(options.releaseSlideDistance > 0)) throw InputError("approx: the release slide distance must be > 0 m");
-    if (options.qThreshold > 0 && options.qMinimum > options.qThreshold) {
-        throw InputError(format("approx: Q_M (%g N) must not exceed Q_Th (%g N)", options.qMinimum, options.qThreshold));
+    if (!(options_.releaseSlideDistance > 0)) throw InputError("approx: the release slide distance must be > 0 m");
+    if (options_.qThreshold > 0 && options_.qMinimum >= options_.qThreshold) {
+        throw InputError(format("approx: Q_M (%g N) must be below Q_Th (%g N)", options_.qMinimum, options_.qThreshold));
     }
-    qThreshold_ = options.qThreshold;
-    qMinimum_ = options.qMinimum > 0 ? options.qMinimum : options.hysteresisFraction * qThreshold_;
+    qThreshold_ = options_.qThreshold;
+    qMinimum_ = options_.qMinimum > 0 ? options_.qMinimum : options_.hysteresisFraction * qThreshold_;
     const model::ModelDescription& d = scene.getModel().getDescription();
     for (const std::string& e : scene.getGoalEndEffectors()) goalBodies_.push_back(d.findEndEffector(e)->body);
 }
@@ -83,11 +100,7 @@ double GraspSwitch::calcQuality(const SimTK::State& state) const {
                                    scene_.getObject().getBodyTransform(state), quality);
 }
 
-double GraspSwitch::calcMonitoredQuality(const SimTK::State& state) const {
-    SimTK::State scratch = state;
-    scene_.getContacts().setPairsEnabled(scratch, allPairs(scene_.getContacts()), true);
-    return calcQuality(scratch);
-}
+double GraspSwitch::calcEngagedQuality(const SimTK::State& state) const { return tracker_.calcQuality(state); }
 
 bool GraspSwitch::isFullContact(const SimTK::State& state) const {
     scene_.getSystem().realize(state, SimTK::Stage::Velocity);
@@ -114,6 +127,8 @@ void GraspSwitch::engage(SimTK::State& state, double quality) const {
     system.realize(state, SimTK::Stage::Velocity);
     const std::vector<contact::ContactReport> reports = scene_.getContacts().findContactReports(state);
     const SimTK::Vec6 limits = calcFrictionLimits(reports, scene_.getScenario().contact.dynamicFriction);
+    tracker_.capture(state, reports);
+    placeConstraintFrames(state, findContactCentroid(reports));
     scene_.getContacts().setPairsEnabled(state, allPairs(scene_.getContacts()), false);  // (b)
     setFingersMerged(state, true);                                                        // (c)
     enableConstraint(state, limits);                                                      // (d)
@@ -123,13 +138,26 @@ void GraspSwitch::engage(SimTK::State& state, double quality) const {
                            format(", %.6g N m", limits[0])});  // (e)
 }
 
+// F on the palm and M on the object coincide at the contact centroid, with O's orientation.
+void GraspSwitch::placeConstraintFrames(SimTK::State& state, const SimTK::Vec3& p_GC) const {
+    const SimTK::Transform& X_GO = scene_.getObject().getBodyTransform(state);
+    const SimTK::Transform& X_GH = scene_.getPalm().getBodyTransform(state);
+    const SimTK::Transform X_OM(SimTK::Rotation(), ~X_GO * p_GC);
+    const SimTK::Transform X_HF = ~X_GH * X_GO * X_OM;
+    if (const grasp::LimitedWeld* weld = scene_.getWeld()) {
+        weld->setFrames(state, X_HF, X_OM);
+    } else {
+        scene_.getBushing().setFrames(state, X_HF, X_OM);
+    }
+}
+
 // At the current relative pose, so nothing jumps: the bushing's anchor is reset there; the weld
 // holds the pose it is enabled at (stopping only the palm-object relative velocity, if any).
 void GraspSwitch::enableConstraint(SimTK::State& state, const SimTK::Vec6& limits) const {
     const SimTK::MultibodySystem& system = scene_.getSystem();
     if (const grasp::LimitedWeld* weld = scene_.getWeld()) {
         weld->setLimits(state, limits);
-        for (int k = 0; k < 6; ++k) weld->setAxisLocked(state, static_cast<grasp::WeldAxis>(k), !options_.relaxedAxes[k]);
+        for (int k = 0; k < 6; ++k) weld->setAxisLocked(state, static_cast<grasp::WeldAxis>(k), !(*options_.relaxedAxes)[k]);
         weld->setEnabled(state, true);  // last: axes over their limits start sliding at once
         system.realize(state, SimTK::Stage::Position);
         return;
@@ -139,12 +167,13 @@ void GraspSwitch::enableConstraint(SimTK::State& state, const SimTK::Vec6& limit
     system.realize(state, SimTK::Stage::Position);
     bushing.resetAnchor(state);
     bushing.setLimits(state, limits);
-    for (int k = 0; k < 6; ++k) bushing.setAxisLocked(state, static_cast<grasp::BushingAxis>(k), !options_.relaxedAxes[k]);
+    for (int k = 0; k < 6; ++k) bushing.setAxisLocked(state, static_cast<grasp::BushingAxis>(k), !(*options_.relaxedAxes)[k]);
     system.realize(state, SimTK::Stage::Position);
 }
 
 void GraspSwitch::checkRelease(SimTK::State& state) const {
-    const double q = calcMonitoredQuality(state);
+    tracker_.measurePenetration(state);
+    const double q = calcEngagedQuality(state);
     const std::string reason = describeRelease(state, q);
     if (!reason.empty()) release(state, q, reason);
 }
@@ -165,6 +194,9 @@ std::string GraspSwitch::describeRelease(const SimTK::State& state, double quali
 }
 
 void GraspSwitch::release(SimTK::State& state, double quality, const std::string& reason) const {
+    const SimTK::MultibodySystem& system = scene_.getSystem();
+    system.realize(state, SimTK::Stage::Velocity);
+    const SimTK::Vec3 v_before = scene_.getObject().getBodyOriginVelocity(state);
     if (const grasp::LimitedWeld* weld = scene_.getWeld()) {
         weld->setEnabled(state, false);
     } else {
@@ -172,7 +204,17 @@ void GraspSwitch::release(SimTK::State& state, double quality, const std::string
     }
     setFingersMerged(state, false);
     scene_.getContacts().setPairsEnabled(state, allPairs(scene_.getContacts()), true);
-    events_.push_back({state.getTime(), "release", quality, reason});
+    events_.push_back({state.getTime(), "release", quality, reason, findVelocityJump(state, v_before)});
+}
+
+// The object's velocity as the integrator will restart from it: realized after the switch and
+// projected onto whatever constraints remain, as the TimeStepper's reinitialization does.
+double GraspSwitch::findVelocityJump(SimTK::State& state, const SimTK::Vec3& v_before) const {
+    const SimTK::MultibodySystem& system = scene_.getSystem();
+    system.realize(state, SimTK::Stage::Velocity);
+    system.projectU(state, 1e-12);
+    system.realize(state, SimTK::Stage::Velocity);
+    return (scene_.getObject().getBodyOriginVelocity(state) - v_before).norm();
 }
 
 // Locking at Motion::Position keeps each finger joint at its current angle (and zero rate

@@ -47,7 +47,7 @@ TEST_F(SimulateCommand, ApproxModeWritesTheSwitchEvents) {
     const RunResult r = run("simulate phone-pinch --mode approx --duration 1.1 --out " + out);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const std::string events = slurp(fs::path(out) / "events.csv");
-    EXPECT_EQ(events.rfind("time_s,event,grasp_quality_n,reason\n", 0), 0u) << events;
+    EXPECT_EQ(events.rfind("time_s,event,grasp_quality_n,velocity_jump_m_s,reason\n", 0), 0u) << events;
     EXPECT_NE(events.find(",engage,"), std::string::npos) << events;
     const std::string summary = slurp(fs::path(out) / "summary.json");
     for (const char* key : {"\"engaged\": true", "\"engage_time_s\"", "\"release_time_s\": null", "\"q_at_engage_n\"",

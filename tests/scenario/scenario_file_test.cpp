@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -199,6 +200,18 @@ TEST(ScenarioFile, SectionsWithEverythingCommentedOutTakeTheDefaults) {
     expectVec3(s.world.gravity, {0, -9.81, 0});
 }
 
+TEST(ScenarioFile, ApproximationSectionNamesTheRelaxedAxesAndThresholds) {
+    const Scenario defaults = parseScenario(kBase, "test.yaml");
+    for (bool relaxed : defaults.approximation.relaxedAxes) EXPECT_TRUE(relaxed);
+    EXPECT_EQ(defaults.approximation.qThreshold, 0);
+    const Scenario s = parseScenario(
+        kBase + "approximation:\n  relaxed_axes: [rz, x, y]\n  q_threshold: 0.2\n  q_minimum: 0.1\n", "test.yaml");
+    const std::array<bool, 6> expected{false, false, true, true, true, false};
+    EXPECT_EQ(s.approximation.relaxedAxes, expected);
+    EXPECT_DOUBLE_EQ(s.approximation.qThreshold, 0.2);
+    EXPECT_DOUBLE_EQ(s.approximation.qMinimum, 0.1);
+}
+
 TEST(ScenarioFile, SexAloneSelectsThatReferenceSubject) {
     const Scenario s = parseScenario(kBase + "subject:\n  sex: female\n", "test.yaml");
     EXPECT_DOUBLE_EQ(s.bodyOptions.subject.mass, 61.9);
@@ -289,6 +302,15 @@ INSTANTIATE_TEST_SUITE_P(
                  {"'controller.press_depth'", "'0.05'", "[0, 0.045) m"}},
         BadInput{"accuracy of one", "name: test-ball", "name: test-ball\nsimulation:\n  accuracy: 1",
                  {"'simulation.accuracy'", "'1'", "(0, 1)"}},
+        BadInput{"unknown relaxed axis", "name: test-ball", "name: test-ball\napproximation:\n  relaxed_axes: [x, yaw]",
+                 {"test.yaml:3:", "'approximation.relaxed_axes[1]'", "'yaw'", "rx, ry, rz, x, y, z"}},
+        BadInput{"relaxed axes not a list", "name: test-ball", "name: test-ball\napproximation:\n  relaxed_axes: x",
+                 {"'approximation.relaxed_axes'", "'x'", "list of axis names"}},
+        BadInput{"Q_M equal to Q_Th", "name: test-ball",
+                 "name: test-ball\napproximation:\n  q_threshold: 0.2\n  q_minimum: 0.2",
+                 {"'approximation.q_minimum'", "'0.2'", "below approximation.q_threshold", "[0, 0.2) N"}},
+        BadInput{"negative Q_Th", "name: test-ball", "name: test-ball\napproximation:\n  q_threshold: -1",
+                 {"'approximation.q_threshold'", "'-1'", ">= 0 N"}},
         BadInput{"malformed YAML", "position: [0.4, -0.2, 0]", "position: [0.4, -0.2, 0",
                  {"malformed YAML"}},
         BadInput{"bad indentation", "  radius: 0.045", "   radius: 0.045", {"test.yaml:5:", "malformed YAML"}},

@@ -7,7 +7,7 @@
 /// "limits on the Lagrange variables". The compliant alternative is LimitedBushing.
 ///
 /// Frames and axes, as LimitedBushing: F is fixed on body H (pose X_HF), M on body O (pose
-/// X_OM). Axis k in SpatialVec order (rotation first): k = 0,1,2 rotation about M's x, y, z;
+/// X_OM), constructor defaults that setFrames() moves per State. Axis k in SpatialVec order (rotation first): k = 0,1,2 rotation about M's x, y, z;
 /// k = 3,4,5 translation of M's origin along M's x, y, z. The axes turn with the object (the
 /// thesis puts its constraint frame at the object's centre of mass). Per axis, the slip rate
 /// r_k is the component along M's axis k of the angular velocity of O relative to H (rad/s),
@@ -75,6 +75,15 @@ public:
     /// relative pose for findEngagedTransform(). Needs Stage::Position; realizes `state` to
     /// Stage::Acceleration when enabling.
     void setEnabled(SimTK::State& state, bool enabled) const;
+
+    /// Moves frame F to pose X_HF on H and frame M to X_OM on O (m); invalidates Stage::Instance.
+    /// Call it while the weld is disabled, before setEnabled(true) (the engaged pose is recorded
+    /// there, in the new frames).
+    void setFrames(SimTK::State& state, const SimTK::Transform& X_HF, const SimTK::Transform& X_OM) const;
+    /// Pose X_HF of F on H in `state`. Any stage.
+    const SimTK::Transform& getFrameOnH(const SimTK::State& state) const;
+    /// Pose X_OM of M on O in `state`. Any stage.
+    const SimTK::Transform& getFrameOnO(const SimTK::State& state) const;
 
     /// Per-axis limits L (N m for 0-2, N for 3-5), before locking.
     const SimTK::Vec6& getLimits(const SimTK::State& state) const;

@@ -14,6 +14,7 @@
 #include "graspsim/model/build_options.h"
 #include "graspsim/model/model_description.h"
 
+#include <array>
 #include <map>
 #include <string>
 #include <vector>
@@ -133,6 +134,22 @@ struct SimulationSpec {
     double heldTolerance = 0.02;
 };
 
+/// The grasp approximation's settings for this experiment (section `approximation:`, optional;
+/// used by `--mode approx` only; command-line options override the thresholds).
+struct ApproximationSpec {
+    /// Names of the constraint axes in ApproximationSpec order: rotation about the object frame's
+    /// x, y, z, then translation along them.
+    static constexpr const char* kAxisNames[6] = {"rx", "ry", "rz", "x", "y", "z"};
+    /// Which axes are relaxed (friction-limited, may slide); the others are locked. The thesis
+    /// relaxes the primary and secondary axes where sliding is expected. Default: all six
+    /// (`relaxed_axes: [rx, ry, rz, x, y, z]`).
+    std::array<bool, 6> relaxedAxes{true, true, true, true, true, true};
+    /// Q_Th (N), >= 0; 0 (default) = automatic (simulation/grasp_switch.h).
+    double qThreshold = 0;
+    /// Q_M (N), >= 0 and below Q_Th when both are given; 0 (default) = half of Q_Th.
+    double qMinimum = 0;
+};
+
 /// One grasp experiment.
 struct Scenario {
     std::string name;         ///< short identifier, e.g. "ball-clutch"
@@ -148,7 +165,8 @@ struct Scenario {
     std::map<std::string, double> graspPose;
     /// Goal point of each end-effector (e.g. "index_tip") on the object's surface, in O (m).
     std::map<std::string, Vec3> goals;
-    std::vector<Perturbation> perturbations;  ///< in file order; may be empty
+    std::vector<Perturbation> perturbations;
+    ApproximationSpec approximation;  ///< in file order; may be empty
     ContactSpec contact;
     ControllerSpec controller;
     SimulationSpec simulation;

@@ -22,7 +22,10 @@ struct TrajectorySample {
     SimTK::Vec3 p_GO{0};              ///< object centre of mass in ground (m)
     SimTK::Quaternion q_GO;           ///< object orientation in ground (w, x, y, z)
     std::vector<double> jointAngles;  ///< rad, ordered as SimulationResult::jointNames
-    double graspQuality = 0;          ///< smallest singular value of the grasp matrix (N), see contact_grasp_quality.h
+    /// Smallest singular value of the grasp matrix (N): of the active contacts (contact_grasp_quality.h),
+    /// or, while the approximation is engaged, its estimate from the constraint's reaction wrench
+    /// (GraspSwitch::calcEngagedQuality).
+    double graspQuality = 0;
 };
 
 /// The contacts at one output time.
@@ -55,6 +58,20 @@ struct SimulationSummary {
     double releaseTime = -1;        ///< first release after it (s); < 0 if none
     double qAtEngage = 0;           ///< grasp quality at the first engagement (N)
     double qThreshold = 0;          ///< Q_Th in use (N)
+    double qMinimum = 0;            ///< Q_M in use (N)
+    std::string constraint;         ///< the approximation's constraint realization, "bushing" or "weld"
+    /// Smallest engaged-quality estimate at the output samples while engaged (N; 0 if never
+    /// engaged): the Q the release test compares with Q_M (engaged_grasp_tracker.h).
+    double minEngagedGraspQuality = 0;
+    /// Penetration of the tracked contacts while engaged (engaged_grasp_tracker.h), m: the deepest
+    /// contact at engagement (the skin compression the grasp engages with), the deepest seen while
+    /// engaged, and the largest growth of one contact's depth beyond its depth at engagement (what
+    /// the approximation itself adds; bounded by the tests).
+    double engagedPenetrationAtEngage = 0;
+    double maxEngagedPenetration = 0;
+    double maxEngagedPenetrationGrowth = 0;
+    /// Largest object velocity jump across a release (m/s; GraspEvent::velocityJump).
+    double maxReleaseVelocityJump = 0;
     /// Wall time per integrator step (µs) from the object's release to the first engagement (or
     /// the end): the full-contact grasp with IK. Boundaries fall on output samples, so up to one
     /// output interval of the other phase may be included.

@@ -21,14 +21,28 @@
 ///     (d) enable the palm (H) - object (O) constraint of ApproxOptions::constraint at the current
 ///         pose, limits set, axes relaxed or locked per ApproxOptions::relaxedAxes: the bushing
 ///         with its anchor reset there (no force jump), or the weld (every axis stuck, those
-///         already over their limit sliding);
+///         already over their limit sliding). Its frames F (on the palm) and M (on the object)
+///         are placed, coincident, at the CENTROID OF THE CONTACT POINTS at this instant, with
+///         the object's orientation; the axes are those of O. DELIBERATE DEPARTURE from the
+///         thesis (section 4.2 puts the constraint at the object's centre of mass): friction acts
+///         at the contacts, and the rotation limit mu r F_perp (r measured from the contact
+///         centroid, eq. 4.2) is a limit on the moment about the contact centroid. At the centre
+///         of mass a force through the centre of mass makes no moment on the constraint, so a
+///         pull that levers the object out of a pinch (phone-pinch f1: 2 N at 2.6 cm from the
+///         pinch) was held by the approximation while full contact drops the object; at the
+///         centroid the same pull makes its real moment about the grip, and the verdicts agree;
 ///     (e) record an "engage" event.
 ///  - GRASPED (constraint enabled): IK is skipped (the fingers are locked, and skipping it is where
-///    the approximation saves its time). The contacts are still monitored without entering the
-///    dynamics: Q is evaluated on a scratch copy of the state with the pairs switched on. RELEASE
-///    (constraint off, fingers unlocked, contacts on, "release" event) when the object has moved
-///    more than releaseSlideDistance relative to the palm since engagement, when a fingertip is
-///    farther than the scenario's held tolerance from its goal on the object, or when Q < Q_M.
+///    the approximation saves its time). The contacts are still tracked without entering the
+///    dynamics (engaged_grasp_tracker.h): their penetration is measured on a scratch copy of the
+///    state with the pairs switched on, and Q is estimated from the constraint's reaction wrench
+///    distributed over the contacts captured at engagement. RELEASE (constraint off, fingers
+///    unlocked, contacts on, "release" event) when the object's centre of mass has moved more
+///    than releaseSlideDistance relative to the palm since engagement, when a fingertip is
+///    farther than the scenario's held tolerance from its goal on the object, or when that Q <
+///    Q_M. Nothing at the release changes a velocity (the constraint and the locks are switched
+///    off, contact comes back as a force), so the object's velocity is continuous; the event
+///    records the measured jump (GraspEvent::velocityJump) to show it.
 ///
 /// Q_Th: ApproxOptions::qThreshold, or automatically autoThresholdFraction times the quality of
 /// the first full-contact check at or after the scenario's settle_time (the thesis sets Q_Th by
@@ -41,6 +55,7 @@
 /// forward run (a TimeStepper never rewinds), as the run of grasp_simulation.h is.
 
 #include "graspsim/control/grasp_controller.h"
+#include "graspsim/simulation/engaged_grasp_tracker.h"
 #include "graspsim/simulation/simulation_options.h"
 
 #include <simbody/Simbody.h>
@@ -56,8 +71,11 @@ class GraspScene;
 struct GraspEvent {
     double time = 0;     ///< s
     std::string kind;    ///< "engage" or "release"
-    double quality = 0;  ///< grasp quality Q at the switch (N; monitored on a scratch state when releasing)
+    double quality = 0;  ///< grasp quality Q at the switch (N; when releasing, the engaged estimate)
     std::string reason;  ///< why, with the numbers
+    /// Release only: |v_after - v_before| of the object's centre of mass across the switch (m/s),
+    /// "after" being the state the integrator restarts from (realized and projected).
+    double velocityJump = 0;
 };
 
 /// The periodic event handler described in the file comment (owned by the System once added).
@@ -83,18 +101,23 @@ public:
 
     /// Grasp quality of the contacts active in `state` (N). Needs Stage::Velocity.
     double calcQuality(const SimTK::State& state) const;
-    /// Q of the contacts the pairs would produce if switched on (a scratch copy of `state`).
-    double calcMonitoredQuality(const SimTK::State& state) const;
+    /// Q while engaged (N): the constraint's wrench distributed over the tracked contacts
+    /// (EngagedGraspTracker::calcQuality). Realizes `state` to Stage::Acceleration.
+    double calcEngagedQuality(const SimTK::State& state) const;
+    /// The contacts tracked while engaged and the penetration measured so far.
+    const EngagedGraspTracker& getTracker() const { return tracker_; }
 
 private:
     void checkEngage(SimTK::State& state) const;
     void checkRelease(SimTK::State& state) const;
     bool isFullContact(const SimTK::State& state) const;
     void engage(SimTK::State& state, double quality) const;
+    void placeConstraintFrames(SimTK::State& state, const SimTK::Vec3& p_GC) const;
     void enableConstraint(SimTK::State& state, const SimTK::Vec6& limits) const;
     void release(SimTK::State& state, double quality, const std::string& reason) const;
     void setFingersMerged(SimTK::State& state, bool merged) const;
     std::string describeRelease(const SimTK::State& state, double quality) const;
+    double findVelocityJump(SimTK::State& state, const SimTK::Vec3& v_before) const;
 
     const GraspScene& scene_;
     const control::GraspController& controller_;
@@ -104,6 +127,7 @@ private:
     mutable double qMinimum_ = 0;
     mutable SimTK::Transform X_HO_engaged_;  // object pose in the palm frame at engagement
     mutable std::vector<GraspEvent> events_;
+    mutable EngagedGraspTracker tracker_;
 };
 
 }  // namespace graspsim::simulation

@@ -3,6 +3,7 @@
 /// What a user chooses per simulation run, on top of the scenario.
 
 #include <array>
+#include <optional>
 #include <string>
 
 namespace graspsim::simulation {
@@ -34,10 +35,12 @@ enum class ApproxConstraint {
 /// Settings of the grasp switch of `--mode approx` (thesis Figure 4.1; see grasp_switch.h).
 /// Defaults are this project's choices, documented where they are used.
 struct ApproxOptions {
-    /// Q_Th (N): engage when the full-contact grasp quality reaches it. 0 = automatic:
-    /// autoThresholdFraction times the quality observed when the grasp first settles.
+    /// Q_Th (N): engage when the full-contact grasp quality reaches it. 0 = the scenario's
+    /// approximation.q_threshold, and if that is 0 too, automatic: autoThresholdFraction times
+    /// the quality observed when the grasp first settles.
     double qThreshold = 0;
-    /// Q_M (N): release when the monitored quality falls below it; 0 = hysteresisFraction * Q_Th.
+    /// Q_M (N): release when the engaged quality estimate falls below it; 0 = the scenario's
+    /// approximation.q_minimum, and if that is 0 too, hysteresisFraction * Q_Th. Must be < Q_Th.
     double qMinimum = 0;
     /// Automatic Q_Th as a fraction of the settled grasp's quality. 0.8: engages on the settled
     /// grasp itself while leaving 20 % margin for the quality's ripple (the IK updates every
@@ -53,8 +56,9 @@ struct ApproxOptions {
     /// use it); `weld` is the rigid one, closer to the thesis's Vortex constraint.
     ApproxConstraint constraint = ApproxConstraint::Bushing;
     /// Which constraint axes are relaxed (friction-limited); the others are locked (rigid). SpatialVec
-    /// order, rotation x, y, z then translation x, y, z of the object frame. Default: all relaxed.
-    std::array<bool, 6> relaxedAxes{true, true, true, true, true, true};
+    /// order, rotation x, y, z then translation x, y, z of the object frame. Unset (default): the
+    /// scenario's approximation.relaxed_axes (whose default is all six).
+    std::optional<std::array<bool, 6>> relaxedAxes;
 };
 
 /// Per-run choices. Defaults: compliant full contact, no perturbation, the scenario's duration.

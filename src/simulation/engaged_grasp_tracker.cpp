@@ -1,0 +1,108 @@
+#include "graspsim/simulation/engaged_grasp_tracker.h"
+
+#include "graspsim/grasp/grasp_quality.h"
+#include "graspsim/grasp/wrench_distribution.h"
+#include "graspsim/simulation/grasp_scene.h"
+
+#include <algorithm>
+#include <numeric>
+
+namespace graspsim::simulation {
+
+namespace {
+
+Eigen::Vector3d toEigen(const SimTK::Vec3& v) { return {v[0], v[1], v[2]}; }
+
+grasp::ObjectFrame toObjectFrame(const SimTK::Transform& X_GO) {
+    grasp::ObjectFrame frame;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) frame.R_GO(i, j) = X_GO.R().asMat33()(i, j);
+    frame.p_GO = toEigen(X_GO.p());
+    return frame;
+}
+
+}  // namespace
+
+EngagedGraspTracker::EngagedGraspTracker(const GraspScene& scene) : scene_(scene) {}
+
+void EngagedGraspTracker::capture(const SimTK::State& state, const std::vector<contact::ContactReport>& reports) {
+    const SimTK::Transform& X_GH = scene_.getPalm().getBodyTransform(state);
+    const SimTK::Transform& X_GO = scene_.getObject().getBodyTransform(state);
+    tracked_.clear();
+    depthAtEngage_.clear();
+    penetration_.atEngage = 0;
+    for (const contact::ContactReport& c : reports) {
+        depthAtEngage_[c.pairIndex] = std::max(depthAtEngage_[c.pairIndex], c.depth);
+        penetration_.atEngage = std::max(penetration_.atEngage, c.depth);
+        if (!(c.normalForce > 0)) continue;
+        const SimTK::Vec3 f_G = c.normalForce * SimTK::Vec3(c.n_G) + c.frictionForce_G;
+        tracked_.push_back({~X_GH * c.p_G, ~X_GO.R() * f_G});
+    }
+    penetration_.maxWhileEngaged = std::max(penetration_.maxWhileEngaged, penetration_.atEngage);
+}
+
+// The constraint's wrench on the object with its moment taken about O's origin (the centre of
+// mass), where the grasp quality takes moments.
+SimTK::SpatialVec EngagedGraspTracker::findConstraintWrench(const SimTK::State& state) const {
+    scene_.getSystem().realize(state, SimTK::Stage::Acceleration);
+    const SimTK::Transform& X_GO = scene_.getObject().getBodyTransform(state);
+    SimTK::SpatialVec W_M;
+    SimTK::Vec3 p_OM;
+    if (const grasp::LimitedWeld* weld = scene_.getWeld()) {
+        W_M = weld->findWrench(state);
+        p_OM = weld->getFrameOnO(state).p();
+    } else {
+        W_M = scene_.getBushing().findWrench(state);
+        p_OM = scene_.getBushing().getFrameOnO(state).p();
+    }
+    const SimTK::Vec3 p_OM_G = X_GO.R() * p_OM;
+    return SimTK::SpatialVec(W_M[0] + p_OM_G % W_M[1], W_M[1]);
+}
+
+double EngagedGraspTracker::calcQuality(const SimTK::State& state) const {
+    if (tracked_.empty()) return 0;
+    const SimTK::SpatialVec W = findConstraintWrench(state);
+    const SimTK::Transform& X_GH = scene_.getPalm().getBodyTransform(state);
+    const SimTK::Transform& X_GO = scene_.getObject().getBodyTransform(state);
+    const scenario::ObjectSpec& object = scene_.getScenario().object;
+    std::vector<grasp::GraspContact> contacts;
+    std::vector<Eigen::Vector3d> reference;
+    for (const TrackedContact& t : tracked_) {
+        grasp::GraspContact c;
+        const SimTK::Vec3 p_GC = X_GH * t.p_HC;
+        const SimTK::Vec3 p_OC = ~X_GO * p_GC;
+        const model::Vec3 n_O = object.findOutwardNormal({p_OC[0], p_OC[1], p_OC[2]});
+        c.p_GC = toEigen(p_GC);
+        c.n_G = -toEigen(X_GO.R() * SimTK::Vec3(n_O[0], n_O[1], n_O[2])).normalized();
+        contacts.push_back(c);
+        reference.push_back(toEigen(X_GO.R() * t.f_O));
+    }
+    Eigen::Matrix<double, 6, 1> wrench;
+    wrench << toEigen(W[0]), toEigen(W[1]);
+    grasp::QualityOptions options;
+    options.mu = scene_.getScenario().contact.staticFriction;  // as the full-contact Q (grasp_simulation.cpp)
+    const grasp::ObjectFrame frame = toObjectFrame(X_GO);
+    const grasp::WrenchDistribution d = grasp::distributeWrench(contacts, frame, wrench, reference, options.mu);
+    for (std::size_t i = 0; i < contacts.size(); ++i) contacts[i].normalForce = d.normalForces[i];
+    return grasp::calcGraspQuality(contacts, frame, options);
+}
+
+double EngagedGraspTracker::measurePenetration(const SimTK::State& state) {
+    SimTK::State scratch = state;
+    const contact::CompliantContactForce& pairs = scene_.getContacts();
+    std::vector<int> all(static_cast<std::size_t>(pairs.getNumPairs()));
+    std::iota(all.begin(), all.end(), 0);
+    pairs.setPairsEnabled(scratch, all, true);
+    scene_.getSystem().realize(scratch, SimTK::Stage::Velocity);
+    double deepest = 0;
+    for (const contact::ContactReport& c : pairs.findContactReports(scratch)) {
+        deepest = std::max(deepest, c.depth);
+        const auto engaged = depthAtEngage_.find(c.pairIndex);
+        const double growth = c.depth - (engaged == depthAtEngage_.end() ? 0.0 : engaged->second);
+        penetration_.maxGrowth = std::max(penetration_.maxGrowth, growth);
+    }
+    penetration_.maxWhileEngaged = std::max(penetration_.maxWhileEngaged, deepest);
+    return deepest;
+}
+
+}  // namespace graspsim::simulation
