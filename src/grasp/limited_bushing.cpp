@@ -35,6 +35,13 @@ void checkAxisValues(const SimTK::Vec6& values, const std::string& what, bool al
     }
 }
 
+// Where the element attaches: frame F on H and frame M on O (an Instance-stage variable, so
+// that moving them re-realizes everything that depends on them).
+struct BushingFrames {
+    SimTK::Transform X_HF;
+    SimTK::Transform X_OM;
+};
+
 // Relative state of M with respect to the anchor, as the law needs it.
 struct BushingKinematics {
     SimTK::Rotation R_GA;  // anchor orientation in Ground
@@ -57,7 +64,7 @@ public:
                        const SimTK::Transform& X_HF, const SimTK::MobilizedBody& O,
                        const SimTK::Transform& X_OM, const SimTK::Vec6& stiffness,
                        const SimTK::Vec6& damping)
-        : forces_(forces), bodyH_(H), X_HF_(X_HF), bodyO_(O), X_OM_(X_OM), stiffness_(stiffness),
+        : forces_(forces), bodyH_(H), defaultFrames_{X_HF, X_OM}, bodyO_(O), stiffness_(stiffness),
           damping_(damping) {}
 
     const SimTK::Vec6& getStiffness() const { return stiffness_; }
@@ -72,6 +79,8 @@ public:
             state, SimTK::Stage::Dynamics, new SimTK::Value<AxisSettings>(AxisSettings()));
         baseIndex_ = forces_.allocateDiscreteVariable(state, SimTK::Stage::Dynamics,
                                                       new SimTK::Value<SimTK::Transform>());
+        framesIndex_ = forces_.allocateDiscreteVariable(
+            state, SimTK::Stage::Instance, new SimTK::Value<BushingFrames>(defaultFrames_));
         zIndex_ = forces_.allocateZ(state, SimTK::Vector(6, 0.0));
     }
 
@@ -82,6 +91,14 @@ public:
     void setEnabled(SimTK::State& s, bool enabled) const {
         SimTK::Value<bool>::updDowncast(forces_.updDiscreteVariable(s, enabledIndex_)).upd() =
             enabled;
+    }
+    const BushingFrames& getFrames(const SimTK::State& s) const {
+        return SimTK::Value<BushingFrames>::downcast(forces_.getDiscreteVariable(s, framesIndex_))
+            .get();
+    }
+    void setFrames(SimTK::State& s, const BushingFrames& frames) const {
+        SimTK::Value<BushingFrames>::updDowncast(forces_.updDiscreteVariable(s, framesIndex_))
+            .upd() = frames;
     }
     const AxisSettings& getSettings(const SimTK::State& s) const {
         return SimTK::Value<AxisSettings>::downcast(forces_.getDiscreteVariable(s, settingsIndex_))
@@ -146,8 +163,9 @@ public:
 
     // ---- kinematics and law --------------------------------------------------------------
     SimTK::Transform findX_FM(const SimTK::State& s) const {
-        const SimTK::Transform X_GF = bodyH_.getBodyTransform(s) * X_HF_;
-        const SimTK::Transform X_GM = bodyO_.getBodyTransform(s) * X_OM_;
+        const BushingFrames& frames = getFrames(s);
+        const SimTK::Transform X_GF = bodyH_.getBodyTransform(s) * frames.X_HF;
+        const SimTK::Transform X_GM = bodyO_.getBodyTransform(s) * frames.X_OM;
         return ~X_GF * X_GM;
     }
     SimTK::Vec6 findDisplacement(const SimTK::State& s) const {
@@ -162,8 +180,9 @@ public:
         const SimTK::Transform X_GH = bodyH_.getBodyTransform(s);
         const SimTK::Transform X_GO = bodyO_.getBodyTransform(s);
         const SimTK::Transform X_FA = findAnchorTransform(s);
-        k.R_GA = X_GH.R() * X_HF_.R() * X_FA.R();
-        k.p_GM = X_GO * X_OM_.p();
+        const BushingFrames& frames = getFrames(s);
+        k.R_GA = X_GH.R() * frames.X_HF.R() * X_FA.R();
+        k.p_GM = X_GO * frames.X_OM.p();
         k.e = findDisplacement(s);
         // Velocity of O's material point at M relative to H's coincident point: the rate of
         // p_FM taken in F. Using the coincident point keeps H's rotation out of the slip.
@@ -250,15 +269,15 @@ public:
 private:
     const SimTK::GeneralForceSubsystem& forces_;
     SimTK::MobilizedBody bodyH_;
-    SimTK::Transform X_HF_;
+    BushingFrames defaultFrames_;
     SimTK::MobilizedBody bodyO_;
-    SimTK::Transform X_OM_;
     SimTK::Vec6 stiffness_;
     SimTK::Vec6 damping_;
     double onsetWidth_ = 0.01;
     mutable SimTK::DiscreteVariableIndex enabledIndex_;
     mutable SimTK::DiscreteVariableIndex settingsIndex_;
     mutable SimTK::DiscreteVariableIndex baseIndex_;
+    mutable SimTK::DiscreteVariableIndex framesIndex_;
     mutable SimTK::ZIndex zIndex_;
 };
 
@@ -336,6 +355,17 @@ void LimitedBushing::setAxisLocked(SimTK::State& state, BushingAxis axis, bool l
 SimTK::Vec6 LimitedBushing::findEffectiveLimits(const SimTK::State& state) const {
     const LimitedBushingImpl& bushingImpl = asBushingImpl(getImplementation());
     return LimitedBushingImpl::findEffectiveLimits(bushingImpl.getSettings(state));
+}
+
+void LimitedBushing::setFrames(SimTK::State& state, const SimTK::Transform& X_HF,
+                               const SimTK::Transform& X_OM) const {
+    asBushingImpl(getImplementation()).setFrames(state, BushingFrames{X_HF, X_OM});
+}
+const SimTK::Transform& LimitedBushing::getFrameOnH(const SimTK::State& state) const {
+    return asBushingImpl(getImplementation()).getFrames(state).X_HF;
+}
+const SimTK::Transform& LimitedBushing::getFrameOnO(const SimTK::State& state) const {
+    return asBushingImpl(getImplementation()).getFrames(state).X_OM;
 }
 
 void LimitedBushing::resetAnchor(SimTK::State& state) const {

@@ -4,7 +4,8 @@
 /// thesis section 4.2): a stiff 6-DOF spring-damper between the hand side H and the object O
 /// whose force saturates at per-axis limits while its anchor slips (elasto-plastic friction).
 ///
-/// Frames: F is fixed on body H (pose X_HF), M is fixed on body O (pose X_OM). The element keeps
+/// Frames: F is fixed on body H (pose X_HF), M is fixed on body O (pose X_OM); both poses are
+/// given to the constructor as defaults and can be moved per State (setFrames()). The element keeps
 /// an ANCHOR frame A, fixed in F while it sticks: the pose of M in F at which the spring is
 /// relaxed. A is stored as X_FA = X_FA0 * X_A0A, where X_FA0 (a discrete variable) is set by
 /// resetAnchor() and the slip since then, X_A0A = (rotation vector z_r, position z_p in A0), is
@@ -107,6 +108,16 @@ public:
     void setAxisLocked(SimTK::State& state, BushingAxis axis, bool locked) const;
     /// The limits in force: L_k, or +Infinity for a locked axis.
     SimTK::Vec6 findEffectiveLimits(const SimTK::State& state) const;
+
+    /// Moves frame F to pose X_HF on H and frame M to X_OM on O (m; e.g. both at the point the
+    /// element should act through); invalidates Stage::Instance. The anchor keeps its pose in F,
+    /// so call resetAnchor() afterwards (the grasp switch does it on engagement).
+    void setFrames(SimTK::State& state, const SimTK::Transform& X_HF,
+                   const SimTK::Transform& X_OM) const;
+    /// Pose X_HF of F on H in `state`. Any stage.
+    const SimTK::Transform& getFrameOnH(const SimTK::State& state) const;
+    /// Pose X_OM of M on O in `state`. Any stage.
+    const SimTK::Transform& getFrameOnO(const SimTK::State& state) const;
 
     /// Sets the anchor to the current relative pose (X_FA0 := X_FM, z := 0), so the elastic
     /// displacement and the spring force are zero: engaging the element causes no jump (only
