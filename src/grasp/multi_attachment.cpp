@@ -10,13 +10,15 @@ namespace {
 
 constexpr int kNormal = toIndex(BushingAxis::TranslationZ);
 
-// S's z axis along the outward normal; x along the hint's tangent part, y = z x x.
+// z axis along the outward normal n; x along the hint's tangent part, y = z x x.
+SimTK::Rotation makeSiteRotation(const SimTK::UnitVec3& n, const SimTK::Vec3& hint) {
+    const SimTK::Vec3 tangent = hint - (~hint * n) * n;
+    if (tangent.norm() == 0 || !(tangent.norm() > 1e-9 * hint.norm())) return SimTK::Rotation(n, SimTK::ZAxis);
+    return SimTK::Rotation(n, SimTK::ZAxis, tangent, SimTK::XAxis);
+}
+
 SimTK::Transform makeSiteTransform(const AttachmentSite& site) {
-    const SimTK::Vec3 tangent = site.tangentHint_O - (~site.tangentHint_O * site.n_O) * site.n_O;
-    if (!(tangent.norm() > 1e-9 * site.tangentHint_O.norm()) || tangent.norm() == 0) {
-        return SimTK::Transform(SimTK::Rotation(site.n_O, SimTK::ZAxis), site.p_OS);
-    }
-    return SimTK::Transform(SimTK::Rotation(site.n_O, SimTK::ZAxis, tangent, SimTK::XAxis), site.p_OS);
+    return SimTK::Transform(makeSiteRotation(site.n_O, site.tangentHint_O), site.p_OS);
 }
 
 }  // namespace
@@ -27,6 +29,7 @@ MultiAttachment::MultiAttachment(SimTK::GeneralForceSubsystem& forces, const Sim
     if (sites.empty()) throw InputError("multi attachment: no attachment site (one per finger is needed)");
     for (const AttachmentSite& site : sites) {
         X_OS_.push_back(makeSiteTransform(site));
+        fingers_.push_back(site.finger);
         parts_.emplace_back(forces, site.finger, SimTK::Transform(), object, X_OS_.back(), stiffness, damping);
     }
     p_FA_attached_.assign(sites.size(), SimTK::Vec3(0));
@@ -61,10 +64,19 @@ void MultiAttachment::attach(SimTK::State& state, int i, const FingerLoad& load,
     const SimTK::MultibodySystem& system = SimTK::MultibodySystem::downcast(object_.getMatterSubsystem().getSystem());
     part.setEnabled(state, true);
     system.realize(state, SimTK::Stage::Position);
+    const SimTK::Transform X_GO = object_.getBodyTransform(state);
+    SimTK::Transform X_OS = getSiteTransform(i);
+    if (load.atContact) {
+        const SimTK::UnitVec3 n_G(load.normal_G);
+        X_OS = ~X_GO * SimTK::Transform(makeSiteRotation(n_G, load.tangentHint_G), load.contact_G);
+    }
+    const SimTK::Transform X_HF = ~fingers_[static_cast<std::size_t>(i)].getBodyTransform(state) * X_GO * X_OS;
+    part.setFrames(state, X_HF, X_OS);  // an Instance-stage change
+    system.realize(state, SimTK::Stage::Position);
     part.resetAnchor(state);
     // The anchor frame A is the site frame S now; the part's force on O is -K e, so the preload
     // displacement is e = -f_A / K per translation axis.
-    const SimTK::Rotation R_GA = object_.getBodyRotation(state) * getSiteTransform(i).R();
+    const SimTK::Rotation R_GA = X_GO.R() * X_OS.R();
     const SimTK::Vec3 f_A = ~R_GA * load.force_G;
     SimTK::Vec6 e(0);
     for (int k = 0; k < 3; ++k) e[3 + k] = -f_A[k] / part.getStiffness()[3 + k];

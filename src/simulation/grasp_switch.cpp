@@ -3,6 +3,7 @@
 #include "graspsim/error.h"
 #include "graspsim/simulation/contact_grasp_quality.h"
 #include "graspsim/simulation/grasp_scene.h"
+#include "graspsim/simulation/multi_attachment_switch.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -58,9 +59,13 @@ GraspSwitch::GraspSwitch(const GraspScene& scene, const control::GraspController
     qMinimum_ = options.qMinimum > 0 ? options.qMinimum : options.hysteresisFraction * qThreshold_;
     const model::ModelDescription& d = scene.getModel().getDescription();
     for (const std::string& e : scene.getGoalEndEffectors()) goalBodies_.push_back(d.findEndEffector(e)->body);
+    if (scene.getMultiAttachment()) multi_ = std::make_unique<MultiAttachmentSwitch>(scene, options.releaseSlideDistance);
 }
 
+GraspSwitch::~GraspSwitch() = default;
+
 bool GraspSwitch::isEngaged(const SimTK::State& state) const {
+    if (multi_) return multi_->isEngaged(state);
     if (const grasp::LimitedWeld* weld = scene_.getWeld()) return weld->isEnabled(state);
     return scene_.getBushing().isEnabled(state);
 }
@@ -113,6 +118,11 @@ void GraspSwitch::engage(SimTK::State& state, double quality) const {
     const SimTK::MultibodySystem& system = scene_.getSystem();
     system.realize(state, SimTK::Stage::Velocity);
     const std::vector<contact::ContactReport> reports = scene_.getContacts().findContactReports(state);
+    if (multi_) {
+        const std::string limitsText = multi_->engage(state, reports);
+        events_.push_back({state.getTime(), "engage", quality, format("Q >= Q_Th = %.6g N; ", qThreshold_) + limitsText});
+        return;
+    }
     const SimTK::Vec6 limits = calcFrictionLimits(reports, scene_.getScenario().contact.dynamicFriction);
     scene_.getContacts().setPairsEnabled(state, allPairs(scene_.getContacts()), false);  // (b)
     setFingersMerged(state, true);                                                        // (c)
@@ -145,7 +155,13 @@ void GraspSwitch::enableConstraint(SimTK::State& state, const SimTK::Vec6& limit
 
 void GraspSwitch::checkRelease(SimTK::State& state) const {
     const double q = calcMonitoredQuality(state);
-    const std::string reason = describeRelease(state, q);
+    std::string reason;
+    if (multi_) {
+        reason = multi_->update(state, q, events_);
+        if (reason.empty() && q < qMinimum_) reason = format("Q < Q_M = %.6g N", qMinimum_);
+    } else {
+        reason = describeRelease(state, q);
+    }
     if (!reason.empty()) release(state, q, reason);
 }
 
@@ -165,6 +181,11 @@ std::string GraspSwitch::describeRelease(const SimTK::State& state, double quali
 }
 
 void GraspSwitch::release(SimTK::State& state, double quality, const std::string& reason) const {
+    if (multi_) {
+        multi_->release(state);
+        events_.push_back({state.getTime(), "release", quality, reason});
+        return;
+    }
     if (const grasp::LimitedWeld* weld = scene_.getWeld()) {
         weld->setEnabled(state, false);
     } else {

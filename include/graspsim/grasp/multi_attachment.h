@@ -6,8 +6,11 @@
 /// the object on its own.
 ///
 /// Realization in Simbody: one LimitedBushing per finger (a "part"), between the finger's body H_i
-/// (frame F_i = H_i's body frame) and a site frame S_i fixed on O at the finger's goal point on the
-/// object's surface, its z axis the outward surface normal there (M = S_i in limited_bushing.h).
+/// and a site frame S_i on O, its z axis the object's outward surface normal (M = S_i in
+/// limited_bushing.h; F_i coincides with S_i at attachment). S_i is placed at attachment where the
+/// finger touches (the centroid of its contacts, their mean normal), so the part's forces act where
+/// the contact forces did; the AttachmentSite (the goal point) is the default when no contact point
+/// is given.
 /// A part is a point contact made sticky:
 ///  - tangent translations x, y: friction-limited at mu F_perp_i (eq. 4.1 per finger, F_perp_i the
 ///    normal force of that finger's own contacts at attachment);
@@ -47,6 +50,10 @@ struct AttachmentSite {
 
 /// One finger's load at attachment, from its contacts (eq. 4.1-4.3 per finger).
 struct FingerLoad {
+    bool atContact = false;        ///< place S_i at contact_G / normal_G (else at the AttachmentSite)
+    SimTK::Vec3 contact_G{0, 0, 0};  ///< centroid of the finger's contact points, in Ground (m)
+    SimTK::Vec3 normal_G{0, 0, 1};   ///< object's outward normal there, in Ground (unit)
+    SimTK::Vec3 tangentHint_G{0, 0, 0};  ///< S_i's x direction (tangent part), in Ground, as AttachmentSite's
     SimTK::Vec3 force_G{0, 0, 0};  ///< total contact force of the finger on the object, in Ground (N)
     double normalForce = 0;        ///< F_perp_i = sum f . n over the finger's contacts (N), >= 0
     double armRadius = 0;          ///< r_i: mean distance of its contact points from their centroid (m)
@@ -68,7 +75,8 @@ public:
     int getNumParts() const { return static_cast<int>(parts_.size()); }
     /// The bushing of part i (for inspection).
     const LimitedBushing& getPart(int i) const;
-    /// Pose X_OS of site i in O.
+    /// Pose X_OS of site i's default (the AttachmentSite) in O; the one in use is
+    /// getPart(i).getFrameOnO(state).
     const SimTK::Transform& getSiteTransform(int i) const;
 
     /// Disables every part; for the initial state (parts are created enabled, as any bushing).
@@ -94,6 +102,7 @@ private:
 
     SimTK::MobilizedBody object_;
     std::vector<LimitedBushing> parts_;
+    std::vector<SimTK::MobilizedBody> fingers_;
     std::vector<SimTK::Transform> X_OS_;
     // Anchor position in F_i at attach(): an element property outside the State, like the switch's
     // engagement pose (one forward run).

@@ -23,6 +23,8 @@
 ///         with its anchor reset there (no force jump), or the weld (every axis stuck, those
 ///         already over their limit sliding);
 ///     (e) record an "engage" event.
+///  With ApproxOptions::attach Multi, (c) and (d) are replaced by multi_attachment_switch.h (fingers
+///  stay free, one friction-limited part per fingertip, fingers detached one by one).
 ///  - GRASPED (constraint enabled): IK is skipped (the fingers are locked, and skipping it is where
 ///    the approximation saves its time). The contacts are still monitored without entering the
 ///    dynamics: Q is evaluated on a scratch copy of the state with the pairs switched on. RELEASE
@@ -45,12 +47,14 @@
 
 #include <simbody/Simbody.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace graspsim::simulation {
 
 class GraspScene;
+class MultiAttachmentSwitch;
 
 /// One switch of the approximation.
 struct GraspEvent {
@@ -69,6 +73,7 @@ public:
     /// @throws graspsim::InputError for a negative threshold or a slide distance <= 0.
     GraspSwitch(const GraspScene& scene, const control::GraspController& controller, const ApproxOptions& options,
                 double interval);
+    ~GraspSwitch() override;
 
     void handleEvent(SimTK::State& state, SimTK::Real accuracy, bool& shouldTerminate) const override;
 
@@ -99,6 +104,7 @@ private:
     const GraspScene& scene_;
     const control::GraspController& controller_;
     ApproxOptions options_;
+    std::unique_ptr<MultiAttachmentSwitch> multi_;  // ApproxAttach::Multi: replaces the merge (c) and (d)
     std::vector<std::string> goalBodies_;  // body of each goal end-effector
     mutable double qThreshold_ = 0;
     mutable double qMinimum_ = 0;
