@@ -111,6 +111,7 @@ void GraspSwitch::checkEngage(SimTK::State& state) const {
         qThreshold_ = options_.autoThresholdFraction * q;
         if (options_.qMinimum == 0) qMinimum_ = options_.hysteresisFraction * qThreshold_;
     }
+    if (multi_ && !multi_->isSticking(state)) return;
     if (q > 0 && q >= qThreshold_) engage(state, q);
 }
 

@@ -103,6 +103,15 @@ int MultiAttachmentSwitch::findFinger(const std::string& body) const {
     return -1;
 }
 
+bool MultiAttachmentSwitch::isSticking(const SimTK::State& state) const {
+    scene_.getSystem().realize(state, SimTK::Stage::Velocity);
+    const double limit = scene_.getScenario().contact.transitionVelocity;
+    for (const contact::ContactReport& c : scene_.getContacts().findContactReports(state)) {
+        if (findFinger(c.bodyA) >= 0 && !(c.slipVelocity_G.norm() < limit)) return false;
+    }
+    return true;
+}
+
 bool MultiAttachmentSwitch::isEngaged(const SimTK::State& state) const {
     return scene_.getMultiAttachment()->countAttached(state) > 0;
 }

@@ -59,6 +59,11 @@ public:
     /// @param slideLimit how far a finger's anchor may slide before it is detached (m).
     MultiAttachmentSwitch(const GraspScene& scene, double slideLimit);
 
+    /// Whether every goal finger's contacts stick: slip speed below the scenario's friction transition
+    /// velocity (its own threshold for "sticking"). Multi engages only then: each part is a sticking
+    /// contact, and attaching one that slides (e.g. right after a release, the object falling) would
+    /// freeze the slide. Needs Stage::Velocity.
+    bool isSticking(const SimTK::State& state) const;
     /// Whether any finger is attached in `state`.
     bool isEngaged(const SimTK::State& state) const;
     /// Steps (a), (b), (d); returns the limits, per finger, as text for the engage event.
