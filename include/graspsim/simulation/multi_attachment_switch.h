@@ -26,10 +26,11 @@
 /// fingers remain attached (one point contact cannot hold an object), or, as merged, when the
 /// monitored quality drops below Q_M (checked by the grasp switch).
 ///
-/// Cost in realism compared with full contact: a part is a sticky point contact at a fixed site
-/// (the goal point), so a finger cannot roll or re-seat on the surface; friction limits are frozen
-/// at engagement and are a box per tangent axis, not a cone; the normal holds bilateral until the
-/// next check. Compared with merged: fingers keep their own dynamics, and one that leaves stops
+/// Cost in realism compared with full contact: a part is a sticky point contact at the site where
+/// the finger touched at engagement, on the tangent plane there, so a finger cannot roll or re-seat
+/// on the surface; friction limits are frozen at engagement (they do not follow the normal force)
+/// and are a box per tangent axis, not a cone; the normal holds bilateral until the next check
+/// (up to ik_interval late). Engagement also waits for every goal contact to stick (isSticking()). Compared with merged: fingers keep their own dynamics, and one that leaves stops
 /// following the object. Cost in time: one 6-DOF element per finger instead of one, plus the
 /// free finger joints (merged locks them).
 
