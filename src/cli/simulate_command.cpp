@@ -6,6 +6,7 @@
 #include "graspsim/results/result_files.h"
 #include "graspsim/scenario/scenario_file.h"
 #include "graspsim/simulation/grasp_simulation.h"
+#include "graspsim/simulation/multi_attachment_switch.h"
 
 #include <unistd.h>
 
@@ -22,6 +23,7 @@ struct SimulateCommand::Options {
     std::string contact = "compliant";
     std::string mode = "full";
     std::string constraint = "bushing";
+    std::string attach = "merged";
     std::string perturbation = "none";
     std::string duration;
     std::string integrator = "simbody";
@@ -38,6 +40,9 @@ SimulateCommand::SimulateCommand(CLI::App& app) : options_(std::make_shared<Opti
     command_->add_option("--mode", o.mode, "full (default) or approx");
     command_->add_option("--constraint", o.constraint,
                          "approx: the friction-limited palm-object constraint, bushing (compliant, default) or weld (rigid)");
+    command_->add_option("--attach", o.attach,
+                         "approx: merged (default: fingers locked to the palm, one palm-object element) or multi "
+                         "(one element spanning the object and every fingertip, fingers free)");
     command_->add_option("--perturbation", o.perturbation, "none (default) or a perturbation of the scenario (f1, f2)");
     command_->add_option("--duration", o.duration, "simulated time in s (default: the scenario's)");
     command_->add_option("--integrator", o.integrator,
@@ -119,6 +124,8 @@ int SimulateCommand::run() const {
         }
     }
     options.approx.constraint = simulation::parseApproxConstraint(o.constraint, "--constraint");
+    options.approx.attach = simulation::parseApproxAttach(o.attach, "--attach");
+    simulation::checkApproxAttach(scenario, options);
     options.approx.qThreshold = parseQuality(o.qThreshold, "--q-threshold");
     options.approx.qMinimum = parseQuality(o.qMinimum, "--q-minimum");
     if (options.approx.qThreshold > 0 && options.approx.qMinimum >= options.approx.qThreshold) {
@@ -133,7 +140,8 @@ int SimulateCommand::run() const {
               << (s.held ? "yes" : "no") << ", object moved " << s.objectDisplacement * 1000 << " mm after settling; "
               << "results in " << o.out << "\n";
     if (s.mode == "approx") {
-        std::cout << "approximation (" << simulation::toString(options.approx.constraint) << "): " << (s.engaged ? "engaged at t = " + std::to_string(s.engageTime) + " s" : "never engaged")
+        std::cout << "approximation (" << simulation::toString(options.approx.constraint) << ", "
+                  << simulation::toString(options.approx.attach) << "): " << (s.engaged ? "engaged at t = " + std::to_string(s.engageTime) + " s" : "never engaged")
                   << ", " << result.events.size() << " switch event(s) in events.csv\n";
     }
     if (!s.complete) {

@@ -3,6 +3,7 @@
 #include "graspsim/error.h"
 #include "graspsim/model/body_model.h"
 #include "graspsim/simulation/grasp_switch.h"
+#include "graspsim/simulation/multi_attachment_switch.h"
 
 #include <algorithm>
 #include <cmath>
@@ -65,10 +66,13 @@ GraspScene::GraspScene(const scenario::Scenario& scenario, const SimulationOptio
         throw InputError("--mode approx: not available with --contact rigid (the grasp switch is an event handler, "
                          "and the rigid stepper runs none); use --mode full or --contact compliant");
     }
+    checkApproxAttach(scenario, options);
     addObject();
     addContacts();
     if (options.mode == SimulationMode::Approx) {
-        if (options.approx.constraint == ApproxConstraint::Weld) {
+        if (options.approx.attach == ApproxAttach::Multi) {
+            addMultiAttachment();
+        } else if (options.approx.constraint == ApproxConstraint::Weld) {
             addWeld();
         } else {
             addBushing();
@@ -169,6 +173,32 @@ void GraspScene::addWeld() {
                                                  SimTK::Transform(), object_, SimTK::Transform());
 }
 
+// One part per goal, at the goal on the surface, normal outward, x along gravity's tangent part (the
+// main load: the per-axis limits are exact along it). The parts share the merged bushing's stiffness:
+// N of them in parallel give the object the same frequency kBushingFrequency in translation.
+void GraspScene::addMultiAttachment() {
+    const model::ModelDescription& d = model_.getDescription();
+    const SimTK::Rotation R_OG = ~toTransform(scenario_.object.findPose()).R();
+    const SimTK::Vec3 g_O = R_OG * toVec3(scenario_.world.gravity);
+    std::vector<grasp::AttachmentSite> sites;
+    for (const auto& [endEffector, p_OG] : scenario_.goals) {
+        const model::Vec3 n = scenario_.object.findOutwardNormal(p_OG);
+        sites.push_back({model_.getMobilizedBody(d.findEndEffector(endEffector)->body), toVec3(p_OG),
+                         SimTK::UnitVec3(toVec3(n)), g_O});
+    }
+    const SimTK::MassProperties mp = object_.getBody().getDefaultRigidBodyMassProperties();
+    const SimTK::Vec3 I = mp.calcCentralInertia().getMoments();
+    const double w = kBushingFrequency, parts = static_cast<double>(sites.size());
+    SimTK::Vec6 stiffness, damping;
+    for (int k = 0; k < 3; ++k) {
+        stiffness[k] = I[k] * w * w / parts;
+        damping[k] = 2 * I[k] * w / parts;
+        stiffness[k + 3] = mp.getMass() * w * w / parts;
+        damping[k + 3] = 2 * mp.getMass() * w / parts;
+    }
+    multi_ = std::make_unique<grasp::MultiAttachment>(model_.updForces(), object_, sites, stiffness, damping);
+}
+
 const SimTK::MobilizedBody& GraspScene::getPalm() const { return model_.getMobilizedBody(kPalm); }
 
 void GraspScene::addController(const SimulationOptions& options) {
@@ -217,7 +247,8 @@ SimTK::State GraspScene::makeInitialState() {
     pd_->setTargets(state, targets);
     object_.setQToFitTransform(state, toTransform(scenario_.object.findPose()));
     object_.lock(state, SimTK::Motion::Position);
-    if (!bushing_.isEmptyHandle()) bushing_.setEnabled(state, false);  // contact holds the object until the switch engages
+    if (!bushing_.isEmptyHandle()) bushing_.setEnabled(state, false);
+    if (multi_) multi_->detachAll(state);  // contact holds the object until the switch engages
     model_.getSystem().realize(state, SimTK::Stage::Position);
     // The goals: the scenario's points on the object, pressed in along the inward normal, as they
     // sit in the palm frame now that hand and object are in place.

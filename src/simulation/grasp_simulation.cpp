@@ -118,7 +118,9 @@ private:
         if (scene_.getObject().isLocked(s)) return 0;
         const GraspSwitch* grasp = scene_.getGraspSwitch();
         if (!grasp || grasp->getEvents().empty()) return 1;
-        return grasp->isEngaged(s) && grasp->getEvents().size() == 1 ? 2 : 3;
+        const auto& events = grasp->getEvents();
+        const bool released = std::any_of(events.begin(), events.end(), [](const GraspEvent& e) { return e.kind == "release"; });
+        return grasp->isEngaged(s) && !released ? 2 : 3;  // detach events (multi) keep the first engagement
     }
 
     const GraspScene& scene_;
@@ -228,7 +230,8 @@ void summarizeSwitch(const GraspScene& scene, const PhaseTimer& timer, Simulatio
     summary.engaged = true;
     summary.engageTime = result.events.front().time;
     summary.qAtEngage = result.events.front().quality;
-    if (result.events.size() > 1) summary.releaseTime = result.events[1].time;
+    const auto release = std::find_if(result.events.begin(), result.events.end(), [](const GraspEvent& e) { return e.kind == "release"; });
+    if (release != result.events.end()) summary.releaseTime = release->time;
 }
 
 

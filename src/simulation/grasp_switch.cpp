@@ -3,6 +3,7 @@
 #include "graspsim/error.h"
 #include "graspsim/simulation/contact_grasp_quality.h"
 #include "graspsim/simulation/grasp_scene.h"
+#include "graspsim/simulation/multi_attachment_switch.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -75,9 +76,13 @@ GraspSwitch::GraspSwitch(const GraspScene& scene, const control::GraspController
     qMinimum_ = options_.qMinimum > 0 ? options_.qMinimum : options_.hysteresisFraction * qThreshold_;
     const model::ModelDescription& d = scene.getModel().getDescription();
     for (const std::string& e : scene.getGoalEndEffectors()) goalBodies_.push_back(d.findEndEffector(e)->body);
+    if (scene.getMultiAttachment()) multi_ = std::make_unique<MultiAttachmentSwitch>(scene, options.releaseSlideDistance);
 }
 
+GraspSwitch::~GraspSwitch() = default;
+
 bool GraspSwitch::isEngaged(const SimTK::State& state) const {
+    if (multi_) return multi_->isEngaged(state);
     if (const grasp::LimitedWeld* weld = scene_.getWeld()) return weld->isEnabled(state);
     return scene_.getBushing().isEnabled(state);
 }
@@ -100,7 +105,14 @@ double GraspSwitch::calcQuality(const SimTK::State& state) const {
                                    scene_.getObject().getBodyTransform(state), quality);
 }
 
-double GraspSwitch::calcEngagedQuality(const SimTK::State& state) const { return tracker_.calcQuality(state); }
+double GraspSwitch::calcEngagedQuality(const SimTK::State& state) const {
+    if (!multi_) return tracker_.calcQuality(state);
+    // Multi: the fingers move on their own and the palm-fixed tracker does not apply; Q is that of
+    // the contacts the pairs would produce (a scratch state with them switched on).
+    SimTK::State scratch = state;
+    scene_.getContacts().setPairsEnabled(scratch, allPairs(scene_.getContacts()), true);
+    return calcQuality(scratch);
+}
 
 bool GraspSwitch::isFullContact(const SimTK::State& state) const {
     scene_.getSystem().realize(state, SimTK::Stage::Velocity);
@@ -119,6 +131,7 @@ void GraspSwitch::checkEngage(SimTK::State& state) const {
         qThreshold_ = options_.autoThresholdFraction * q;
         if (options_.qMinimum == 0) qMinimum_ = options_.hysteresisFraction * qThreshold_;
     }
+    if (multi_ && !multi_->isSticking(state)) return;
     if (q > 0 && q >= qThreshold_) engage(state, q);
 }
 
@@ -126,6 +139,11 @@ void GraspSwitch::engage(SimTK::State& state, double quality) const {
     const SimTK::MultibodySystem& system = scene_.getSystem();
     system.realize(state, SimTK::Stage::Velocity);
     const std::vector<contact::ContactReport> reports = scene_.getContacts().findContactReports(state);
+    if (multi_) {
+        const std::string limitsText = multi_->engage(state, reports);
+        events_.push_back({state.getTime(), "engage", quality, format("Q >= Q_Th = %.6g N; ", qThreshold_) + limitsText});
+        return;
+    }
     const SimTK::Vec6 limits = calcFrictionLimits(reports, scene_.getScenario().contact.dynamicFriction);
     tracker_.capture(state, reports);
     placeConstraintFrames(state, findContactCentroid(reports));
@@ -172,9 +190,17 @@ void GraspSwitch::enableConstraint(SimTK::State& state, const SimTK::Vec6& limit
 }
 
 void GraspSwitch::checkRelease(SimTK::State& state) const {
-    tracker_.measurePenetration(state);
-    const double q = calcEngagedQuality(state);
-    const std::string reason = describeRelease(state, q);
+    double q = 0;
+    std::string reason;
+    if (multi_) {
+        q = calcEngagedQuality(state);
+        reason = multi_->update(state, q, events_);
+        if (reason.empty() && q < qMinimum_) reason = format("Q < Q_M = %.6g N", qMinimum_);
+    } else {
+        tracker_.measurePenetration(state);
+        q = calcEngagedQuality(state);
+        reason = describeRelease(state, q);
+    }
     if (!reason.empty()) release(state, q, reason);
 }
 
@@ -197,6 +223,11 @@ void GraspSwitch::release(SimTK::State& state, double quality, const std::string
     const SimTK::MultibodySystem& system = scene_.getSystem();
     system.realize(state, SimTK::Stage::Velocity);
     const SimTK::Vec3 v_before = scene_.getObject().getBodyOriginVelocity(state);
+    if (multi_) {
+        multi_->release(state);
+        events_.push_back({state.getTime(), "release", quality, reason, findVelocityJump(state, v_before)});
+        return;
+    }
     if (const grasp::LimitedWeld* weld = scene_.getWeld()) {
         weld->setEnabled(state, false);
     } else {

@@ -34,6 +34,13 @@ std::string toString(ContactModel model) { return model == ContactModel::Complia
 std::string toString(ApproxConstraint constraint) {
     return constraint == ApproxConstraint::Bushing ? "bushing" : "weld";
 }
+ApproxAttach parseApproxAttach(const std::string& text, const std::string& source) {
+    if (text == "merged") return ApproxAttach::Merged;
+    if (text == "multi") return ApproxAttach::Multi;
+    throw InputError(source + ": attachment '" + text + "' is not accepted; use merged or multi");
+}
+
+std::string toString(ApproxAttach attach) { return attach == ApproxAttach::Merged ? "merged" : "multi"; }
 std::string toString(SimulationMode mode) { return mode == SimulationMode::Full ? "full" : "approx"; }
 
 }  // namespace graspsim::simulation

@@ -25,6 +25,7 @@
 #include "graspsim/control/grasp_controller.h"
 #include "graspsim/grasp/limited_bushing.h"
 #include "graspsim/grasp/limited_weld.h"
+#include "graspsim/grasp/multi_attachment.h"
 #include "graspsim/scenario/scenario.h"
 #include "graspsim/simulation/perturbation_force.h"
 #include "graspsim/simulation/simulation_options.h"
@@ -93,6 +94,9 @@ public:
     /// The approximation's weld palm (F = palm frame) - object (M = O), or nullptr unless in
     /// approx mode with the weld realization.
     const grasp::LimitedWeld* getWeld() const { return weld_.get(); }
+    /// The `multi` attachment (object - every goal fingertip), or nullptr unless in approx mode with
+    /// ApproxOptions::attach Multi (multi_attachment_switch.h).
+    const grasp::MultiAttachment* getMultiAttachment() const { return multi_.get(); }
     /// The grasp switch (owned by the System) in approx mode, nullptr in full mode.
     const GraspSwitch* getGraspSwitch() const { return switch_; }
     /// Largest distance between a goal's fingertip and its goal point on the object's surface
@@ -115,6 +119,7 @@ private:
     void addBushing();
     void addWeld();
     void addImplicitImpedance();
+    void addMultiAttachment();
 
     const scenario::Scenario& scenario_;
     system::MultibodyModel model_;
@@ -128,6 +133,7 @@ private:
     control::GraspController* controller_ = nullptr;  // owned by the system (full) or ownedController_ (approx)
     std::unique_ptr<control::GraspController> ownedController_;  // approx: run by the switch, not the system
     grasp::LimitedBushing bushing_;
+    std::unique_ptr<grasp::MultiAttachment> multi_;
     std::unique_ptr<grasp::LimitedWeld> weld_;  // its handlers refer to it: destroyed before the System
     GraspSwitch* switch_ = nullptr;  // owned by the system
     std::vector<SimTK::MobilizedBodyIndex> fingerMobilizers_;

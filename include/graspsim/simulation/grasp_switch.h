@@ -32,6 +32,8 @@
 ///         pinch) was held by the approximation while full contact drops the object; at the
 ///         centroid the same pull makes its real moment about the grip, and the verdicts agree;
 ///     (e) record an "engage" event.
+///  With ApproxOptions::attach Multi, (c) and (d) are replaced by multi_attachment_switch.h (fingers
+///  stay free, one friction-limited part per fingertip, fingers detached one by one).
 ///  - GRASPED (constraint enabled): IK is skipped (the fingers are locked, and skipping it is where
 ///    the approximation saves its time). The contacts are still tracked without entering the
 ///    dynamics (engaged_grasp_tracker.h): their penetration is measured on a scratch copy of the
@@ -60,12 +62,14 @@
 
 #include <simbody/Simbody.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace graspsim::simulation {
 
 class GraspScene;
+class MultiAttachmentSwitch;
 
 /// One switch of the approximation.
 struct GraspEvent {
@@ -87,6 +91,7 @@ public:
     /// @throws graspsim::InputError for a negative threshold or a slide distance <= 0.
     GraspSwitch(const GraspScene& scene, const control::GraspController& controller, const ApproxOptions& options,
                 double interval);
+    ~GraspSwitch() override;
 
     void handleEvent(SimTK::State& state, SimTK::Real accuracy, bool& shouldTerminate) const override;
 
@@ -101,8 +106,10 @@ public:
 
     /// Grasp quality of the contacts active in `state` (N). Needs Stage::Velocity.
     double calcQuality(const SimTK::State& state) const;
-    /// Q while engaged (N): the constraint's wrench distributed over the tracked contacts
-    /// (EngagedGraspTracker::calcQuality). Realizes `state` to Stage::Acceleration.
+    /// Q while engaged (N). Merged: the constraint's wrench distributed over the tracked contacts
+    /// (EngagedGraspTracker::calcQuality). Multi: the quality of the contacts the pairs would
+    /// produce in `state` (evaluated on a scratch copy with the pairs on), since the fingers move
+    /// on their own. Realizes `state` to Stage::Acceleration.
     double calcEngagedQuality(const SimTK::State& state) const;
     /// The contacts tracked while engaged and the penetration measured so far.
     const EngagedGraspTracker& getTracker() const { return tracker_; }
@@ -122,6 +129,7 @@ private:
     const GraspScene& scene_;
     const control::GraspController& controller_;
     ApproxOptions options_;
+    std::unique_ptr<MultiAttachmentSwitch> multi_;  // ApproxAttach::Multi: replaces the merge (c) and (d)
     std::vector<std::string> goalBodies_;  // body of each goal end-effector
     mutable double qThreshold_ = 0;
     mutable double qMinimum_ = 0;

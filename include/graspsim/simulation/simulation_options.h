@@ -32,6 +32,12 @@ enum class ApproxConstraint {
     Weld      ///< rigid: per axis a stick constraint or, at the limit, the limit force (grasp::LimitedWeld)
 };
 
+/// How the end-effectors are attached to the object while the approximation is engaged.
+enum class ApproxAttach {
+    Merged,  ///< the thesis: fingers locked to the palm (one composite body), one palm-object element
+    Multi    ///< one element spanning the object and every fingertip, fingers free (grasp::MultiAttachment)
+};
+
 /// Settings of the grasp switch of `--mode approx` (thesis Figure 4.1; see grasp_switch.h).
 /// Defaults are this project's choices, documented where they are used.
 struct ApproxOptions {
@@ -55,6 +61,9 @@ struct ApproxOptions {
     /// The constraint realization. Default bushing (the first one built; results measured so far
     /// use it); `weld` is the rigid one, closer to the thesis's Vortex constraint.
     ApproxConstraint constraint = ApproxConstraint::Bushing;
+    /// The attachment variant. Multi needs the bushing realization and goals on bodies with contact
+    /// geometry (multi_attachment_switch.h).
+    ApproxAttach attach = ApproxAttach::Merged;
     /// Which constraint axes are relaxed (friction-limited); the others are locked (rigid). SpatialVec
     /// order, rotation x, y, z then translation x, y, z of the object frame. Unset (default): the
     /// scenario's approximation.relaxed_axes (whose default is all six).
@@ -86,5 +95,8 @@ std::string toString(IntegratorChoice integrator);
 ApproxConstraint parseApproxConstraint(const std::string& text, const std::string& source);
 std::string toString(ApproxConstraint constraint);
 std::string toString(SimulationMode mode);
+/// Parses "merged" or "multi". @throws graspsim::InputError naming `source`, the value and the choices.
+ApproxAttach parseApproxAttach(const std::string& text, const std::string& source);
+std::string toString(ApproxAttach attach);
 
 }  // namespace graspsim::simulation

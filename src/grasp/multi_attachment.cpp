@@ -1,0 +1,110 @@
+#include "graspsim/grasp/multi_attachment.h"
+
+#include "graspsim/error.h"
+
+#include <string>
+
+namespace graspsim::grasp {
+
+namespace {
+
+constexpr int kNormal = toIndex(BushingAxis::TranslationZ);
+
+// z axis along the outward normal n; x along the hint's tangent part, y = z x x.
+SimTK::Rotation makeSiteRotation(const SimTK::UnitVec3& n, const SimTK::Vec3& hint) {
+    const SimTK::Vec3 tangent = hint - (~hint * n) * n;
+    if (tangent.norm() == 0 || !(tangent.norm() > 1e-9 * hint.norm())) return SimTK::Rotation(n, SimTK::ZAxis);
+    return SimTK::Rotation(n, SimTK::ZAxis, tangent, SimTK::XAxis);
+}
+
+SimTK::Transform makeSiteTransform(const AttachmentSite& site) {
+    return SimTK::Transform(makeSiteRotation(site.n_O, site.tangentHint_O), site.p_OS);
+}
+
+}  // namespace
+
+MultiAttachment::MultiAttachment(SimTK::GeneralForceSubsystem& forces, const SimTK::MobilizedBody& object,
+                                 const std::vector<AttachmentSite>& sites, const SimTK::Vec6& stiffness,
+                                 const SimTK::Vec6& damping) {
+    if (sites.empty()) throw InputError("multi attachment: no attachment site (one per finger is needed)");
+    for (const AttachmentSite& site : sites) {
+        X_OS_.push_back(makeSiteTransform(site));
+        fingers_.push_back(site.finger);
+        parts_.emplace_back(forces, site.finger, SimTK::Transform(), object, X_OS_.back(), stiffness, damping);
+    }
+    p_FA_attached_.assign(sites.size(), SimTK::Vec3(0));
+    object_ = object;
+}
+
+void MultiAttachment::checkPart(int i) const {
+    if (i < 0 || i >= getNumParts()) {
+        throw InputError("multi attachment: part " + std::to_string(i) + " does not exist (" +
+                         std::to_string(getNumParts()) + " parts)");
+    }
+}
+
+const LimitedBushing& MultiAttachment::getPart(int i) const {
+    checkPart(i);
+    return parts_[static_cast<std::size_t>(i)];
+}
+
+const SimTK::Transform& MultiAttachment::getSiteTransform(int i) const {
+    checkPart(i);
+    return X_OS_[static_cast<std::size_t>(i)];
+}
+
+void MultiAttachment::detachAll(SimTK::State& state) const {
+    for (const LimitedBushing& part : parts_) part.setEnabled(state, false);
+}
+
+// Order matters: enable (Instance), anchor at the current pose, preload, then the limits, which
+// turn any preload beyond them into slip at once (a finger whose contact was already sliding).
+void MultiAttachment::attach(SimTK::State& state, int i, const FingerLoad& load, double mu) const {
+    const LimitedBushing& part = getPart(i);
+    const SimTK::MultibodySystem& system = SimTK::MultibodySystem::downcast(object_.getMatterSubsystem().getSystem());
+    part.setEnabled(state, true);
+    system.realize(state, SimTK::Stage::Position);
+    const SimTK::Transform X_GO = object_.getBodyTransform(state);
+    SimTK::Transform X_OS = getSiteTransform(i);
+    if (load.atContact) {
+        const SimTK::UnitVec3 n_G(load.normal_G);
+        X_OS = ~X_GO * SimTK::Transform(makeSiteRotation(n_G, load.tangentHint_G), load.contact_G);
+    }
+    const SimTK::Transform X_HF = ~fingers_[static_cast<std::size_t>(i)].getBodyTransform(state) * X_GO * X_OS;
+    part.setFrames(state, X_HF, X_OS);  // an Instance-stage change
+    system.realize(state, SimTK::Stage::Position);
+    part.resetAnchor(state);
+    // The anchor frame A is the site frame S now; the part's force on O is -K e, so the preload
+    // displacement is e = -f_A / K per translation axis.
+    const SimTK::Rotation R_GA = X_GO.R() * X_OS.R();
+    const SimTK::Vec3 f_A = ~R_GA * load.force_G;
+    SimTK::Vec6 e(0);
+    for (int k = 0; k < 3; ++k) e[3 + k] = -f_A[k] / part.getStiffness()[3 + k];
+    part.setAnchorDisplacement(state, e);
+    const double linear = mu * load.normalForce, angular = mu * load.armRadius * load.normalForce;
+    part.setLimits(state, SimTK::Vec6(angular, angular, angular, linear, linear, linear));
+    for (int k = 0; k < 6; ++k) part.setAxisLocked(state, static_cast<BushingAxis>(k), k == kNormal);
+    p_FA_attached_[static_cast<std::size_t>(i)] = part.findAnchorTransform(state).p();
+}
+
+void MultiAttachment::detach(SimTK::State& state, int i) const { getPart(i).setEnabled(state, false); }
+
+bool MultiAttachment::isAttached(const SimTK::State& state, int i) const { return getPart(i).isEnabled(state); }
+
+int MultiAttachment::countAttached(const SimTK::State& state) const {
+    int n = 0;
+    for (const LimitedBushing& part : parts_) n += part.isEnabled(state) ? 1 : 0;
+    return n;
+}
+
+// The part's force on O along S's z (outward): pressing pushes O inward, so the pressing force is
+// its negative.
+double MultiAttachment::findPressingForce(const SimTK::State& state, int i) const {
+    return -getPart(i).findGeneralizedForce(state)[kNormal];
+}
+
+double MultiAttachment::findSlide(const SimTK::State& state, int i) const {
+    return (getPart(i).findAnchorTransform(state).p() - p_FA_attached_[static_cast<std::size_t>(i)]).norm();
+}
+
+}  // namespace graspsim::grasp

@@ -1,0 +1,183 @@
+#include "graspsim/simulation/multi_attachment_switch.h"
+
+#include "graspsim/error.h"
+#include "graspsim/grasp/multi_attachment.h"
+#include "graspsim/model/body_model.h"
+#include "graspsim/simulation/grasp_scene.h"
+#include "graspsim/simulation/grasp_switch.h"
+
+#include <algorithm>
+#include <array>
+#include <cstdio>
+#include <numeric>
+
+namespace graspsim::simulation {
+
+namespace {
+
+// One point contact (or none) cannot hold an object against a general load.
+constexpr int kMinAttachedFingers = 2;
+
+bool isPalm(const std::string& name) { return name.size() >= 4 && name.compare(name.size() - 4, 4, "palm") == 0; }
+
+// The bodies from an end-effector's body up to (not including) the palm.
+std::vector<std::string> findDigitBodies(const model::ModelDescription& d, const std::string& endEffector) {
+    std::vector<std::string> bodies;
+    std::string body = d.findEndEffector(endEffector)->body;
+    while (!isPalm(body)) {
+        bodies.push_back(body);
+        const model::Joint* j = d.findParentJoint(body);
+        if (!j) throw Error("end-effector '" + endEffector + "' does not hang from a palm");
+        body = j->parent;
+    }
+    return bodies;
+}
+
+std::string format(const char* pattern, double a, double b = 0) {
+    char buffer[200];
+    std::snprintf(buffer, sizeof buffer, pattern, a, b);
+    return buffer;
+}
+
+// Eq. 4.1-4.3 over one finger's contacts; the force is the one on the object (b), in Ground.
+// The part's site: the centroid of the contacts, the object's outward normal their mean -n.
+grasp::FingerLoad calcFingerLoad(const std::vector<const contact::ContactReport*>& contacts) {
+    grasp::FingerLoad load;
+    if (contacts.empty()) return load;
+    SimTK::Vec3 centroid(0), inward(0);
+    for (const contact::ContactReport* c : contacts) {
+        const SimTK::Vec3 f = c->normalForce * SimTK::Vec3(c->n_G) + c->frictionForce_G;
+        load.force_G += f;
+        load.normalForce += ~f * SimTK::Vec3(c->n_G);
+        centroid += c->p_G;
+        inward += SimTK::Vec3(c->n_G);
+    }
+    centroid /= static_cast<double>(contacts.size());
+    load.atContact = inward.norm() > 0;
+    load.contact_G = centroid;
+    if (load.atContact) load.normal_G = -inward / inward.norm();
+    for (const contact::ContactReport* c : contacts) load.armRadius += (c->p_G - centroid).norm();
+    load.armRadius /= static_cast<double>(contacts.size());
+    load.normalForce = std::max(0.0, load.normalForce);
+    return load;
+}
+
+}  // namespace
+
+void checkApproxAttach(const scenario::Scenario& scenario, const SimulationOptions& options) {
+    if (options.mode != SimulationMode::Approx || options.approx.attach != ApproxAttach::Multi) return;
+    if (options.approx.constraint != ApproxConstraint::Bushing) {
+        throw InputError("--attach: 'multi' is not available with --constraint " + toString(options.approx.constraint) +
+                         " (its parts are friction-limited bushings); use --constraint bushing or --attach merged");
+    }
+    const model::ModelDescription d = model::buildBodyModel(scenario.bodyOptions);
+    for (const auto& [endEffector, goal] : scenario.goals) {
+        const model::EndEffector* e = d.findEndEffector(endEffector);
+        const model::Body* body = e ? d.findBody(e->body) : nullptr;
+        if (body && !body->geometry.empty()) continue;
+        throw InputError("--attach: 'multi' is not accepted for scenario '" + scenario.name + "': goal end-effector '" +
+                         endEffector + "' is on a body without contact geometry; use --attach merged");
+    }
+}
+
+MultiAttachmentSwitch::MultiAttachmentSwitch(const GraspScene& scene, double slideLimit)
+    : scene_(scene), slideLimit_(slideLimit) {
+    const model::ModelDescription& d = scene.getModel().getDescription();
+    const contact::CompliantContactForce& contacts = scene.getContacts();
+    for (const std::string& endEffector : scene.getGoalEndEffectors()) {
+        fingerBodies_.push_back(findDigitBodies(d, endEffector));
+        fingerPairs_.emplace_back();
+    }
+    for (int p = 0; p < contacts.getNumPairs(); ++p) {
+        const int finger = findFinger(contacts.getPair(p).a.bodyName);
+        if (finger >= 0) fingerPairs_[static_cast<std::size_t>(finger)].push_back(p);
+    }
+}
+
+int MultiAttachmentSwitch::findFinger(const std::string& body) const {
+    for (std::size_t i = 0; i < fingerBodies_.size(); ++i) {
+        if (std::find(fingerBodies_[i].begin(), fingerBodies_[i].end(), body) != fingerBodies_[i].end()) {
+            return static_cast<int>(i);
+        }
+    }
+    return -1;
+}
+
+bool MultiAttachmentSwitch::isSticking(const SimTK::State& state) const {
+    scene_.getSystem().realize(state, SimTK::Stage::Velocity);
+    const double limit = scene_.getScenario().contact.transitionVelocity;
+    for (const contact::ContactReport& c : scene_.getContacts().findContactReports(state)) {
+        if (findFinger(c.bodyA) >= 0 && !(c.slipVelocity_G.norm() < limit)) return false;
+    }
+    return true;
+}
+
+bool MultiAttachmentSwitch::isEngaged(const SimTK::State& state) const {
+    return scene_.getMultiAttachment()->countAttached(state) > 0;
+}
+
+std::string MultiAttachmentSwitch::engage(SimTK::State& state, const std::vector<contact::ContactReport>& reports) const {
+    std::vector<std::vector<const contact::ContactReport*>> perFinger(fingerBodies_.size());
+    for (const contact::ContactReport& c : reports) {
+        const int finger = findFinger(c.bodyA);
+        if (finger >= 0) perFinger[static_cast<std::size_t>(finger)].push_back(&c);
+    }
+    // Only the goal digits' pairs: the palm and digits without a goal stay in ordinary contact.
+    std::vector<int> replaced;
+    for (const std::vector<int>& pairs : fingerPairs_) replaced.insert(replaced.end(), pairs.begin(), pairs.end());
+    scene_.getContacts().setPairsEnabled(state, replaced, false);
+    const double mu = scene_.getScenario().contact.dynamicFriction;
+    std::string text = "multi: tangent limits";
+    const auto& g = scene_.getScenario().world.gravity;
+    for (std::size_t i = 0; i < perFinger.size(); ++i) {
+        grasp::FingerLoad load = calcFingerLoad(perFinger[i]);
+        load.tangentHint_G = SimTK::Vec3(g[0], g[1], g[2]);  // the main load: exact along it
+        scene_.getMultiAttachment()->attach(state, static_cast<int>(i), load, mu);
+        text += " " + scene_.getGoalEndEffectors()[i] + format(" %.4g N", mu * load.normalForce);
+    }
+    return text;
+}
+
+std::string MultiAttachmentSwitch::update(SimTK::State& state, double quality, std::vector<GraspEvent>& events) const {
+    const grasp::MultiAttachment& multi = *scene_.getMultiAttachment();
+    scene_.getSystem().realize(state, SimTK::Stage::Velocity);
+    std::vector<std::pair<int, std::string>> leaving;
+    for (int i = 0; i < multi.getNumParts(); ++i) {
+        if (!multi.isAttached(state, i)) continue;
+        const std::string reason = describeDetach(state, i);
+        if (!reason.empty()) leaving.emplace_back(i, reason);
+    }
+    for (const auto& [i, reason] : leaving) {
+        multi.detach(state, i);
+        scene_.getContacts().setPairsEnabled(state, fingerPairs_[static_cast<std::size_t>(i)], true);
+        events.push_back({state.getTime(), "detach", quality, scene_.getGoalEndEffectors()[static_cast<std::size_t>(i)] + ": " + reason});
+    }
+    const int attached = multi.countAttached(state);
+    if (attached >= kMinAttachedFingers) return {};
+    return format("%.0f finger(s) still attached (at least %.0f needed)", attached, kMinAttachedFingers);
+}
+
+// Empty while finger i still holds; needs Stage::Velocity.
+std::string MultiAttachmentSwitch::describeDetach(const SimTK::State& state, int finger) const {
+    const grasp::MultiAttachment& multi = *scene_.getMultiAttachment();
+    const double pressing = multi.findPressingForce(state, finger);
+    if (!(pressing > 0)) return format("stopped pressing (normal force %.4g N)", pressing);
+    const double slide = multi.findSlide(state, finger);
+    if (slide > slideLimit_) return format("slid %.4g m on the object (limit %.4g m)", slide, slideLimit_);
+    const std::size_t k = static_cast<std::size_t>(finger);
+    const SimTK::Vec3 p_GE = scene_.getModel().findEndEffectorLocationInGround(state, scene_.getGoalEndEffectors()[k]);
+    const double distance = (p_GE - scene_.getObject().getBodyTransform(state) * scene_.getSurfaceGoals()[k]).norm();
+    const double tolerance = scene_.getScenario().simulation.heldTolerance;
+    if (distance > tolerance) return format("fingertip %.4g m from its goal (held tolerance %.4g m)", distance, tolerance);
+    return {};
+}
+
+void MultiAttachmentSwitch::release(SimTK::State& state) const {
+    scene_.getMultiAttachment()->detachAll(state);
+    const contact::CompliantContactForce& contacts = scene_.getContacts();
+    std::vector<int> all(static_cast<std::size_t>(contacts.getNumPairs()));
+    std::iota(all.begin(), all.end(), 0);
+    contacts.setPairsEnabled(state, all, true);
+}
+
+}  // namespace graspsim::simulation
