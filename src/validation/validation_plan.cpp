@@ -36,6 +36,7 @@ simulation::SimulationOptions makeOptions(const std::string& variant, const std:
         options.accuracy = kReferenceAccuracy;
     }
     if (variant.find("-weld") != std::string::npos) options.approx.constraint = simulation::ApproxConstraint::Weld;
+    if (variant.find("-multi") != std::string::npos) options.approx.attach = simulation::ApproxAttach::Multi;
     options.perturbation = perturbation;
     options.duration = duration;
     return options;
@@ -57,7 +58,8 @@ const std::vector<std::string>& getThesisExperiments() {
 }
 
 const std::vector<std::string>& getAvailableVariants() {
-    static const std::vector<std::string> names{"full", "full-cvode", "full-rigid", "approx-bushing-merged", "approx-weld-merged"};
+    static const std::vector<std::string> names{"full", "full-cvode", "full-rigid", "approx-bushing-merged", "approx-weld-merged",
+                                                "approx-bushing-multi"};
     return names;
 }
 

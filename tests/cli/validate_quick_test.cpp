@@ -18,8 +18,8 @@ TEST_F(ValidateQuick, PassesEveryBoundAndWritesReportTablesAndPlots) {
     EXPECT_NE(report.find(" 0 failed"), std::string::npos) << report;
     EXPECT_EQ(report.find("FAIL"), std::string::npos) << report;
     const std::string results = slurp(out / "results.csv");
-    // header + full contact + its CVODE reference + the two approximation realizations
-    EXPECT_EQ(std::count(results.begin(), results.end(), '\n'), 5) << results;
+    // header + full contact + its CVODE reference + bushing-merged, weld-merged, bushing-multi
+    EXPECT_EQ(std::count(results.begin(), results.end(), '\n'), 6) << results;
     for (const char* plot : {"ball-clutch_trajectory.png", "ball-clutch_quality.png", "ball-clutch_forces.png",
                              "ball-clutch_error.png"}) {
         EXPECT_GT(fs::file_size(out / plot), 1000u) << plot;

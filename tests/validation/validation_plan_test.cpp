@@ -31,6 +31,7 @@ TEST(ValidationPlan, FullSuiteCoversEveryExperimentPerturbationAndVariantWithRef
         EXPECT_EQ(r.options.integrator == simulation::IntegratorChoice::Cvode, r.variant == "full-cvode") << r.id;
         EXPECT_EQ(r.options.contact == simulation::ContactModel::Rigid, r.variant == "full-rigid") << r.id;
         EXPECT_EQ(r.options.approx.constraint == simulation::ApproxConstraint::Weld, r.variant.find("weld") != std::string::npos);
+        EXPECT_EQ(r.options.approx.attach == simulation::ApproxAttach::Multi, r.variant.find("multi") != std::string::npos);
     }
     EXPECT_TRUE(runs.back().longHold);
     EXPECT_EQ(runs.back().options.duration, 600);

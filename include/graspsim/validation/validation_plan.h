@@ -39,7 +39,8 @@ const std::vector<std::string>& getThesisExperiments();
 /// Every variant this build can run: "full" first (compliant contact, Simbody's CPodes: the
 /// reference of the others), "full-cvode" (the CVODE reference integrator; run without
 /// perturbation only), "full-rigid" (rigid contact), then the approximation variants
-/// "approx-<bushing|weld>-<merged|multi>" (compliant contact before engaging).
+/// "approx-bushing-merged", "approx-weld-merged", "approx-bushing-multi" (compliant contact
+/// before engaging; multi is built on bushings only).
 const std::vector<std::string>& getAvailableVariants();
 
 /// The runs for `options`, references before the runs that compare against them.
