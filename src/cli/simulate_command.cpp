@@ -55,27 +55,34 @@ double parseQuality(const std::string& text, const std::string& source) {
     return value;
 }
 
-// Everything the user gave is checked here, before the output folder is touched.
+// Every option the user gave that needs no scenario; checked before anything is loaded or written.
 simulation::SimulationOptions parseOptions(const std::string& contact, const std::string& mode,
-                                           const std::string& perturbation, const std::string& duration,
-                                           const scenario::Scenario& scenario) {
+                                           const std::string& duration, const std::string& qThreshold,
+                                           const std::string& qMinimum) {
     simulation::SimulationOptions options;
     options.contact = simulation::parseContactModel(contact, "--contact");
     options.mode = simulation::parseSimulationMode(mode, "--mode");
-    if (perturbation != "none" && !scenario.findPerturbation(perturbation)) {
-        std::string known;
-        for (const auto& p : scenario.perturbations) known += (known.empty() ? "" : ", ") + p.name;
-        throw InputError("--perturbation: '" + perturbation + "' is not accepted; scenario '" + scenario.name +
-                         "' has none, " + known);
-    }
-    options.perturbation = perturbation;
     if (!duration.empty()) {
         options.duration = parseNumber(duration, "--duration", "the duration must be a number of seconds > 0");
         if (!(options.duration > 0) || !std::isfinite(options.duration)) {
             throw InputError("--duration: value " + duration + " is not accepted; the duration must be a number of seconds > 0");
         }
     }
+    options.approx.qThreshold = parseQuality(qThreshold, "--q-threshold");
+    options.approx.qMinimum = parseQuality(qMinimum, "--q-minimum");
+    if (options.approx.qThreshold > 0 && options.approx.qMinimum > options.approx.qThreshold) {
+        throw InputError("--q-minimum: value " + qMinimum + " is not accepted; Q_M must not exceed --q-threshold " + qThreshold);
+    }
     return options;
+}
+
+// The perturbation must be one of the scenario's.
+void checkPerturbation(const std::string& perturbation, const scenario::Scenario& scenario) {
+    if (perturbation == "none" || scenario.findPerturbation(perturbation)) return;
+    std::string known;
+    for (const auto& p : scenario.perturbations) known += (known.empty() ? "" : ", ") + p.name;
+    throw InputError("--perturbation: '" + perturbation + "' is not accepted; scenario '" + scenario.name +
+                     "' has none, " + known);
 }
 
 void prepareFolder(const std::string& folder) {
@@ -99,15 +106,17 @@ simulation::ProgressCallback makeProgress() {
 
 }  // namespace
 
+void SimulateCommand::checkOptions() const {
+    const Options& o = *options_;
+    parseOptions(o.contact, o.mode, o.duration, o.qThreshold, o.qMinimum);
+}
+
 int SimulateCommand::run() const {
     const Options& o = *options_;
+    simulation::SimulationOptions options = parseOptions(o.contact, o.mode, o.duration, o.qThreshold, o.qMinimum);
     const scenario::Scenario scenario = scenario::loadScenario(o.scenario);
-    simulation::SimulationOptions options = parseOptions(o.contact, o.mode, o.perturbation, o.duration, scenario);
-    options.approx.qThreshold = parseQuality(o.qThreshold, "--q-threshold");
-    options.approx.qMinimum = parseQuality(o.qMinimum, "--q-minimum");
-    if (options.approx.qThreshold > 0 && options.approx.qMinimum > options.approx.qThreshold) {
-        throw InputError("--q-minimum: value " + o.qMinimum + " is not accepted; Q_M must not exceed --q-threshold " + o.qThreshold);
-    }
+    checkPerturbation(o.perturbation, scenario);
+    options.perturbation = o.perturbation;
     prepareFolder(o.out);
     const simulation::SimulationResult result = simulation::runGraspSimulation(scenario, options, makeProgress());
     results::writeResultFiles(o.out, result);

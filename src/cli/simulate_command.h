@@ -11,6 +11,8 @@ class SimulateCommand {
 public:
     explicit SimulateCommand(CLI::App& app);
     bool parsed() const;
+    // Checks the option values that need no scenario (numbers, names); throws InputError.
+    void checkOptions() const;
     // Runs the simulation; returns the exit code (0, or 3 when the run stopped early).
     int run() const;
 
