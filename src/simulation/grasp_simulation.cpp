@@ -1,5 +1,7 @@
 #include "graspsim/simulation/grasp_simulation.h"
 
+#include "cpodes_stepper.h"
+
 #include "graspsim/error.h"
 #include "graspsim/simulation/contact_grasp_quality.h"
 #include "graspsim/simulation/grasp_scene.h"
@@ -119,18 +121,17 @@ private:
 };
 
 // Steps from sample to sample, releasing the object on time; `lastEvent` says what happened last.
-void stepThroughSamples(const GraspScene& scene, SimTK::TimeStepper& stepper, Recorder& recorder, PhaseTimer& phases,
+void stepThroughSamples(const GraspScene& scene, CpodesStepper& stepper, Recorder& recorder, PhaseTimer& phases,
                         double duration, const ProgressCallback& progress, std::string& lastEvent) {
-    const SimTK::Integrator& integrator = stepper.getIntegrator();
     for (double t : makeSampleTimes(scene, duration)) {
         stepper.stepTo(t);
         checkFinite(stepper.getState(), lastEvent);
-        phases.mark(stepper.getState(), integrator.getNumStepsTaken());
+        phases.mark(stepper.getState(), stepper.getNumStepsTaken());
         if (std::abs(t - scene.getReleaseTime()) < 1e-12) {
             SimTK::State released = stepper.getState();
             scene.releaseObject(released);
             stepper.initialize(released);  // a lock change is an Instance-stage change
-            phases.rebase(stepper.getState(), integrator.getNumStepsTaken());  // initialize() restarts the count
+            phases.rebase(stepper.getState(), stepper.getNumStepsTaken());  // initialize() restarts the count
             lastEvent = "object released at t = " + std::to_string(t) + " s";
         }
         recorder.record(stepper.getState());
@@ -206,9 +207,7 @@ SimulationResult runGraspSimulation(const scenario::Scenario& scenario, const Si
     summary = makeSummaryHeader(scenario, options, duration);
     Recorder recorder(scene, result);
 
-    SimTK::CPodesIntegrator integrator(scene.getSystem(), SimTK::CPodes::BDF, SimTK::CPodes::Newton);
-    integrator.setAccuracy(scenario.simulation.accuracy);
-    SimTK::TimeStepper stepper(scene.getSystem(), integrator);
+    CpodesStepper stepper(scene.getSystem(), scenario.simulation.accuracy);
     SimTK::State initial = scene.makeInitialState();
     stepper.initialize(initial);
     recorder.record(stepper.getState());
