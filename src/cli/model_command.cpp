@@ -74,6 +74,15 @@ model::BuildOptions parseBuildOptions(const std::string& sex, const std::string&
     return options;
 }
 
+void parseFingerOptions(const std::string& stiffness, const std::string& damping, model::BuildOptions& options) {
+    if (!stiffness.empty()) {
+        options.fingerStiffness = parseNumber(stiffness, "--finger-stiffness", "a number >= 0 N m/rad");
+    }
+    if (!damping.empty()) {
+        options.fingerDamping = parseNumber(damping, "--finger-damping", "a number >= 0 N m s/rad");
+    }
+}
+
 // Builds the Simbody system too, so `info` vouches that the file simulates, not just parses.
 int countSimbodyDofs(const model::ModelDescription& description) {
     system::MultibodyModel multibody(description);
@@ -123,6 +132,15 @@ void printInfoText(const nlohmann::ordered_json& info) {
 
 bool ModelCommand::parsed() const { return model_->parsed(); }
 
+void ModelCommand::checkOptions() const {
+    const Options& o = *options_;
+    if (build_->parsed()) {
+        model::BuildOptions options = parseBuildOptions(o.sex, o.mass, o.stature, o.preset, o.body);
+        parseFingerOptions(o.fingerStiffness, o.fingerDamping, options);
+    }
+    if (object_->parsed()) model::buildObjectModel(o.objectName, "object name");
+}
+
 int ModelCommand::run() const {
     const Options& o = *options_;
     if (!build_->parsed() && !object_->parsed() && !info_->parsed()) {
@@ -130,12 +148,7 @@ int ModelCommand::run() const {
     }
     if (build_->parsed()) {
         model::BuildOptions options = parseBuildOptions(o.sex, o.mass, o.stature, o.preset, o.body);
-        if (!o.fingerStiffness.empty()) {
-            options.fingerStiffness = parseNumber(o.fingerStiffness, "--finger-stiffness", "a number >= 0 N m/rad");
-        }
-        if (!o.fingerDamping.empty()) {
-            options.fingerDamping = parseNumber(o.fingerDamping, "--finger-damping", "a number >= 0 N m s/rad");
-        }
+        parseFingerOptions(o.fingerStiffness, o.fingerDamping, options);
         const model::ModelDescription description = model::buildBodyModel(options);
         io::writeFileAtomically(o.output, model::writeUrdf(description));
         std::cout << "wrote " << o.output << ": " << description.bodies.size() << " bodies, "

@@ -12,6 +12,8 @@ namespace graspsim::cli {
 class ModelCommand {
 public:
     explicit ModelCommand(CLI::App& app);
+    // Checks the option values that need no file (numbers, ranges, names); throws InputError.
+    void checkOptions() const;
     // Runs whichever subcommand was parsed; returns the process exit code.
     int run() const;
     // True when the command line chose `model`.

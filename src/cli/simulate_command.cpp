@@ -68,27 +68,30 @@ double parseQuality(const std::string& text, const std::string& source) {
     return value;
 }
 
-// Everything the user gave is checked here, before the output folder is touched.
-simulation::SimulationOptions parseOptions(const std::string& contact, const std::string& mode,
-                                           const std::string& perturbation, const std::string& duration,
-                                           const scenario::Scenario& scenario) {
-    simulation::SimulationOptions options;
-    options.contact = simulation::parseContactModel(contact, "--contact");
-    options.mode = simulation::parseSimulationMode(mode, "--mode");
-    if (perturbation != "none" && !scenario.findPerturbation(perturbation)) {
-        std::string known;
-        for (const auto& p : scenario.perturbations) known += (known.empty() ? "" : ", ") + p.name;
-        throw InputError("--perturbation: '" + perturbation + "' is not accepted; scenario '" + scenario.name +
-                         "' has none, " + known);
+// A relative accuracy in (0, 1); empty keeps the scenario's (0).
+double parseAccuracy(const std::string& text) {
+    if (text.empty()) return 0;
+    const double value = parseNumber(text, "--accuracy", "a number in (0, 1)");
+    if (!(value > 0 && value < 1)) throw InputError("--accuracy: value " + text + " is not accepted; use a number in (0, 1)");
+    return value;
+}
+
+double parseDuration(const std::string& text) {
+    if (text.empty()) return 0;
+    const double value = parseNumber(text, "--duration", "the duration must be a number of seconds > 0");
+    if (!(value > 0) || !std::isfinite(value)) {
+        throw InputError("--duration: value " + text + " is not accepted; the duration must be a number of seconds > 0");
     }
-    options.perturbation = perturbation;
-    if (!duration.empty()) {
-        options.duration = parseNumber(duration, "--duration", "the duration must be a number of seconds > 0");
-        if (!(options.duration > 0) || !std::isfinite(options.duration)) {
-            throw InputError("--duration: value " + duration + " is not accepted; the duration must be a number of seconds > 0");
-        }
-    }
-    return options;
+    return value;
+}
+
+// The perturbation must be one of the scenario's.
+void checkPerturbation(const std::string& perturbation, const scenario::Scenario& scenario) {
+    if (perturbation == "none" || scenario.findPerturbation(perturbation)) return;
+    std::string known;
+    for (const auto& p : scenario.perturbations) known += (known.empty() ? "" : ", ") + p.name;
+    throw InputError("--perturbation: '" + perturbation + "' is not accepted; scenario '" + scenario.name +
+                     "' has none, " + known);
 }
 
 void prepareFolder(const std::string& folder) {
@@ -112,25 +115,33 @@ simulation::ProgressCallback makeProgress() {
 
 }  // namespace
 
-int SimulateCommand::run() const {
+simulation::SimulationOptions SimulateCommand::parseOptions() const {
     const Options& o = *options_;
-    const scenario::Scenario scenario = scenario::loadScenario(o.scenario);
-    simulation::SimulationOptions options = parseOptions(o.contact, o.mode, o.perturbation, o.duration, scenario);
+    simulation::SimulationOptions options;
+    options.contact = simulation::parseContactModel(o.contact, "--contact");
+    options.mode = simulation::parseSimulationMode(o.mode, "--mode");
+    options.duration = parseDuration(o.duration);
     options.integrator = simulation::parseIntegratorChoice(o.integrator, "--integrator");
-    if (!o.accuracy.empty()) {
-        options.accuracy = parseNumber(o.accuracy, "--accuracy", "a number in (0, 1)");
-        if (!(options.accuracy > 0 && options.accuracy < 1)) {
-            throw InputError("--accuracy: value " + o.accuracy + " is not accepted; use a number in (0, 1)");
-        }
-    }
+    options.accuracy = parseAccuracy(o.accuracy);
     options.approx.constraint = simulation::parseApproxConstraint(o.constraint, "--constraint");
     options.approx.attach = simulation::parseApproxAttach(o.attach, "--attach");
-    simulation::checkApproxAttach(scenario, options);
     options.approx.qThreshold = parseQuality(o.qThreshold, "--q-threshold");
     options.approx.qMinimum = parseQuality(o.qMinimum, "--q-minimum");
     if (options.approx.qThreshold > 0 && options.approx.qMinimum >= options.approx.qThreshold) {
         throw InputError("--q-minimum: value " + o.qMinimum + " is not accepted; Q_M must be below --q-threshold " + o.qThreshold);
     }
+    return options;
+}
+
+void SimulateCommand::checkOptions() const { parseOptions(); }
+
+int SimulateCommand::run() const {
+    const Options& o = *options_;
+    simulation::SimulationOptions options = parseOptions();
+    const scenario::Scenario scenario = scenario::loadScenario(o.scenario);
+    checkPerturbation(o.perturbation, scenario);
+    options.perturbation = o.perturbation;
+    simulation::checkApproxAttach(scenario, options);
     prepareFolder(o.out);
     const simulation::SimulationResult result = simulation::runGraspSimulation(scenario, options, makeProgress());
     results::writeResultFiles(o.out, result);

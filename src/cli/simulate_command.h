@@ -1,6 +1,8 @@
 #pragma once
 // `graspsim simulate`: load a scenario, run it, write the result files.
 
+#include "graspsim/simulation/simulation_options.h"
+
 #include <CLI/CLI.hpp>
 
 #include <memory>
@@ -11,10 +13,15 @@ class SimulateCommand {
 public:
     explicit SimulateCommand(CLI::App& app);
     bool parsed() const;
+    // Checks the option values that need no scenario (numbers, names); throws InputError.
+    void checkOptions() const;
     // Runs the simulation; returns the exit code (0, or 3 when the run stopped early).
     int run() const;
 
 private:
+    // Every option the user gave that needs no scenario, checked before anything is loaded or written.
+    simulation::SimulationOptions parseOptions() const;
+
     struct Options;
     std::shared_ptr<Options> options_;
     CLI::App* command_ = nullptr;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <memory>
 #include <cmath>
+#include <memory>
 
 namespace graspsim::control {
 
@@ -24,16 +25,18 @@ FingertipIk::FingertipIk(const system::MultibodyModel& model, const std::vector<
     for (SimTK::MobilizedBodyIndex b(1); b < matter.getNumBodies(); ++b) {
         if (std::find(movingBodies_.begin(), movingBodies_.end(), b) == movingBodies_.end()) assembler_->lockMobilizer(b);
     }
-    markers_ = new SimTK::Markers();
+    // Owned here until the assembler adopts it, so that an unknown name below leaks nothing.
+    auto markers = std::make_unique<SimTK::Markers>();
     SimTK::Array_<SimTK::Markers::MarkerIx> order;
     for (const std::string& name : endEffectors) {
         const model::EndEffector* e = d.findEndEffector(name);
         if (!e) throw InputError("IK: no end-effector named '" + name + "'");
         const SimTK::Vec3 p_BE(e->p_BE[0], e->p_BE[1], e->p_BE[2]);
-        order.push_back(markers_->addMarker(name, model.getMobilizedBody(e->body), p_BE));
+        order.push_back(markers->addMarker(name, model.getMobilizedBody(e->body), p_BE));
     }
-    markers_->defineObservationOrder(order);
-    assembler_->adoptAssemblyGoal(markers_);
+    markers->defineObservationOrder(order);
+    markers_ = markers.get();
+    assembler_->adoptAssemblyGoal(markers.release());
     assembler_->setAccuracy(1e-6);
 }
 

@@ -3,25 +3,35 @@
 namespace graspsim::integration {
 
 SimbodyCpodesStepper::SimbodyCpodesStepper(const SimTK::System& system, double accuracy)
-    : integrator_(system, SimTK::CPodes::BDF, SimTK::CPodes::Newton), stepper_(system, integrator_) {
-    integrator_.setAccuracy(accuracy);
+    : system_(system), accuracy_(accuracy) {
+    makeIntegrator();
 }
 
-// Simbody's initialize() zeroes the integrator's counters: bank them first.
+void SimbodyCpodesStepper::makeIntegrator() {
+    stepper_.reset();  // it refers to the old integrator
+    integrator_ = std::make_unique<SimTK::CPodesIntegrator>(system_, SimTK::CPodes::BDF, SimTK::CPodes::Newton);
+    integrator_->setAccuracy(accuracy_);
+    stepper_ = std::make_unique<SimTK::TimeStepper>(system_, *integrator_);
+}
+
+// A restart begins on a new integrator (see the header): bank the old one's counters first.
 void SimbodyCpodesStepper::initialize(const SimTK::State& initial) {
-    if (initialized_) addCurrentCountsTo(totals_);
-    stepper_.initialize(initial);
+    if (initialized_) {
+        addCurrentCountsTo(totals_);
+        makeIntegrator();
+    }
+    stepper_->initialize(initial);
     initialized_ = true;
 }
 
-void SimbodyCpodesStepper::stepTo(double time) { stepper_.stepTo(time); }
+void SimbodyCpodesStepper::stepTo(double time) { stepper_->stepTo(time); }
 
 void SimbodyCpodesStepper::addCurrentCountsTo(IntegrationStatistics& s) const {
-    s.steps += integrator_.getNumStepsTaken();
-    s.rhsEvaluations += integrator_.getNumRealizations();
-    s.errorTestFailures += integrator_.getNumErrorTestFailures();
-    s.convergenceFailures += integrator_.getNumConvergenceTestFailures();
-    s.projections += integrator_.getNumProjections();
+    s.steps += integrator_->getNumStepsTaken();
+    s.rhsEvaluations += integrator_->getNumRealizations();
+    s.errorTestFailures += integrator_->getNumErrorTestFailures();
+    s.convergenceFailures += integrator_->getNumConvergenceTestFailures();
+    s.projections += integrator_->getNumProjections();
 }
 
 IntegrationStatistics SimbodyCpodesStepper::getStatistics() const {

@@ -1,5 +1,6 @@
 #include "graspsim/simulation/grasp_simulation.h"
 
+
 #include "graspsim/error.h"
 #include "graspsim/integration/cvode_integrator.h"
 #include "graspsim/integration/simbody_stepper.h"
@@ -237,8 +238,11 @@ void summarizeSwitch(const GraspScene& scene, const PhaseTimer& timer, Simulatio
 
 // Held: every goal's fingertip still within the tolerance of its goal point on the object.
 void summarizeGrip(const GraspScene& scene, const SimTK::State& s, SimulationSummary& summary) {
+    // After a numerical failure the last state may hold NaNs, which Simbody refuses to realize;
+    // such a run is not held anyway.
+    if (!summary.complete) return;
     summary.maxFingertipGoalDistance = scene.findMaxFingertipGoalDistance(s);
-    summary.held = summary.complete && summary.maxFingertipGoalDistance <= scene.getScenario().simulation.heldTolerance;
+    summary.held = summary.maxFingertipGoalDistance <= scene.getScenario().simulation.heldTolerance;
 }
 
 void summarizeDrift(const SimulationResult& result, SimulationSummary& summary) {

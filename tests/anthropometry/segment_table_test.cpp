@@ -59,7 +59,8 @@ TEST_P(DeLevaTable, TrunkPartLengthsSumToTrunkLength) {
 }
 
 TEST_P(DeLevaTable, EveryFractionIsInItsRange) {
-    for (const SegmentParameters& segment : SegmentTable::loadDeLeva(GetParam()).getSegments()) {
+    const SegmentTable table = SegmentTable::loadDeLeva(GetParam());  // not a temporary: the loop reads its rows
+    for (const SegmentParameters& segment : table.getSegments()) {
         EXPECT_GT(segment.length, 0.05) << segment.name;  // metres, not millimetres
         EXPECT_LT(segment.length, 0.7) << segment.name;
         EXPECT_GT(segment.massFraction, 0.0) << segment.name;
@@ -78,7 +79,8 @@ INSTANTIATE_TEST_SUITE_P(BothSexes, DeLevaTable, ::testing::Values(Sex::Female, 
                          [](const auto& testInfo) { return toString(testInfo.param); });
 
 TEST(SegmentTable, MaleHandRowIsConvertedToSiAndFractions) {
-    const SegmentParameters& hand = SegmentTable::loadDeLeva(Sex::Male).getSegment("hand");
+    const SegmentTable table = SegmentTable::loadDeLeva(Sex::Male);  // the row lives in the table
+    const SegmentParameters& hand = table.getSegment("hand");
     EXPECT_EQ(hand.proximalLandmark, "WJC");
     EXPECT_EQ(hand.distalLandmark, "MET3");
     EXPECT_DOUBLE_EQ(hand.length, 0.0862);
@@ -90,7 +92,8 @@ TEST(SegmentTable, MaleHandRowIsConvertedToSiAndFractions) {
 }
 
 TEST(SegmentTable, FemaleRowsAreKeptApartFromMaleRows) {
-    const SegmentParameters& head = SegmentTable::loadDeLeva(Sex::Female).getSegment("head");
+    const SegmentTable table = SegmentTable::loadDeLeva(Sex::Female);
+    const SegmentParameters& head = table.getSegment("head");
     EXPECT_DOUBLE_EQ(head.length, 0.2002);
     EXPECT_DOUBLE_EQ(head.massFraction, 0.0668);
 }

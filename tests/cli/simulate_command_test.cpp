@@ -1,9 +1,13 @@
 // Runs `graspsim simulate`: bad input gets one line naming the field, exit code 2 and an empty
-// output folder; a short run writes the three result files, identically when repeated.
+// output folder; a short run writes the result files, byte-identically when repeated; a run that
+// diverges exits with 3 and an incomplete summary.
 
 #include "cli_process.h"
 
 #include <gtest/gtest.h>
+
+#include <tuple>
+#include <utility>
 
 namespace fs = std::filesystem;
 using graspsim::testing::RunResult;
@@ -23,23 +27,86 @@ std::string ballScenarioWith(const std::string& from, const std::string& to) {
 
 }  // namespace
 
-TEST_F(SimulateCommand, ShortRunWritesTheResultFilesDeterministically) {
+// The same command twice gives byte-identical trajectory.csv and contacts.csv, for every contact
+// model and mode. The run covers the release, free contact, the grasp switch's engagement (approx)
+// and a perturbation: the approach and settling are shortened in a copy of the phone scenario.
+// Rigid contact runs full contact only (the approximation runs on compliant contact).
+class SimulateTwice : public graspsim::testing::CliProcess,
+                      public ::testing::WithParamInterface<std::tuple<const char*, const char*>> {};
+
+TEST_P(SimulateTwice, GivesByteIdenticalTrajectoryAndContacts) {
+    extraFiles_ = 1;
+    std::string text = slurp(fs::path(GRASPSIM_SOURCE_DIR) / "models/scenarios/phone-pinch.yaml");
+    for (const auto& [from, to] : {std::pair<std::string, std::string>{"approach_time: 0.5 ", "approach_time: 0.05"},
+                                   {"settle_time: 1.0 ", "settle_time: 0.15"},
+                                   {"start: 1.5, duration: 1.0}   # pulls", "start: 0.2, duration: 0.1}   # pulls"}}) {
+        const std::size_t at = text.find(from);
+        ASSERT_NE(at, std::string::npos) << from;
+        text.replace(at, from.size(), to);
+    }
+    const std::string scenario = write("short.yaml", text);
+    const auto [contact, mode] = GetParam();
+    const std::string args = "simulate " + scenario + " --contact " + contact + " --mode " + mode +
+                             " --perturbation f1 --duration 0.35 --out ";
     const std::string out1 = (dir_ / "run1").string(), out2 = (dir_ / "run2").string();
-    const RunResult a = run("simulate phone-pinch --duration 0.2 --out " + out1);
+    const RunResult a = run(args + out1);
     ASSERT_EQ(a.exitCode, 0) << a.err;
-    const RunResult b = run("simulate phone-pinch --duration 0.2 --out " + out2);
+    const RunResult b = run(args + out2);
     ASSERT_EQ(b.exitCode, 0) << b.err;
     for (const char* file : {"trajectory.csv", "contacts.csv"}) {
         const std::string first = slurp(fs::path(out1) / file);
         EXPECT_GT(first.size(), 100u) << file;
         EXPECT_EQ(first, slurp(fs::path(out2) / file)) << file << " differs between two identical runs";
     }
-    const std::string summary = slurp(fs::path(out1) / "summary.json");
+    // The runs did reach the phases they are meant to cover.
+    EXPECT_NE(slurp(fs::path(out1) / "contacts.csv").find("index"), std::string::npos);
+    if (std::string(mode) == "approx") EXPECT_NE(a.out.find("engaged at"), std::string::npos) << a.out;
+}
+
+INSTANTIATE_TEST_SUITE_P(ContactAndMode, SimulateTwice,
+                         ::testing::Combine(::testing::Values("compliant"), ::testing::Values("full", "approx")),
+                         [](const auto& info) {
+                             return std::string(std::get<0>(info.param)) + "_" + std::get<1>(info.param);
+                         });
+INSTANTIATE_TEST_SUITE_P(RigidContact, SimulateTwice, ::testing::Combine(::testing::Values("rigid"), ::testing::Values("full")),
+                         [](const auto& info) {
+                             return std::string(std::get<0>(info.param)) + "_" + std::get<1>(info.param);
+                         });
+
+TEST_F(SimulateCommand, ShortRunWritesTheSummary) {
+    const std::string out = (dir_ / "run").string();
+    const RunResult a = run("simulate phone-pinch --duration 0.2 --out " + out);
+    ASSERT_EQ(a.exitCode, 0) << a.err;
+    const std::string summary = slurp(fs::path(out) / "summary.json");
     for (const char* key : {"\"scenario\"", "\"contact\"", "\"mode\"", "\"sim_time_s\"", "\"wall_time_s\"", "\"steps\"",
                             "\"mean_step_us\"", "\"ik_us_per_step\"", "\"dynamics_us_per_step\"",
-                            "\"object_displacement_m\"", "\"max_penetration_m\"", "\"held\""}) {
+                            "\"object_displacement_m\"", "\"max_penetration_m\"", "\"held\"", "\"complete\": true"}) {
         EXPECT_NE(summary.find(key), std::string::npos) << key;
     }
+}
+
+// A scenario that passes every check but cannot be integrated: a perturbation of 1e300 N (any
+// finite force is accepted) throws the released phone out of double range. The run stops early
+// with exit code 3, a message naming the failure, and complete result files up to it, marked
+// incomplete in summary.json.
+TEST_F(SimulateCommand, NumericalFailureExitsWithThreeAndMarksTheSummaryIncomplete) {
+    extraFiles_ = 1;
+    std::string text = slurp(fs::path(GRASPSIM_SOURCE_DIR) / "models/scenarios/phone-pinch.yaml");
+    const std::string from = "f1: {force: [-2.0, 0, 0], start: 1.5, duration: 1.0}";
+    const std::size_t at = text.find(from);
+    ASSERT_NE(at, std::string::npos);
+    text.replace(at, from.size(), "f1: {force: [-1.0e300, 0, 0], start: 0.55, duration: 0.1}");
+    const std::string out = (dir_ / "out").string();
+    const RunResult r = run("simulate " + write("diverges.yaml", text) + " --perturbation f1 --duration 0.7 --out " + out);
+    EXPECT_EQ(r.exitCode, 3) << r.out << r.err;
+    // (CPodes itself may print a line of its own before ours.)
+    EXPECT_NE(r.err.find("graspsim: simulation stopped early"), std::string::npos) << r.err;
+    const std::string summary = slurp(fs::path(out) / "summary.json");
+    EXPECT_NE(summary.find("\"complete\": false"), std::string::npos) << summary;
+    EXPECT_NE(summary.find("\"failure\""), std::string::npos) << summary;
+    // Samples up to the failure are kept: the header plus the samples before 0.55 s.
+    const std::string trajectory = slurp(fs::path(out) / "trajectory.csv");
+    EXPECT_GE(std::count(trajectory.begin(), trajectory.end(), '\n'), 1 + 55) << trajectory.substr(0, 200);
 }
 
 TEST_F(SimulateCommand, ApproxModeWritesTheSwitchEvents) {

@@ -65,7 +65,7 @@ TEST(LimitedBushingLaw, RotationVectorRoundTrip) {
     }
     EXPECT_EQ(calcRotationVector(calcRotationFromVector(SimTK::Vec3(0))).norm(), 0);
     // A right-handed turn of 0.7 rad about z: x goes to (cos, sin, 0).
-    const SimTK::Mat33& R = calcRotationFromVector(SimTK::Vec3(0, 0, 0.7)).asMat33();
+    const SimTK::Mat33 R = calcRotationFromVector(SimTK::Vec3(0, 0, 0.7)).asMat33();  // a copy: the rotation is a temporary
     EXPECT_NEAR(R(0, 0), std::cos(0.7), 1e-15);
     EXPECT_NEAR(R(1, 0), std::sin(0.7), 1e-15);
 }

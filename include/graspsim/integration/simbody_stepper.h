@@ -8,9 +8,15 @@
 
 #include <simbody/Simbody.h>
 
+#include <memory>
+
 namespace graspsim::integration {
 
 /// SimTK::TimeStepper with SimTK::CPodesIntegrator(BDF, Newton). The System must outlive it.
+/// initialize() (again after an Instance-stage change, e.g. the object's release) starts on a
+/// NEW integrator: Simbody 3.7's CPodes::init allocates the integrator's vectors anew on every
+/// call without freeing those of the previous one (CPodeInit -> cpAllocVectors), which leaked
+/// about 8 kB per restart in parameter sweeps (tests/integration/simbody_stepper_test.cpp).
 class SimbodyCpodesStepper : public Stepper {
 public:
     /// `accuracy`: Simbody's integrator accuracy (relative, also the constraint tolerance).
@@ -18,16 +24,20 @@ public:
 
     void initialize(const SimTK::State& initial) override;
     void stepTo(double time) override;
-    const SimTK::State& getState() const override { return stepper_.getState(); }
-    long getNumStepsTaken() const override { return integrator_.getNumStepsTaken(); }
+    const SimTK::State& getState() const override { return stepper_->getState(); }
+    long getNumStepsTaken() const override { return integrator_->getNumStepsTaken(); }
     IntegrationStatistics getStatistics() const override;
     std::string getMethodName() const override { return "simbody-cpodes-bdf"; }
 
 private:
     void addCurrentCountsTo(IntegrationStatistics& statistics) const;
 
-    SimTK::CPodesIntegrator integrator_;
-    SimTK::TimeStepper stepper_;
+    void makeIntegrator();
+
+    const SimTK::System& system_;
+    double accuracy_;
+    std::unique_ptr<SimTK::CPodesIntegrator> integrator_;
+    std::unique_ptr<SimTK::TimeStepper> stepper_;  // refers to *integrator_
     IntegrationStatistics totals_;  // of the runs before the last initialize()
     bool initialized_ = false;
 };
