@@ -103,7 +103,8 @@ double findLargestDistanceFrom(const simulation::SimulationResult& r, double fro
 
 }  // namespace
 
-// Oracle: the full-contact run. Gravity sags the bushing by g / w^2 = 0.25 mm, well inside 2 mm.
+// Oracle: the full-contact run. Gravity sags the bushing by at most g / w^2 = 0.25 mm (the default
+// stiffness; engagement only stiffens it), well inside 2 mm.
 TEST(GraspSwitch, BallClutchEngagesAfterSettlingAndHoldsTheObjectWhereFullContactDoes) {
     const scenario::Scenario s = scenario::findBuiltinScenario("ball-clutch");
     const double duration = s.simulation.settleTime + 1.0;
