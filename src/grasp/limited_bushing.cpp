@@ -14,11 +14,13 @@ namespace {
 const char* const kAxisNames[6] = {"rotation x",    "rotation y",    "rotation z",
                                    "translation x", "translation y", "translation z"};
 
-// The per-state axis settings: one discrete variable, so setLimits() and setAxisLocked()
-// invalidate once.
+// The per-state axis settings: one discrete variable, so setLimits(), setAxisLocked() and
+// setStiffness() invalidate once. Stiffness and damping start at the constructor's values.
 struct AxisSettings {
     SimTK::Vec6 limits = SimTK::Vec6(SimTK::Infinity);
     std::array<bool, 6> locked = {true, true, true, true, true, true};
+    SimTK::Vec6 stiffness = SimTK::Vec6(0);
+    SimTK::Vec6 damping = SimTK::Vec6(0);
 };
 
 void checkAxisValues(const SimTK::Vec6& values, const std::string& what, bool allowZero,
@@ -76,7 +78,7 @@ public:
         enabledIndex_ = forces_.allocateDiscreteVariable(state, SimTK::Stage::Instance,
                                                          new SimTK::Value<bool>(true));
         settingsIndex_ = forces_.allocateDiscreteVariable(
-            state, SimTK::Stage::Dynamics, new SimTK::Value<AxisSettings>(AxisSettings()));
+            state, SimTK::Stage::Dynamics, new SimTK::Value<AxisSettings>(findDefaultSettings()));
         baseIndex_ = forces_.allocateDiscreteVariable(state, SimTK::Stage::Dynamics,
                                                       new SimTK::Value<SimTK::Transform>());
         framesIndex_ = forces_.allocateDiscreteVariable(
@@ -85,6 +87,12 @@ public:
     }
 
     // ---- state variables ----------------------------------------------------------------
+    AxisSettings findDefaultSettings() const {
+        AxisSettings settings;
+        settings.stiffness = stiffness_;
+        settings.damping = damping_;
+        return settings;
+    }
     bool isEnabled(const SimTK::State& s) const {
         return SimTK::Value<bool>::downcast(forces_.getDiscreteVariable(s, enabledIndex_)).get();
     }
@@ -116,7 +124,7 @@ public:
         const SimTK::Vec6 limits = findEffectiveLimits(settings);
         bool changed = false;
         for (int k = 0; k < 6; ++k) {
-            const double eMax = limits[k] / stiffness_[k];
+            const double eMax = limits[k] / settings.stiffness[k];
             if (std::abs(e[k]) > eMax) {
                 e[k] = std::copysign(eMax, e[k]);
                 changed = true;
@@ -195,13 +203,14 @@ public:
         return k;
     }
     BushingResponse calcResponse(const SimTK::State& s, const BushingKinematics& k) const {
-        const SimTK::Vec6 limits = findEffectiveLimits(getSettings(s));
+        const AxisSettings& settings = getSettings(s);
+        const SimTK::Vec6 limits = findEffectiveLimits(settings);
+        const SimTK::Vec6& K = settings.stiffness;
         BushingResponse response;
         for (int i = 0; i < 6; ++i) {
-            response.slip[i] =
-                calcSlipFraction(stiffness_[i], limits[i], onsetWidth_, k.e[i], k.r[i]);
+            response.slip[i] = calcSlipFraction(K[i], limits[i], onsetWidth_, k.e[i], k.r[i]);
             const double edot = (1 - response.slip[i]) * k.r[i];
-            response.force[i] = calcAxisForce(stiffness_[i], damping_[i], limits[i], k.e[i], edot);
+            response.force[i] = calcAxisForce(K[i], settings.damping[i], limits[i], k.e[i], edot);
         }
         return response;
     }
@@ -261,8 +270,9 @@ public:
     SimTK::Real calcPotentialEnergy(const SimTK::State& s) const override {
         if (!isEnabled(s)) return 0;
         const SimTK::Vec6 e = findDisplacement(s);
+        const SimTK::Vec6& K = getSettings(s).stiffness;
         double energy = 0;
-        for (int k = 0; k < 6; ++k) energy += 0.5 * stiffness_[k] * e[k] * e[k];
+        for (int k = 0; k < 6; ++k) energy += 0.5 * K[k] * e[k] * e[k];
         return energy;
     }
 
@@ -341,6 +351,22 @@ void LimitedBushing::setLimits(SimTK::State& state, const SimTK::Vec6& limits) c
     const LimitedBushingImpl& bushingImpl = asBushingImpl(getImplementation());
     AxisSettings settings = bushingImpl.getSettings(state);
     settings.limits = limits;
+    bushingImpl.setSettings(state, settings);
+}
+const SimTK::Vec6& LimitedBushing::getStiffness(const SimTK::State& state) const {
+    return asBushingImpl(getImplementation()).getSettings(state).stiffness;
+}
+const SimTK::Vec6& LimitedBushing::getDamping(const SimTK::State& state) const {
+    return asBushingImpl(getImplementation()).getSettings(state).damping;
+}
+void LimitedBushing::setStiffness(SimTK::State& state, const SimTK::Vec6& stiffness,
+                                  const SimTK::Vec6& damping) const {
+    checkAxisValues(stiffness, "stiffness", false, false);
+    checkAxisValues(damping, "damping", true, false);
+    const LimitedBushingImpl& bushingImpl = asBushingImpl(getImplementation());
+    AxisSettings settings = bushingImpl.getSettings(state);
+    settings.stiffness = stiffness;
+    settings.damping = damping;
     bushingImpl.setSettings(state, settings);
 }
 bool LimitedBushing::isAxisLocked(const SimTK::State& state, BushingAxis axis) const {

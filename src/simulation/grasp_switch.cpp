@@ -6,8 +6,10 @@
 #include "graspsim/simulation/multi_attachment_switch.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <numeric>
+#include <utility>
 
 namespace graspsim::simulation {
 
@@ -50,6 +52,39 @@ SimTK::Vec3 findContactCentroid(const std::vector<contact::ContactReport>& repor
     return centroid / static_cast<double>(reports.size());
 }
 
+// The farthest contact point from the constraint frame's origin p_GC (m): the lever arm through
+// which a rotation of the object in the hand moves a fingertip into it.
+double findLeverArm(const std::vector<contact::ContactReport>& reports, const SimTK::Vec3& p_GC) {
+    double arm = 0;
+    for (const contact::ContactReport& c : reports) arm = std::max(arm, (c.p_G - p_GC).norm());
+    return arm;
+}
+
+// The bushing's stiffness at engagement, so that its elastic deflection cannot push a fingertip
+// more than `budget` deeper (quasi-statically). A fingertip at r from M's origin (|r| <= arm) moves
+// by e_p + e_r x r, so it sinks by at most |e_p| + arm |e_r|. While the bushing holds (or slides
+// at its limits) every axis has |e_k| <= L_k / K_k, so |e_p| <= sqrt(3) L_t / K_t and
+// |e_r| <= sqrt(3) L_r / K_r: giving each of the two terms half the budget,
+//   K_t >= 2 sqrt(3) L_t / budget,   K_r >= 2 sqrt(3) arm L_r / budget,
+// never below the scene's default (kBushingFrequency). Damping is critical on every axis,
+// 2 sqrt(K m) with the object's mass or central moment of inertia, as the default's.
+// A locked axis (infinite limit) is stiffened from its friction limit all the same: its load is of
+// that order, but the bound is not guaranteed there.
+std::pair<SimTK::Vec6, SimTK::Vec6> calcEngagedStiffness(const grasp::LimitedBushing& bushing,
+                                                        const SimTK::MassProperties& mp, const SimTK::Vec6& limits,
+                                                        double arm, double budget) {
+    const SimTK::Vec3 I = mp.calcCentralInertia().getMoments();
+    const double perAxis = budget / (2 * std::sqrt(3.0));
+    SimTK::Vec6 stiffness = bushing.getStiffness(), damping;
+    for (int k = 0; k < 3; ++k) {
+        stiffness[k] = std::max(stiffness[k], limits[k] * arm / perAxis);
+        stiffness[k + 3] = std::max(stiffness[k + 3], limits[k + 3] / perAxis);
+        damping[k] = 2 * std::sqrt(stiffness[k] * I[k]);
+        damping[k + 3] = 2 * std::sqrt(stiffness[k + 3] * mp.getMass());
+    }
+    return {stiffness, damping};
+}
+
 // The run's options over the scenario's approximation section: a value given to the run wins.
 ApproxOptions resolveOptions(const ApproxOptions& given, const scenario::ApproximationSpec& scenario) {
     ApproxOptions options = given;
@@ -69,6 +104,7 @@ GraspSwitch::GraspSwitch(const GraspScene& scene, const control::GraspController
         throw InputError("approx: the quality thresholds Q_Th and Q_M must be >= 0 (0 = automatic)");
     }
     if (!(options_.releaseSlideDistance > 0)) throw InputError("approx: the release slide distance must be > 0 m");
+    if (!(options_.maxEngagedPenetration > 0)) throw InputError("approx: the engaged penetration bound must be > 0 m");
     if (options_.qThreshold > 0 && options_.qMinimum >= options_.qThreshold) {
         throw InputError(format("approx: Q_M (%g N) must be below Q_Th (%g N)", options_.qMinimum, options_.qThreshold));
     }
@@ -146,10 +182,11 @@ void GraspSwitch::engage(SimTK::State& state, double quality) const {
     }
     const SimTK::Vec6 limits = calcFrictionLimits(reports, scene_.getScenario().contact.dynamicFriction);
     tracker_.capture(state, reports);
-    placeConstraintFrames(state, findContactCentroid(reports));
+    const SimTK::Vec3 p_GC = findContactCentroid(reports);
+    placeConstraintFrames(state, p_GC);
     scene_.getContacts().setPairsEnabled(state, allPairs(scene_.getContacts()), false);  // (b)
     setFingersMerged(state, true);                                                        // (c)
-    enableConstraint(state, limits);                                                      // (d)
+    enableConstraint(state, limits, findLeverArm(reports, p_GC));                         // (d)
     X_HO_engaged_ = ~scene_.getPalm().getBodyTransform(state) * scene_.getObject().getBodyTransform(state);
     events_.push_back({state.getTime(), "engage", quality,
                        format("Q >= Q_Th = %.6g N; limits %.6g N", qThreshold_, limits[3]) +
@@ -171,7 +208,7 @@ void GraspSwitch::placeConstraintFrames(SimTK::State& state, const SimTK::Vec3& 
 
 // At the current relative pose, so nothing jumps: the bushing's anchor is reset there; the weld
 // holds the pose it is enabled at (stopping only the palm-object relative velocity, if any).
-void GraspSwitch::enableConstraint(SimTK::State& state, const SimTK::Vec6& limits) const {
+void GraspSwitch::enableConstraint(SimTK::State& state, const SimTK::Vec6& limits, double leverArm) const {
     const SimTK::MultibodySystem& system = scene_.getSystem();
     if (const grasp::LimitedWeld* weld = scene_.getWeld()) {
         weld->setLimits(state, limits);
@@ -184,6 +221,10 @@ void GraspSwitch::enableConstraint(SimTK::State& state, const SimTK::Vec6& limit
     bushing.setEnabled(state, true);
     system.realize(state, SimTK::Stage::Position);
     bushing.resetAnchor(state);
+    const auto [stiffness, damping] =
+        calcEngagedStiffness(bushing, scene_.getObject().getBody().getDefaultRigidBodyMassProperties(), limits,
+                             leverArm, options_.maxEngagedPenetration);
+    bushing.setStiffness(state, stiffness, damping);
     bushing.setLimits(state, limits);
     for (int k = 0; k < 6; ++k) bushing.setAxisLocked(state, static_cast<grasp::BushingAxis>(k), !(*options_.relaxedAxes)[k]);
     system.realize(state, SimTK::Stage::Position);

@@ -251,6 +251,64 @@ TEST(LimitedBushing, RejectsBadParametersNamingTheAxis) {
     EXPECT_THROW(scene.bushing.setSlipOnsetWidth(0), InputError);
 }
 
+// ---- stiffness per state (the grasp switch stiffens the element at engagement) ------------
+
+// K and D set in the state, 10 times K and critically damped again: the new values rule the law.
+void stiffenTenfold(const BushedBox& scene, SimTK::State& state, double& linearStiffness) {
+    const double factor = 10;
+    linearStiffness = factor * kLinearStiffness;
+    const double angular = factor * kAngularStiffness;
+    const double linearDamping = 2 * std::sqrt(linearStiffness * kMass);
+    const double angularDamping = 2 * std::sqrt(angular * kInertia);
+    scene.bushing.setStiffness(state, Vec6(angular, angular, angular, linearStiffness, linearStiffness, linearStiffness),
+                               Vec6(angularDamping, angularDamping, angularDamping, linearDamping, linearDamping,
+                                    linearDamping));
+}
+
+TEST_P(LimitedBushingDynamics, StiffnessSetInTheStateGivesTheStaticDeflection) {
+    BushedBox scene;
+    const double force = 0.75 * kLinearLimit;
+    scene.addForce(Vec3(force, 0, 0));
+    SimTK::State initial = scene.makeState(BushingAxis::TranslationX, kLinearLimit);
+    double stiffness = 0;
+    stiffenTenfold(scene, initial, stiffness);
+    BushedRun run(GetParam(), scene.system, initial);
+    const SimTK::State& state = run.stepTo(0.2);  // 89 time constants sqrt(m/K)
+    EXPECT_NEAR(scene.box.getBodyOriginLocation(state)[0], force / stiffness, 1e-3 * force / stiffness);
+    EXPECT_EQ(scene.bushing.getStiffness(state)[3], stiffness);
+    EXPECT_EQ(scene.bushing.getStiffness()[3], kLinearStiffness);  // the default is unchanged
+}
+
+TEST_P(LimitedBushingDynamics, StiffnessSetInTheStateGivesTheDeflectionAtTheLimit) {
+    BushedBox scene;
+    const double force = 2.5 * kLinearLimit;
+    scene.addForce(Vec3(force, 0, 0));
+    SimTK::State initial = scene.makeState(BushingAxis::TranslationX, kLinearLimit);
+    double stiffness = 0;
+    stiffenTenfold(scene, initial, stiffness);
+    BushedRun run(GetParam(), scene.system, initial);
+    const SimTK::State& state = run.stepTo(0.3);
+    EXPECT_TRUE(scene.bushing.isSliding(state, BushingAxis::TranslationX));
+    EXPECT_NEAR(scene.bushing.findDisplacement(state)[toIndex(BushingAxis::TranslationX)], kLinearLimit / stiffness,
+                0.02 * kLinearLimit / stiffness);
+}
+
+TEST(LimitedBushing, StiffnessInTheStateStartsAtTheDefaultAndIsChecked) {
+    BushedBox scene;
+    SimTK::State state = scene.makeState(BushingAxis::TranslationX, kLinearLimit);
+    EXPECT_EQ(scene.bushing.getStiffness(state), scene.bushing.getStiffness());
+    EXPECT_EQ(scene.bushing.getDamping(state), scene.bushing.getDamping());
+    Vec6 stiffness(1), damping(0);
+    stiffness[2] = 0;
+    try {
+        scene.bushing.setStiffness(state, stiffness, damping);
+        FAIL() << "zero stiffness accepted";
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find("stiffness on rotation z is 0"), std::string::npos) << error.what();
+    }
+    EXPECT_THROW(scene.bushing.setStiffness(state, Vec6(1), Vec6(1, 1, 1, 1, -1, 1)), InputError);
+}
+
 // ---- the grasp switch's usage: limits set from an event handler ---------------------------
 
 // At its time, engages the friction limit on x as a grasp event handler would.

@@ -41,7 +41,8 @@
 /// force jump when e = 0) or setAnchorDisplacement() from an event to re-base long rotations.
 ///
 /// Stages: forces and zdot need Stage::Velocity and are produced at Stage::Dynamics. The enabled
-/// flag is an Instance-stage discrete variable (like Force::disable()); limits, locks and X_FA0
+/// flag is an Instance-stage discrete variable (like Force::disable()); limits, locks, stiffness,
+/// damping and X_FA0
 /// are Dynamics-stage discrete variables; anchor changes write z. Change them in an event
 /// handler (the TimeStepper re-realizes and reinitializes the integrator after it) or before
 /// Integrator::initialize().
@@ -75,9 +76,11 @@ public:
                    const SimTK::Transform& X_OM, const SimTK::Vec6& stiffness,
                    const SimTK::Vec6& damping);
 
-    /// K per axis (N m/rad, N/m), as given to the constructor.
+    /// Default K per axis (N m/rad, N/m), as given to the constructor; the one in force is
+    /// getStiffness(state).
     const SimTK::Vec6& getStiffness() const;
-    /// D per axis (N m s/rad, N s/m), as given to the constructor.
+    /// Default D per axis (N m s/rad, N s/m), as given to the constructor; the one in force is
+    /// getDamping(state).
     const SimTK::Vec6& getDamping() const;
     /// Width w of the slip-onset band, as a fraction of the limit (default 0.01).
     double getSlipOnsetWidth() const;
@@ -101,6 +104,18 @@ public:
     /// elasto-plastic material does); otherwise the anchor is left alone.
     /// @throws graspsim::InputError naming the axis for a negative or NaN limit.
     void setLimits(SimTK::State& state, const SimTK::Vec6& limits) const;
+    /// K per axis in force in `state` (N m/rad for 0-2, N/m for 3-5); the constructor's until
+    /// setStiffness() is called.
+    const SimTK::Vec6& getStiffness(const SimTK::State& state) const;
+    /// D per axis in force in `state` (N m s/rad for 0-2, N s/m for 3-5).
+    const SimTK::Vec6& getDamping(const SimTK::State& state) const;
+    /// Sets K (each > 0, finite) and D (each >= 0, finite) in `state`, e.g. at engagement from the
+    /// limits so that the elastic displacement at the limit, L_k / K_k, is bounded; invalidates
+    /// Stage::Dynamics. The anchor keeps its pose; if `state` is realized to Stage::Position and
+    /// a softer K would put |K_k e_k| over L_k, the anchor is moved as setLimits() does.
+    /// @throws graspsim::InputError naming the axis for a bad stiffness or damping.
+    void setStiffness(SimTK::State& state, const SimTK::Vec6& stiffness,
+                      const SimTK::Vec6& damping) const;
     /// Whether `axis` is locked (limit infinite regardless of getLimits()).
     bool isAxisLocked(const SimTK::State& state, BushingAxis axis) const;
     /// Locks (true) or relaxes (false, limited by getLimits()) `axis`; invalidates

@@ -49,6 +49,8 @@ constexpr double kArmKd = 20.0;   ///< N m s/rad
 /// Natural frequency of the approximation's bushing with the object's own mass and inertia
 /// (rad/s, critically damped): stiff enough that gravity sags the object by g / w^2 = 0.25 mm,
 /// soft enough to leave the integrator steps of the full-contact run (about 5 ms period).
+/// The default only: the grasp switch stiffens the merged bushing at engagement from its friction
+/// limits (ApproxOptions::maxEngagedPenetration).
 constexpr double kBushingFrequency = 200.0;
 
 class GraspSwitch;

@@ -20,8 +20,12 @@
 ///         (the thesis notes the same loss of dexterity), and their PD torques do nothing;
 ///     (d) enable the palm (H) - object (O) constraint of ApproxOptions::constraint at the current
 ///         pose, limits set, axes relaxed or locked per ApproxOptions::relaxedAxes: the bushing
-///         with its anchor reset there (no force jump), or the weld (every axis stuck, those
-///         already over their limit sliding). Its frames F (on the palm) and M (on the object)
+///         with its anchor reset there (no force jump) and its stiffness raised from the limits
+///         so that its elastic deflection at them moves no fingertip deeper than
+///         ApproxOptions::maxEngagedPenetration (K_t = 2 sqrt(3) L_t / bound, K_r = 2 sqrt(3) r L_r
+///         / bound, r the farthest contact from the centroid, never below the scene's default;
+///         critically damped), or the weld (every axis stuck, those already over their limit
+///         sliding). Its frames F (on the palm) and M (on the object)
 ///         are placed, coincident, at the CENTROID OF THE CONTACT POINTS at this instant, with
 ///         the object's orientation; the axes are those of O. DELIBERATE DEPARTURE from the
 ///         thesis (section 4.2 puts the constraint at the object's centre of mass): friction acts
@@ -120,7 +124,7 @@ private:
     bool isFullContact(const SimTK::State& state) const;
     void engage(SimTK::State& state, double quality) const;
     void placeConstraintFrames(SimTK::State& state, const SimTK::Vec3& p_GC) const;
-    void enableConstraint(SimTK::State& state, const SimTK::Vec6& limits) const;
+    void enableConstraint(SimTK::State& state, const SimTK::Vec6& limits, double leverArm) const;
     void release(SimTK::State& state, double quality, const std::string& reason) const;
     void setFingersMerged(SimTK::State& state, bool merged) const;
     std::string describeRelease(const SimTK::State& state, double quality) const;

@@ -58,6 +58,10 @@ struct ApproxOptions {
     /// (m): about the radius of a fingertip pad, beyond which the fingers would have lost the
     /// spots they pressed into.
     double releaseSlideDistance = 0.005;
+    /// Bound on the growth of the fingertips' penetration while engaged from the bushing's elastic
+    /// deflection (m; issue 4: no visible interpenetration, <= 0.1 mm). On engagement the bushing
+    /// is stiffened so that its deflection at the friction limits stays within it (grasp_switch.h).
+    double maxEngagedPenetration = 1e-4;
     /// The constraint realization. Default bushing (the first one built; results measured so far
     /// use it); `weld` is the rigid one, closer to the thesis's Vortex constraint.
     ApproxConstraint constraint = ApproxConstraint::Bushing;
