@@ -134,19 +134,29 @@ private:
     long steps_[4] = {0, 0, 0, 0};
 };
 
+// Releasing the object is an Instance-stage change: each kind of stepper restarts its own way.
+void releaseObject(const GraspScene& scene, integration::Stepper& stepper) {
+    SimTK::State released = stepper.getState();
+    scene.releaseObject(released);
+    stepper.initialize(released);
+}
+void releaseObject(const GraspScene&, RigidStepper& stepper) { stepper.releaseObject(); }
+long countSteps(const integration::Stepper& stepper) { return stepper.getNumStepsTaken(); }
+long countSteps(const RigidStepper& stepper) { return stepper.getNumSteps(); }
+
 // Steps from sample to sample, releasing the object on time; `lastEvent` says what happened last.
-void stepThroughSamples(const GraspScene& scene, integration::Stepper& stepper, Recorder& recorder, PhaseTimer& phases,
+// AnyStepper: an integration::Stepper (CPodes, CVODE) or the rigid model's RigidStepper.
+template <class AnyStepper>
+void stepThroughSamples(const GraspScene& scene, AnyStepper& stepper, Recorder& recorder, PhaseTimer& phases,
                         double duration, const ProgressCallback& progress, const SampleObserver& observer,
                         std::string& lastEvent) {
     for (double t : makeSampleTimes(scene, duration)) {
         stepper.stepTo(t);
         checkFinite(stepper.getState(), lastEvent);
-        phases.mark(stepper.getState(), stepper.getNumStepsTaken());
+        phases.mark(stepper.getState(), countSteps(stepper));
         if (std::abs(t - scene.getReleaseTime()) < 1e-12) {
-            SimTK::State released = stepper.getState();
-            scene.releaseObject(released);
-            stepper.initialize(released);  // a lock change is an Instance-stage change
-            phases.rebase(stepper.getState(), stepper.getNumStepsTaken());  // initialize() restarts the count
+            releaseObject(scene, stepper);
+            phases.rebase(stepper.getState(), countSteps(stepper));  // a restart resets the step count
             lastEvent = "object released at t = " + std::to_string(t) + " s";
         }
         recorder.record(stepper.getState());
@@ -166,25 +176,6 @@ std::unique_ptr<integration::Stepper> makeStepper(const SimTK::System& system, c
     integration::CvodeOptions cvode;
     cvode.relativeTolerance = accuracy;
     return std::make_unique<integration::CvodeIntegrator>(system, cvode);
-}
-
-// The rigid model's loop: the same samples, stepped at a fixed size by RigidStepper.
-void stepThroughSamples(const GraspScene& scene, RigidStepper& stepper, Recorder& recorder, PhaseTimer& phases,
-                        double duration, const ProgressCallback& progress, const SampleObserver& observer,
-                        std::string& lastEvent) {
-    for (double t : makeSampleTimes(scene, duration)) {
-        stepper.stepTo(t);
-        checkFinite(stepper.getState(), lastEvent);
-        phases.mark(stepper.getState(), stepper.getNumSteps());
-        if (std::abs(t - scene.getReleaseTime()) < 1e-12) {
-            stepper.releaseObject();
-            phases.rebase(stepper.getState(), stepper.getNumSteps());
-            lastEvent = "object released at t = " + std::to_string(t) + " s";
-        }
-        recorder.record(stepper.getState());
-        if (observer) observer(scene, stepper.getState());
-        if (progress) progress(t, duration);
-    }
 }
 
 SimulationSummary makeSummaryHeader(const scenario::Scenario& scenario, const SimulationOptions& options, double duration) {
