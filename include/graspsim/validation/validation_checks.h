@@ -23,6 +23,9 @@ constexpr double kApproxWindow = 2.0;           ///< s after engagement
 /// approximation check.
 constexpr double kIntegratorPositionError = 0.0005;  ///< m
 constexpr double kIntegratorAngleError = 0.5 * 3.14159265358979323846 / 180.0;  ///< rad (0.5 degree)
+/// Bound of the fingertips' penetration growth beyond their depth at engagement, while engaged
+/// (m): "no visible interpenetration" (the engagement depth itself is the compliant skin's).
+constexpr double kEngagedPenetrationGrowth = 0.0001;
 /// Bound of the long hold: drift after settling (m).
 constexpr double kLongHoldDrift = 0.001;
 /// Distance from the settled position that counts as the object slipping (m).
