@@ -146,7 +146,7 @@ def plot_forces(directory, experiment, perturbations, out):
 
 
 def plot_errors(directory, experiment, perturbations, out):
-    fig, ax = plt.subplots(figsize=(8, 3.5))
+    fig, ax = plt.subplots(figsize=(9, 4.5))
     for name, rows in sorted(perturbations.items()):
         full = [r for r in rows if r["variant"] == "full"]
         if not full:
@@ -156,12 +156,14 @@ def plot_errors(directory, experiment, perturbations, out):
             if r["variant"] == "full":
                 continue
             t, e = position_error(reference, read_trajectory(os.path.join(directory, "runs", r["id"])))
-            ax.plot(t, e, label="%s, %s" % (name, r["variant"]))
+            # Log scale: errors span micrometres (integrators) to metres (a dropped object).
+            ax.plot(t, [max(v, 1e-5) for v in e], label="%s, %s" % (name, r["variant"]))
     ax.axhline(2.0, color="k", linestyle=":", label="2 mm bound (no perturbation)")
+    ax.set_yscale("log")
     ax.set_xlabel("time (s)")
     ax.set_ylabel("position error (mm)")
     ax.set_title("%s: approximation vs full contact" % experiment, fontsize="medium")
-    ax.legend(fontsize="small")
+    ax.legend(fontsize="x-small", ncol=2)
     fig.tight_layout()
     fig.savefig(out, dpi=110)
     plt.close(fig)
