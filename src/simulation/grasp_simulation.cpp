@@ -253,15 +253,13 @@ void summarizeRun(const GraspScene& scene, const PhaseTimer& phases, double ikSe
     summarizeSwitch(scene, phases, result);
 }
 
-// Rigid contact: Simbody's SemiExplicitEulerTimeStepper at a fixed step (rigid_stepping.h).
-SimulationResult runRigidGraspSimulation(const scenario::Scenario& scenario, const SimulationOptions& options,
-                                         const ProgressCallback& progress, const SampleObserver& observer) {
-    const double duration = options.duration > 0 ? options.duration : scenario.simulation.duration;
-    GraspScene scene(scenario, options);
-    SimulationResult result;
-    result.summary = makeSummaryHeader(scenario, options, duration);
+// Runs `scene` on `stepper` (an integration::Stepper or the rigid model's RigidStepper) from its
+// initial state to `duration`, filling `result` except the integrator's name and statistics.
+// `failureVerb` says what failed when the stepper throws something other than a NumericalError.
+template <class AnyStepper>
+void runScene(GraspScene& scene, AnyStepper& stepper, double duration, const char* failureVerb,
+              const ProgressCallback& progress, const SampleObserver& observer, SimulationResult& result) {
     Recorder recorder(scene, result);
-    RigidStepper stepper(scene);
     stepper.initialize(scene.makeInitialState());
     recorder.record(stepper.getState());
     std::string lastEvent = "start";
@@ -274,49 +272,32 @@ SimulationResult runRigidGraspSimulation(const scenario::Scenario& scenario, con
     } catch (const NumericalError& e) {
         result.summary.failure = e.what();
     } catch (const std::exception& e) {
-        result.summary.failure = "stepping failed at t = " + std::to_string(stepper.getState().getTime()) +
+        result.summary.failure = std::string(failureVerb) + " at t = " + std::to_string(stepper.getState().getTime()) +
                                  " s (last event: " + lastEvent + "): " + e.what();
     }
     result.summary.wallTime = std::chrono::duration<double>(Clock::now() - start).count();
     summarizeRun(scene, phases, scene.getIkTiming().totalSeconds - ikBefore, stepper.getState(), result);
-    result.summary.integrator = "simbody-semiexpliciteuler-pgs";
-    return result;
 }
 
 }  // namespace
 
 SimulationResult runGraspSimulation(const scenario::Scenario& scenario, const SimulationOptions& options,
                                     const ProgressCallback& progress, const SampleObserver& observer) {
-    if (options.contact == ContactModel::Rigid) return runRigidGraspSimulation(scenario, options, progress, observer);
     const double duration = options.duration > 0 ? options.duration : scenario.simulation.duration;
     GraspScene scene(scenario, options);
     SimulationResult result;
-    SimulationSummary& summary = result.summary;
-    summary = makeSummaryHeader(scenario, options, duration);
-    Recorder recorder(scene, result);
-
-    const std::unique_ptr<integration::Stepper> stepperOwner = makeStepper(scene.getSystem(), options, scenario.simulation.accuracy);
-    integration::Stepper& stepper = *stepperOwner;
-    SimTK::State initial = scene.makeInitialState();
-    stepper.initialize(initial);
-    recorder.record(stepper.getState());
-    std::string lastEvent = "start";
-    PhaseTimer phases(scene);
-    const auto start = Clock::now();
-    const double ikBefore = scene.getIkTiming().totalSeconds;
-    try {
-        stepThroughSamples(scene, stepper, recorder, phases, duration, progress, observer, lastEvent);
-        summary.complete = true;
-    } catch (const NumericalError& e) {
-        summary.failure = e.what();
-    } catch (const std::exception& e) {
-        summary.failure = "integration failed at t = " + std::to_string(stepper.getState().getTime()) +
-                          " s (last event: " + lastEvent + "): " + e.what();
+    result.summary = makeSummaryHeader(scenario, options, duration);
+    if (options.contact == ContactModel::Rigid) {
+        // Rigid contact: Simbody's SemiExplicitEulerTimeStepper at a fixed step (rigid_stepping.h).
+        RigidStepper stepper(scene);
+        runScene(scene, stepper, duration, "stepping failed", progress, observer, result);
+        result.summary.integrator = "simbody-semiexpliciteuler-pgs";
+        return result;
     }
-    summary.wallTime = std::chrono::duration<double>(Clock::now() - start).count();
-    summarizeRun(scene, phases, scene.getIkTiming().totalSeconds - ikBefore, stepper.getState(), result);
-    summary.integrator = stepper.getMethodName();
-    summary.integratorStatistics = stepper.getStatistics();
+    const std::unique_ptr<integration::Stepper> stepper = makeStepper(scene.getSystem(), options, scenario.simulation.accuracy);
+    runScene(scene, *stepper, duration, "integration failed", progress, observer, result);
+    result.summary.integrator = stepper->getMethodName();
+    result.summary.integratorStatistics = stepper->getStatistics();
     return result;
 }
 
