@@ -158,6 +158,19 @@ bool GraspSwitch::isFullContact(const SimTK::State& state) const {
     });
 }
 
+// A constraint that starts out sticking is only right for an object that is not sliding: with
+// regularized friction a contact inside its cone creeps slower than the transition velocity, one
+// at its limit slides faster. Without this, an object already slipping out (phone-pinch f1 after a
+// release) was re-engaged and dragged through the locked fingertips.
+bool GraspSwitch::isSticking(const SimTK::State& state) const {
+    if (multi_) return multi_->isSticking(state);
+    scene_.getSystem().realize(state, SimTK::Stage::Velocity);
+    const double limit = scene_.getScenario().contact.transitionVelocity;
+    const std::vector<contact::ContactReport> reports = scene_.getContacts().findContactReports(state);
+    return std::all_of(reports.begin(), reports.end(),
+                       [&](const contact::ContactReport& c) { return c.slipVelocity_G.norm() < limit; });
+}
+
 void GraspSwitch::checkEngage(SimTK::State& state) const {
     if (!isFullContact(state)) return;
     const double q = calcQuality(state);
@@ -167,7 +180,7 @@ void GraspSwitch::checkEngage(SimTK::State& state) const {
         qThreshold_ = options_.autoThresholdFraction * q;
         if (options_.qMinimum == 0) qMinimum_ = options_.hysteresisFraction * qThreshold_;
     }
-    if (multi_ && !multi_->isSticking(state)) return;
+    if (!isSticking(state)) return;
     if (q > 0 && q >= qThreshold_) engage(state, q);
 }
 

@@ -31,6 +31,7 @@ MultibodyModel::MultibodyModel(const model::ModelDescription& description,
     : description_(description), options_(options), matter_(system_), forces_(system_) {
     description_.validate("model '" + description_.name + "'");
     checkMassOutboardOfJoints();
+    for (const model::Body& body : description_.bodies) checkMassPropertiesForSimbody(body, describe("link '" + body.name + "'"));
     callSimbody(describe("gravity"),
                 [&] { gravity_ = SimTK::Force::Gravity(forces_, matter_, options_.gravity); });
     addBodies();

@@ -73,5 +73,63 @@ TEST(BodyMobilizer, TransformRejectsScaledAndReflectedMatrices) {
     }
 }
 
+// Simbody itself, as the oracle: a bare system with the body on a free joint, realized.
+void realizeInSimbody(const model::Body& body) {
+    SimTK::MultibodySystem system;
+    SimTK::SimbodyMatterSubsystem matter(system);
+    SimTK::MobilizedBody::Free(matter.updGround(), SimTK::Body::Rigid(calcMassPropertiesAboutOrigin(body)));
+    system.realizeTopology();
+}
+
+std::string rejectionOf(const model::Body& body) {
+    try {
+        checkMassPropertiesForSimbody(body, "model 'm': link '" + body.name + "'");
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(BodyMobilizer, MassCentreThatSwampsTheInertiaIsRefusedAndSimbodyWouldStopOnIt) {
+    // What the URDF fuzzer found: a 0.2 kg ball's numbers with mass 2e11 kg and its mass centre
+    // 5 m from the origin; the shift (5e12 kg m^2) cancels the 1.6e-4 kg m^2 inertia away.
+    const model::Body ball = test::makeBody("ball", 2e11, {0, 0, 5}, {1.62e-4, 1.62e-4, 1.62e-4});
+
+    const std::string message = rejectionOf(ball);
+
+    EXPECT_NE(message.find("model 'm': link 'ball' mass 2e+11 kg"), std::string::npos) << message;
+    EXPECT_NE(message.find("accepted: m |p|^2 below"), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    EXPECT_THROW(realizeInSimbody(ball), SimTK::Exception::Base);
+}
+
+TEST(BodyMobilizer, MassCentreJustInsideTheLimitIsAcceptedBySimbody) {
+    // 1 kg, central inertia 1e-4 kg m^2 each: the limit is sqrt(eps)/2 / (8 eps) ~ 4.2e6 kg m^2,
+    // so a mass centre 1900 m out (3.6e6 kg m^2) passes, and Simbody must agree.
+    const model::Body far = test::makeBody("far", 1.0, {0, 1900, 0}, {1e-4, 1e-4, 1e-4});
+    const model::Body tooFar = test::makeBody("far", 1.0, {0, 2100, 0}, {1e-4, 1e-4, 1e-4});
+
+    EXPECT_EQ(rejectionOf(far), "");
+    EXPECT_NO_THROW(realizeInSimbody(far));
+    EXPECT_NE(rejectionOf(tooFar), "");
+}
+
+TEST(BodyMobilizer, HeavyPlateWithinTheDescriptionSlackButOutsideSimbodysIsRefused) {
+    // Trace 200 kg m^2: the description allows 1e-6 of the trace (2e-4) in the triangle
+    // inequality, Simbody only sqrt(eps) of it (3e-6); this plate breaks it by 1e-5.
+    model::Body plate = test::makeBody("plate", 100.0, {0, 0, 0}, {50, 50, 100.00001});
+    plate.inertia.zz = plate.inertia.xx + plate.inertia.yy + 1e-5;
+
+    const std::string message = rejectionOf(plate);
+
+    EXPECT_NE(message.find("breaks its rules"), std::string::npos) << message;
+    EXPECT_THROW(realizeInSimbody(plate), SimTK::Exception::Base);
+}
+
+TEST(BodyMobilizer, MasslessBodiesPassTheMassPropertiesCheck) {
+    model::Body hinge = test::makeBody("hinge", 0.0, {0, 0, 0}, {0, 0, 0});
+    EXPECT_EQ(rejectionOf(hinge), "");
+}
+
 }  // namespace
 }  // namespace graspsim::system

@@ -8,7 +8,9 @@
 ///  - UNGRASPED (constraint disabled): run the grasp controller's IK update, then, once the object
 ///    has been released, compute the grasp quality Q from the contact reports exactly as the
 ///    recorder does (calcContactGraspQuality, static friction). In full contact (every goal
-///    fingertip touching the object) and Q >= Q_Th, ENGAGE:
+///    fingertip touching the object), with every hand-object contact sticking (slip slower than
+///    the scenario's transition velocity, i.e. inside its friction cone; an object already
+///    sliding out of the hand is not grasped firmly) and Q >= Q_Th, ENGAGE:
 ///     (a) limits from the contacts (eq. 4.1-4.3): F_perp = sum f_i . n_i, r = mean distance of
 ///         the contact points to their centroid; translation limits mu F_perp, rotation limits
 ///         mu r F_perp, with mu the scenario's DYNAMIC friction: the limit is reached only when
@@ -122,6 +124,7 @@ private:
     void checkEngage(SimTK::State& state) const;
     void checkRelease(SimTK::State& state) const;
     bool isFullContact(const SimTK::State& state) const;
+    bool isSticking(const SimTK::State& state) const;
     void engage(SimTK::State& state, double quality) const;
     void placeConstraintFrames(SimTK::State& state, const SimTK::Vec3& p_GC) const;
     void enableConstraint(SimTK::State& state, const SimTK::Vec6& limits, double leverArm) const;
