@@ -79,7 +79,7 @@ void MultiAttachment::attach(SimTK::State& state, int i, const FingerLoad& load,
     const SimTK::Rotation R_GA = X_GO.R() * X_OS.R();
     const SimTK::Vec3 f_A = ~R_GA * load.force_G;
     SimTK::Vec6 e(0);
-    for (int k = 0; k < 3; ++k) e[3 + k] = -f_A[k] / part.getStiffness()[3 + k];
+    for (int k = 0; k < 3; ++k) e[3 + k] = -f_A[k] / part.getStiffness(state)[3 + k];
     part.setAnchorDisplacement(state, e);
     const double linear = mu * load.normalForce, angular = mu * load.armRadius * load.normalForce;
     part.setLimits(state, SimTK::Vec6(angular, angular, angular, linear, linear, linear));

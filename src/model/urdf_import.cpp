@@ -6,6 +6,7 @@
 #include "urdf_number.h"
 #include "urdf_rotation.h"
 #include "urdf_source.h"
+#include "urdf_text.h"
 #include "urdf_tree_check.h"
 #include "urdfdom_parse.h"
 
@@ -25,6 +26,7 @@ namespace graspsim::model {
 namespace {
 
 void parseXml(const std::string& xml, const UrdfSource& source, TiXmlDocument& document) {
+    checkUrdfText(xml, source);  // before TinyXML, which reads past a truncated UTF-8 sequence
     document.Parse(xml.c_str());
     if (document.Error()) {
         source.fail(document.ErrorRow(), "malformed XML at line " + std::to_string(document.ErrorRow()) + ", column " +

@@ -112,7 +112,7 @@ GraspSwitch::GraspSwitch(const GraspScene& scene, const control::GraspController
     qMinimum_ = options_.qMinimum > 0 ? options_.qMinimum : options_.hysteresisFraction * qThreshold_;
     const model::ModelDescription& d = scene.getModel().getDescription();
     for (const std::string& e : scene.getGoalEndEffectors()) goalBodies_.push_back(d.findEndEffector(e)->body);
-    if (scene.getMultiAttachment()) multi_ = std::make_unique<MultiAttachmentSwitch>(scene, options.releaseSlideDistance);
+    if (scene.getMultiAttachment()) multi_ = std::make_unique<MultiAttachmentSwitch>(scene, options.releaseSlideDistance, options.maxEngagedPenetration);
 }
 
 GraspSwitch::~GraspSwitch() = default;
@@ -188,13 +188,13 @@ void GraspSwitch::engage(SimTK::State& state, double quality) const {
     const SimTK::MultibodySystem& system = scene_.getSystem();
     system.realize(state, SimTK::Stage::Velocity);
     const std::vector<contact::ContactReport> reports = scene_.getContacts().findContactReports(state);
+    tracker_.capture(state, reports);  // penetration, for both attachments; Q tracking is merged's
     if (multi_) {
         const std::string limitsText = multi_->engage(state, reports);
         events_.push_back({state.getTime(), "engage", quality, format("Q >= Q_Th = %.6g N; ", qThreshold_) + limitsText});
         return;
     }
     const SimTK::Vec6 limits = calcFrictionLimits(reports, scene_.getScenario().contact.dynamicFriction);
-    tracker_.capture(state, reports);
     const SimTK::Vec3 p_GC = findContactCentroid(reports);
     placeConstraintFrames(state, p_GC);
     scene_.getContacts().setPairsEnabled(state, allPairs(scene_.getContacts()), false);  // (b)
@@ -246,12 +246,12 @@ void GraspSwitch::enableConstraint(SimTK::State& state, const SimTK::Vec6& limit
 void GraspSwitch::checkRelease(SimTK::State& state) const {
     double q = 0;
     std::string reason;
+    tracker_.measurePenetration(state);
     if (multi_) {
         q = calcEngagedQuality(state);
         reason = multi_->update(state, q, events_);
         if (reason.empty() && q < qMinimum_) reason = format("Q < Q_M = %.6g N", qMinimum_);
     } else {
-        tracker_.measurePenetration(state);
         q = calcEngagedQuality(state);
         reason = describeRelease(state, q);
     }

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <numeric>
 
@@ -80,8 +81,8 @@ void checkApproxAttach(const scenario::Scenario& scenario, const SimulationOptio
     }
 }
 
-MultiAttachmentSwitch::MultiAttachmentSwitch(const GraspScene& scene, double slideLimit)
-    : scene_(scene), slideLimit_(slideLimit) {
+MultiAttachmentSwitch::MultiAttachmentSwitch(const GraspScene& scene, double slideLimit, double penetrationBound)
+    : scene_(scene), slideLimit_(slideLimit), penetrationBound_(penetrationBound) {
     const model::ModelDescription& d = scene.getModel().getDescription();
     const contact::CompliantContactForce& contacts = scene.getContacts();
     for (const std::string& endEffector : scene.getGoalEndEffectors()) {
@@ -132,10 +133,30 @@ std::string MultiAttachmentSwitch::engage(SimTK::State& state, const std::vector
     for (std::size_t i = 0; i < perFinger.size(); ++i) {
         grasp::FingerLoad load = calcFingerLoad(perFinger[i]);
         load.tangentHint_G = SimTK::Vec3(g[0], g[1], g[2]);  // the main load: exact along it
+        stiffenPart(state, static_cast<int>(i), load, mu);
         scene_.getMultiAttachment()->attach(state, static_cast<int>(i), load, mu);
         text += " " + scene_.getGoalEndEffectors()[i] + format(" %.4g N", mu * load.normalForce);
     }
     return text;
+}
+
+// As the merged bushing (grasp_switch.cpp, calcEngagedStiffness): the elastic displacement under
+// the part's largest expected load stays within penetrationBound / (2 sqrt 3) per axis. The loads:
+// its friction limits on the tangent and rotation axes, and on the locked normal axis its
+// pressing force at attachment. Damping scales with sqrt(K), keeping the default damping ratio.
+void MultiAttachmentSwitch::stiffenPart(SimTK::State& state, int finger, const grasp::FingerLoad& load, double mu) const {
+    const grasp::LimitedBushing& part = scene_.getMultiAttachment()->getPart(finger);
+    const double perAxis = penetrationBound_ / (2 * std::sqrt(3.0));
+    const double tangent = mu * load.normalForce, moment = mu * load.armRadius * load.normalForce;
+    const SimTK::Vec6 load6(moment * load.armRadius, moment * load.armRadius, moment * load.armRadius, tangent, tangent,
+                            load.normalForce);  // z of a part is the object's normal (multi_attachment.h)
+    SimTK::Vec6 stiffness = part.getStiffness(), damping = part.getDamping();
+    for (int k = 0; k < 6; ++k) {
+        const double K = std::max(stiffness[k], load6[k] / perAxis);
+        damping[k] *= std::sqrt(K / stiffness[k]);
+        stiffness[k] = K;
+    }
+    part.setStiffness(state, stiffness, damping);
 }
 
 std::string MultiAttachmentSwitch::update(SimTK::State& state, double quality, std::vector<GraspEvent>& events) const {

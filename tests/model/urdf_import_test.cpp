@@ -182,6 +182,30 @@ TEST(UrdfImportErrors, MalformedXmlNamesLineAndColumn) {
     EXPECT_CONTAINS(message, "column");
 }
 
+// TinyXML reads past the end of its buffer after a truncated UTF-8 sequence (the URDF fuzzer's
+// finding): the import refuses such bytes before any parser sees them, naming line and byte.
+TEST(UrdfImportErrors, TruncatedUtf8AtTheEndIsRefusedBeforeParsing) {
+    const std::string robot = makeRobot(makeLink("a"));
+    const std::string message = getImportError(robot + "\xdc", "truncated.urdf");
+    EXPECT_CONTAINS(message, "truncated.urdf:5: byte " + std::to_string(robot.size()) + " = 0xdc is not accepted");
+    EXPECT_CONTAINS(message, "UTF-8");
+}
+
+TEST(UrdfImportErrors, InvalidUtf8AndNulBytesAreRefused) {
+    const std::string link = makeLink("a");
+    for (const std::string bad : {std::string("\xc0\xaf"), std::string("\xed\xa0\x80"), std::string("\xff"),
+                                  std::string("\x80"), std::string(1, '\0')}) {
+        const std::string message = getImportError(makeRobot("<!-- " + bad + " -->\n" + link), "bad_bytes.urdf");
+        EXPECT_CONTAINS(message, "bad_bytes.urdf:3: byte ");
+    }
+}
+
+TEST(UrdfImportErrors, WellFormedUtf8IsRead) {
+    // Two-, three- and four-byte characters in a comment: "Müller, 手, 🖐".
+    const std::string xml = makeRobot("<!-- M\xc3\xbcller, \xe6\x89\x8b, \xf0\x9f\x96\x90 -->\n" + makeLink("a"));
+    EXPECT_EQ(1u, readUrdf(xml, "utf8.urdf").bodies.size());
+}
+
 TEST(UrdfImportErrors, NotARobot) {
     EXPECT_CONTAINS(getImportError("<model name=\"x\"/>", "not_robot.urdf"), "<model>");
 }

@@ -51,14 +51,15 @@ TEST(ValidationChecks, VerdictMismatchFails) {
     EXPECT_THROW(findCheck(checks, "position error"), std::runtime_error);
 }
 
-TEST(ValidationChecks, PenetrationGrowthBoundIsATenthOfAMillimetreForMergedOnly) {
-    validation::RunRecord r = makeApproxRecord(0);
-    r.summary.maxEngagedPenetrationGrowth = 0.00011;
-    EXPECT_FALSE(findCheck(validation::checkRun(r), "fingertip penetration").pass);
-    r.summary.maxEngagedPenetrationGrowth = 0.00009;
-    EXPECT_TRUE(findCheck(validation::checkRun(r), "fingertip penetration").pass);
-    r.run.options.approx.attach = simulation::ApproxAttach::Multi;  // not tracked: no check
-    EXPECT_THROW(findCheck(validation::checkRun(r), "fingertip penetration"), std::runtime_error);
+TEST(ValidationChecks, PenetrationGrowthBoundIsATenthOfAMillimetreForBothAttachments) {
+    for (const auto attach : {simulation::ApproxAttach::Merged, simulation::ApproxAttach::Multi}) {
+        validation::RunRecord r = makeApproxRecord(0);
+        r.run.options.approx.attach = attach;
+        r.summary.maxEngagedPenetrationGrowth = 0.00011;
+        EXPECT_FALSE(findCheck(validation::checkRun(r), "fingertip penetration").pass);
+        r.summary.maxEngagedPenetrationGrowth = 0.00009;
+        EXPECT_TRUE(findCheck(validation::checkRun(r), "fingertip penetration").pass);
+    }
 }
 
 TEST(ValidationChecks, EngagingBeforeSettlingFails) {

@@ -82,7 +82,8 @@ public:
     /// Disables every part; for the initial state (parts are created enabled, as any bushing).
     void detachAll(SimTK::State& state) const;
     /// Attaches part i with limits from `load` (friction coefficient `mu`) and its normal (and
-    /// tangent, up to the limits) spring preloaded to `load.force_G`. Needs Stage::Position; leaves
+    /// tangent, up to the limits) spring preloaded to `load.force_G`, with the stiffness part i
+    /// has in `state` (getPart(i).setStiffness() before attaching changes it). Needs Stage::Position; leaves
     /// `state` realized to Stage::Position. @throws graspsim::InputError for i out of range.
     void attach(SimTK::State& state, int i, const FingerLoad& load, double mu) const;
     /// Detaches part i (it applies nothing until attached again).

@@ -35,6 +35,7 @@
 /// free finger joints (merged locks them).
 
 #include "graspsim/contact/compliant_contact_force.h"
+#include "graspsim/grasp/multi_attachment.h"
 #include "graspsim/scenario/scenario.h"
 #include "graspsim/simulation/simulation_options.h"
 
@@ -58,7 +59,10 @@ class MultiAttachmentSwitch {
 public:
     /// @param scene an approx-mode scene with a MultiAttachment (GraspScene::getMultiAttachment()).
     /// @param slideLimit how far a finger's anchor may slide before it is detached (m).
-    MultiAttachmentSwitch(const GraspScene& scene, double slideLimit);
+    /// @param penetrationBound how far an attached fingertip may sink into the object under loads
+    ///        up to its limits (m): each part is stiffened from its own loads at attachment, as the
+    ///        merged bushing is (grasp_switch.h, step (d)).
+    MultiAttachmentSwitch(const GraspScene& scene, double slideLimit, double penetrationBound);
 
     /// Whether every goal finger's contacts stick: slip speed below the scenario's friction transition
     /// velocity (its own threshold for "sticking"). Multi engages only then: each part is a sticking
@@ -78,9 +82,11 @@ public:
 private:
     int findFinger(const std::string& body) const;
     std::string describeDetach(const SimTK::State& state, int finger) const;
+    void stiffenPart(SimTK::State& state, int finger, const grasp::FingerLoad& load, double mu) const;
 
     const GraspScene& scene_;
     double slideLimit_;
+    double penetrationBound_;
     std::vector<std::vector<std::string>> fingerBodies_;  // per goal: the digit's bodies, palm excluded
     std::vector<std::vector<int>> fingerPairs_;           // per goal: its contact pairs
 };
