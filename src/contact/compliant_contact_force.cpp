@@ -1,5 +1,7 @@
 #include "graspsim/contact/compliant_contact_force.h"
 
+#include <algorithm>
+
 #include <string>
 #include <utility>
 
@@ -140,13 +142,15 @@ public:
     }
 
     std::vector<ContactReport> findContactReports(const SimTK::State& state) const {
-        std::vector<ContactReport> reports;
-        forEachContact(state, [&](int i, const ContactPoint& contact, const BodyMotion& a,
-                                  const BodyMotion& b) {
-            reports.push_back(
-                makeReport(i, contact, calcContactForce(pairs_[i].parameters, contact, a, b)));
+        const EnabledFlags& enabled = getEnabledFlags(state);
+        return findReports(state, [&](int i) { return bool(enabled[i]); });
+    }
+
+    // The listed pairs, whatever their flags say.
+    std::vector<ContactReport> findContactReports(const SimTK::State& state, const std::vector<int>& pairIndices) const {
+        return findReports(state, [&](int i) {
+            return std::find(pairIndices.begin(), pairIndices.end(), i) != pairIndices.end();
         });
-        return reports;
     }
 
 private:
@@ -159,13 +163,28 @@ private:
         return contacts;
     }
 
+    template <class Selected>
+    std::vector<ContactReport> findReports(const SimTK::State& state, Selected&& selected) const {
+        std::vector<ContactReport> reports;
+        forEachContact(state, selected, [&](int i, const ContactPoint& contact, const BodyMotion& a, const BodyMotion& b) {
+            reports.push_back(makeReport(i, contact, calcContactForce(pairs_[i].parameters, contact, a, b)));
+        });
+        return reports;
+    }
+
     // Calls visit(pairIndex, contact, motionA, motionB) for every contact of every enabled
     // pair. No early exit: a contact with zero force does not hide the ones after it.
     template <class Visit>
     void forEachContact(const SimTK::State& state, Visit&& visit) const {
         const EnabledFlags& enabled = getEnabledFlags(state);
+        forEachContact(state, [&](int i) { return bool(enabled[i]); }, visit);
+    }
+
+    // The same for every pair i with selected(i).
+    template <class Selected, class Visit>
+    void forEachContact(const SimTK::State& state, Selected&& selected, Visit&& visit) const {
         for (int i = 0; i < getNumPairs(); ++i) {
-            if (!enabled[i]) continue;
+            if (!selected(i)) continue;
             const std::vector<ContactPoint>& contacts = findPairContacts(state, i);
             if (contacts.empty()) continue;
             const BodyMotion a = findBodyMotion(state, pairs_[i].pair.a.body);
@@ -242,6 +261,12 @@ void CompliantContactForce::setPairsEnabled(SimTK::State& state,
     for (int i : pairIndices) checkPairIndex(i);
     EnabledFlags& flags = asContactImpl(getImplementation()).updEnabledFlags(state);
     for (int i : pairIndices) flags[i] = enabled;
+}
+
+std::vector<ContactReport> CompliantContactForce::findContactReports(const SimTK::State& state,
+                                                                   const std::vector<int>& pairIndices) const {
+    for (int i : pairIndices) checkPairIndex(i);
+    return asContactImpl(getImplementation()).findContactReports(state, pairIndices);
 }
 
 std::vector<ContactReport> CompliantContactForce::findContactReports(

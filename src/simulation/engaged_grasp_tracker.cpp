@@ -95,12 +95,9 @@ double EngagedGraspTracker::measurePenetration(const SimTK::State& state) {
     for (int k = 0; k < pairs.getNumPairs(); ++k) {
         if (!pairs.isPairEnabled(state, k)) replaced.push_back(k);
     }
-    SimTK::State scratch = state;
-    pairs.setPairsEnabled(scratch, replaced, true);
-    scene_.getSystem().realize(scratch, SimTK::Stage::Velocity);
+    scene_.getSystem().realize(state, SimTK::Stage::Velocity);
     double deepest = 0;
-    for (const contact::ContactReport& c : pairs.findContactReports(scratch)) {
-        if (!std::binary_search(replaced.begin(), replaced.end(), c.pairIndex)) continue;
+    for (const contact::ContactReport& c : pairs.findContactReports(state, replaced)) {
         deepest = std::max(deepest, c.depth);
         const auto engaged = depthAtEngage_.find(c.pairIndex);
         const double growth = c.depth - (engaged == depthAtEngage_.end() ? 0.0 : engaged->second);

@@ -144,10 +144,12 @@ double GraspSwitch::calcQuality(const SimTK::State& state) const {
 double GraspSwitch::calcEngagedQuality(const SimTK::State& state) const {
     if (!multi_) return tracker_.calcQuality(state);
     // Multi: the fingers move on their own and the palm-fixed tracker does not apply; Q is that of
-    // the contacts the pairs would produce (a scratch state with them switched on).
-    SimTK::State scratch = state;
-    scene_.getContacts().setPairsEnabled(scratch, allPairs(scene_.getContacts()), true);
-    return calcQuality(scratch);
+    // the contacts every pair would produce in `state`, switched on or not.
+    scene_.getSystem().realize(state, SimTK::Stage::Velocity);
+    grasp::QualityOptions quality;
+    quality.mu = scene_.getScenario().contact.staticFriction;
+    return calcContactGraspQuality(scene_.getContacts().findContactReports(state, allPairs(scene_.getContacts())),
+                                   scene_.getObject().getBodyTransform(state), quality);
 }
 
 bool GraspSwitch::isFullContact(const SimTK::State& state) const {

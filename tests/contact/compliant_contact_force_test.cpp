@@ -158,6 +158,29 @@ TEST(CompliantContactForce, DisabledPairsExertNothingAndSwitchingInvalidatesInst
     EXPECT_LE((plateForce() - all).norm(), 1e-12);
 }
 
+// The reports of listed pairs do not depend on their flags: a disabled pair reports what it
+// would apply if enabled (the engaged approximation measures the replaced fingertips this way),
+// and the state is not invalidated.
+TEST(CompliantContactForce, ListedPairsReportAsIfEnabledWithoutTouchingTheState) {
+    FiveSpheresOnAPlate s;
+    const std::vector<ContactReport> enabled = s.force.findContactReports(s.state);
+    s.force.setPairsEnabled(s.state, {1, 3}, false);
+    s.scene.system.realize(s.state, SimTK::Stage::Velocity);
+
+    const std::vector<ContactReport> listed = s.force.findContactReports(s.state, {3, 1});
+
+    EXPECT_EQ(s.state.getSystemStage(), SimTK::Stage::Velocity);
+    ASSERT_EQ(listed.size(), 2u);
+    for (const ContactReport& r : listed) {
+        const ContactReport& e = enabled[static_cast<std::size_t>(r.pairIndex)];
+        EXPECT_EQ(r.depth, e.depth);
+        EXPECT_EQ(r.normalForce, e.normalForce);
+        EXPECT_EQ(r.frictionForce_G, e.frictionForce_G);
+    }
+    EXPECT_EQ(listed[0].pairIndex, 1);  // in pair order
+    EXPECT_THROW(s.force.findContactReports(s.state, {5}), InputError);
+}
+
 TEST(CompliantContactForce, PairsCanStartDisabledAndBadIndicesAreRejected) {
     Scene scene;
     const SimTK::MobilizedBody::Free ball = scene.addFree(0.1, 0.02);

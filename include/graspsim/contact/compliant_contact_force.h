@@ -87,6 +87,10 @@ public:
 
     /// Every contact point of every enabled pair, with its forces. Needs Stage::Velocity.
     std::vector<ContactReport> findContactReports(const SimTK::State& state) const;
+    /// Every contact point of the listed pairs, enabled or not, with the forces they would apply
+    /// (nothing is applied): what switching them on would give, without an Instance-stage
+    /// change. Needs Stage::Velocity. @throws graspsim::InputError for an index out of range.
+    std::vector<ContactReport> findContactReports(const SimTK::State& state, const std::vector<int>& pairIndices) const;
 
 private:
     // A Force::Custom handle may hold no data; everything lives in its Implementation (src).

@@ -25,12 +25,13 @@
 /// wrench direction the contacts cannot produce within friction is ignored (reported as
 /// residual by distributeWrench; the slide test catches the resulting motion).
 ///
-/// PENETRATION WHILE ENGAGED (measurePenetration). On a scratch copy of the state the contact
-/// pairs the approximation has switched off (all with merged; the attached fingers' with multi)
-/// are switched on and evaluated (geometry and would-be forces, nothing is applied): the depth of
-/// every such pair in contact. Pairs still in ordinary contact are not counted: their compression
-/// under a load is the compliant model's, as in full contact. What is bounded: the GROWTH of each pair's depth beyond its
-/// depth at engagement (a new contact counts with its whole depth). What is not: the depth the
+/// PENETRATION WHILE ENGAGED (measurePenetration). The contact pairs the approximation has
+/// switched off (all with merged; the attached fingers' with multi) are evaluated as if on
+/// (CompliantContactForce::findContactReports of a list: geometry and would-be forces, nothing
+/// applied, the state untouched): the depth of every such pair in contact. Pairs still in
+/// ordinary contact are not counted: their compression under a load is the compliant model's, as
+/// in full contact. What is bounded: the GROWTH of each pair's depth beyond its depth at
+/// engagement (a new contact counts with its whole depth). What is not: the depth the
 /// grasp has at engagement, the compliant skin's compression under the grip (1-2.6 mm at the
 /// scenarios' 5e5 Pa), which the locked fingers keep while engaged and which full contact has
 /// too; it is reported (PenetrationStats::atEngage) but is not interpenetration caused by the
@@ -69,8 +70,8 @@ public:
     /// contacts (file comment). 0 with no tracked contacts. Realizes `state` to
     /// Stage::Acceleration (the weld's reaction is a Lagrange multiplier).
     double calcQuality(const SimTK::State& state) const;
-    /// Deepest contact (m) of the pairs switched off in `state`, switched on in a scratch copy,
-    /// and updates getPenetration(). Used by both attachments.
+    /// Deepest contact (m) of the pairs switched off in `state`, evaluated as if on, and updates
+    /// getPenetration(). Used by both attachments. Realizes `state` to Stage::Velocity.
     double measurePenetration(const SimTK::State& state);
     const PenetrationStats& getPenetration() const { return penetration_; }
 

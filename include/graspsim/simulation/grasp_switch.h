@@ -42,8 +42,8 @@
 ///  stay free, one friction-limited part per fingertip, fingers detached one by one).
 ///  - GRASPED (constraint enabled): IK is skipped (the fingers are locked, and skipping it is where
 ///    the approximation saves its time). The contacts are still tracked without entering the
-///    dynamics (engaged_grasp_tracker.h): their penetration is measured on a scratch copy of the
-///    state with the pairs switched on, and Q is estimated from the constraint's reaction wrench
+///    dynamics (engaged_grasp_tracker.h): their penetration is measured as if the pairs were on
+///    (nothing applied, the state untouched), and Q is estimated from the constraint's reaction wrench
 ///    distributed over the contacts captured at engagement. RELEASE (constraint off, fingers
 ///    unlocked, contacts on, "release" event) when the object's centre of mass has moved more
 ///    than releaseSlideDistance relative to the palm since engagement, when a fingertip is
@@ -113,9 +113,9 @@ public:
     /// Grasp quality of the contacts active in `state` (N). Needs Stage::Velocity.
     double calcQuality(const SimTK::State& state) const;
     /// Q while engaged (N). Merged: the constraint's wrench distributed over the tracked contacts
-    /// (EngagedGraspTracker::calcQuality). Multi: the quality of the contacts the pairs would
-    /// produce in `state` (evaluated on a scratch copy with the pairs on), since the fingers move
-    /// on their own. Realizes `state` to Stage::Acceleration.
+    /// (EngagedGraspTracker::calcQuality; realizes `state` to Stage::Acceleration). Multi: the
+    /// quality of the contacts every pair would produce in `state`, switched on or not
+    /// (CompliantContactForce::findContactReports of a list), since the fingers move on their own.
     double calcEngagedQuality(const SimTK::State& state) const;
     /// The contacts tracked while engaged and the penetration measured so far.
     const EngagedGraspTracker& getTracker() const { return tracker_; }
