@@ -44,7 +44,9 @@ void EngagedGraspTracker::capture(const SimTK::State& state, const std::vector<c
 // The constraint's wrench on the object with its moment taken about O's origin (the centre of
 // mass), where the grasp quality takes moments.
 SimTK::SpatialVec EngagedGraspTracker::findConstraintWrench(const SimTK::State& state) const {
-    scene_.getSystem().realize(state, SimTK::Stage::Acceleration);
+    // The weld's reaction is a Lagrange multiplier (Acceleration); the bushing's is a force of
+    // the state (Velocity), and a forward-dynamics solve per check would be wasted.
+    scene_.getSystem().realize(state, scene_.getWeld() ? SimTK::Stage::Acceleration : SimTK::Stage::Velocity);
     const SimTK::Transform& X_GO = scene_.getObject().getBodyTransform(state);
     SimTK::SpatialVec W_M;
     SimTK::Vec3 p_OM;

@@ -68,7 +68,8 @@ public:
 
     /// Q (N) from the engaged constraint's wrench on the object, distributed over the tracked
     /// contacts (file comment). 0 with no tracked contacts. Realizes `state` to
-    /// Stage::Acceleration (the weld's reaction is a Lagrange multiplier).
+    /// Stage::Acceleration with the weld (its reaction is a Lagrange multiplier), to
+    /// Stage::Velocity with the bushing.
     double calcQuality(const SimTK::State& state) const;
     /// Deepest contact (m) of the pairs switched off in `state`, evaluated as if on, and updates
     /// getPenetration(). Used by both attachments. Realizes `state` to Stage::Velocity.
