@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include "stepped_run.h"
+
 #include <cmath>
 #include <memory>
 #include <string>
@@ -18,6 +20,9 @@ namespace {
 
 using SimTK::Vec3;
 using SimTK::Vec6;
+using test::calcAngleAboutZ;
+using test::IntegratorKind;
+using test::SteppedRun;
 
 constexpr double kMass = 0.5;                     // kg
 constexpr double kInertia = 0.01;                 // kg m^2, about every axis through the centre
@@ -28,8 +33,6 @@ constexpr double kAngularLimit = 0.1;             // N m
 // Critical damping 2 sqrt(K m): the step load never overshoots its static deflection.
 const double kLinearDamping = 2 * std::sqrt(kLinearStiffness * kMass);
 const double kAngularDamping = 2 * std::sqrt(kAngularStiffness * kInertia);
-
-enum class IntegratorKind { RungeKuttaMerson, CPodes };
 
 // The scene: O's centre at the Ground origin, M = O's frame, F = Ground's frame.
 struct BushedBox {
@@ -66,41 +69,13 @@ struct BushedBox {
     }
 };
 
-// An integrator of the given kind driven by a TimeStepper (which also runs event handlers;
-// a bare Integrator::stepTo() returns early at the start of each continuous interval).
-class BushedRun {
-public:
-    BushedRun(IntegratorKind kind, const SimTK::MultibodySystem& system, const SimTK::State& initial) {
-        if (kind == IntegratorKind::CPodes) {
-            integrator_ = std::make_unique<SimTK::CPodesIntegrator>(system);
-        } else {
-            integrator_ = std::make_unique<SimTK::RungeKuttaMersonIntegrator>(system);
-        }
-        integrator_->setAccuracy(1e-6);
-        stepper_ = std::make_unique<SimTK::TimeStepper>(system, *integrator_);
-        stepper_->initialize(initial);
-    }
-    const SimTK::State& stepTo(double t) {
-        stepper_->stepTo(t);
-        EXPECT_DOUBLE_EQ(stepper_->getTime(), t);
-        return stepper_->getState();
-    }
-
-private:
-    std::unique_ptr<SimTK::Integrator> integrator_;
-    std::unique_ptr<SimTK::TimeStepper> stepper_;
-};
-
-// Angle (rad) of a rotation about Ground's z axis.
-double calcAngleAboutZ(const SimTK::Rotation& R_GB) { return std::atan2(R_GB.asMat33()(1, 0), R_GB.asMat33()(0, 0)); }
-
 class LimitedBushingDynamics : public testing::TestWithParam<IntegratorKind> {};
 
 TEST_P(LimitedBushingDynamics, HoldsAForceBelowTheLimit) {
     BushedBox scene;
     const double force = 0.75 * kLinearLimit;
     scene.addForce(Vec3(force, 0, 0));
-    BushedRun run(GetParam(), scene.system, scene.makeState(BushingAxis::TranslationX, kLinearLimit));
+    SteppedRun run(GetParam(), scene.system, scene.makeState(BushingAxis::TranslationX, kLinearLimit));
     const SimTK::State& state = run.stepTo(0.2);  // 28 time constants sqrt(m/K) = 7 ms
     const Vec3 p = scene.box.getBodyOriginLocation(state);
     EXPECT_NEAR(p[0], force / kLinearStiffness, 1e-3 * force / kLinearStiffness);
@@ -114,7 +89,7 @@ TEST_P(LimitedBushingDynamics, SlidesWithTheExcessForceAboveTheLimit) {
     BushedBox scene;
     const double force = 2.5 * kLinearLimit;
     scene.addForce(Vec3(force, 0, 0));
-    BushedRun run(GetParam(), scene.system, scene.makeState(BushingAxis::TranslationX, kLinearLimit));
+    SteppedRun run(GetParam(), scene.system, scene.makeState(BushingAxis::TranslationX, kLinearLimit));
     const double t1 = 0.1, t2 = 0.3;
     const double v1 = scene.box.getBodyVelocity(run.stepTo(t1))[1][0];
     const SimTK::State& state = run.stepTo(t2);
@@ -132,7 +107,7 @@ TEST_P(LimitedBushingDynamics, HoldsATorqueBelowTheLimit) {
     BushedBox scene;
     const double torque = 0.5 * kAngularLimit;
     scene.addTorque(Vec3(0, 0, torque));
-    BushedRun run(GetParam(), scene.system, scene.makeState(BushingAxis::RotationZ, kAngularLimit));
+    SteppedRun run(GetParam(), scene.system, scene.makeState(BushingAxis::RotationZ, kAngularLimit));
     const SimTK::State& state = run.stepTo(0.2);  // 20 time constants sqrt(I/K) = 10 ms
     const double angle = calcAngleAboutZ(scene.box.getBodyRotation(state));
     EXPECT_NEAR(angle, torque / kAngularStiffness, 1e-3 * torque / kAngularStiffness);
@@ -144,7 +119,7 @@ TEST_P(LimitedBushingDynamics, SpinsWithTheExcessTorqueAboveTheLimit) {
     BushedBox scene;
     const double torque = 3 * kAngularLimit;
     scene.addTorque(Vec3(0, 0, torque));
-    BushedRun run(GetParam(), scene.system, scene.makeState(BushingAxis::RotationZ, kAngularLimit));
+    SteppedRun run(GetParam(), scene.system, scene.makeState(BushingAxis::RotationZ, kAngularLimit));
     // Spins about 2.5 rad by t2, well past small angles: exercises the anchor's rotation chart.
     const double t1 = 0.2, t2 = 0.5;
     const double w1 = scene.box.getBodyVelocity(run.stepTo(t1))[0][2];
@@ -272,7 +247,7 @@ TEST_P(LimitedBushingDynamics, StiffnessSetInTheStateGivesTheStaticDeflection) {
     SimTK::State initial = scene.makeState(BushingAxis::TranslationX, kLinearLimit);
     double stiffness = 0;
     stiffenTenfold(scene, initial, stiffness);
-    BushedRun run(GetParam(), scene.system, initial);
+    SteppedRun run(GetParam(), scene.system, initial);
     const SimTK::State& state = run.stepTo(0.2);  // 89 time constants sqrt(m/K)
     EXPECT_NEAR(scene.box.getBodyOriginLocation(state)[0], force / stiffness, 1e-3 * force / stiffness);
     EXPECT_EQ(scene.bushing.getStiffness(state)[3], stiffness);
@@ -286,7 +261,7 @@ TEST_P(LimitedBushingDynamics, StiffnessSetInTheStateGivesTheDeflectionAtTheLimi
     SimTK::State initial = scene.makeState(BushingAxis::TranslationX, kLinearLimit);
     double stiffness = 0;
     stiffenTenfold(scene, initial, stiffness);
-    BushedRun run(GetParam(), scene.system, initial);
+    SteppedRun run(GetParam(), scene.system, initial);
     const SimTK::State& state = run.stepTo(0.3);
     EXPECT_TRUE(scene.bushing.isSliding(state, BushingAxis::TranslationX));
     EXPECT_NEAR(scene.bushing.findDisplacement(state)[toIndex(BushingAxis::TranslationX)], kLinearLimit / stiffness,
@@ -331,7 +306,7 @@ TEST_P(LimitedBushingDynamics, LimitSetByAnEventHandlerStartsTheSlide) {
     const double force = 2.5 * kLinearLimit, switchTime = 0.15;  // 21 sqrt(m/K)
     scene.addForce(Vec3(force, 0, 0));
     scene.system.addEventHandler(new LimitSwitch(scene.bushing, switchTime));
-    BushedRun run(GetParam(), scene.system,
+    SteppedRun run(GetParam(), scene.system,
             scene.makeState(BushingAxis::TranslationX, SimTK::Infinity));
     EXPECT_NEAR(scene.box.getBodyOriginLocation(run.stepTo(switchTime - 1e-3))[0],
                 force / kLinearStiffness, 1e-3 * force / kLinearStiffness);  // held while locked

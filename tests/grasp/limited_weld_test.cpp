@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include "stepped_run.h"
+
 #include <cmath>
 #include <memory>
 #include <string>
@@ -19,6 +21,9 @@ namespace {
 
 using SimTK::Vec3;
 using SimTK::Vec6;
+using test::calcAngleAboutZ;
+using test::IntegratorKind;
+using test::SteppedRun;
 
 constexpr double kMass = 0.5;          // kg
 constexpr double kInertia = 0.01;      // kg m^2, about every axis through the centre
@@ -26,8 +31,6 @@ constexpr double kLinearLimit = 2;     // N
 constexpr double kAngularLimit = 0.1;  // N m
 // Drift allowed while held: the velocity constraint is kept to the integrator's tolerance only.
 constexpr double kHeldDrift = 1e-6;  // m or rad
-
-enum class IntegratorKind { RungeKuttaMerson, CPodes };
 
 // A spatial load on O's centre (torque, force; in Ground) that switches off at `offTime`.
 class StepLoad : public SimTK::Force::Custom::Implementation {
@@ -76,44 +79,13 @@ Vec6 limitOn(WeldAxis axis, double limit) {
     return limits;
 }
 
-// An integrator driven by a TimeStepper, which runs the weld's witness handlers.
-class WeldRun {
-public:
-    WeldRun(IntegratorKind kind, const SimTK::MultibodySystem& system, const SimTK::State& initial,
-            double accuracy = 1e-6) {
-        if (kind == IntegratorKind::CPodes) {
-            integrator_ = std::make_unique<SimTK::CPodesIntegrator>(system, SimTK::CPodes::BDF, SimTK::CPodes::Newton);
-        } else {
-            integrator_ = std::make_unique<SimTK::RungeKuttaMersonIntegrator>(system);
-        }
-        integrator_->setAccuracy(accuracy);
-        integrator_->setAllowInterpolation(false);  // steps end at load switches
-        stepper_ = std::make_unique<SimTK::TimeStepper>(system, *integrator_);
-        stepper_->initialize(initial);
-    }
-    const SimTK::State& stepTo(double t) {
-        stepper_->stepTo(t);
-        EXPECT_DOUBLE_EQ(stepper_->getTime(), t);
-        return stepper_->getState();
-    }
-
-private:
-    std::unique_ptr<SimTK::Integrator> integrator_;
-    std::unique_ptr<SimTK::TimeStepper> stepper_;
-};
-
-// Angle (rad) of a rotation about Ground's z axis.
-double calcAngleAboutZ(const SimTK::Rotation& R_GB) {
-    return std::atan2(R_GB.asMat33()(1, 0), R_GB.asMat33()(0, 0));
-}
-
 class LimitedWeldDynamics : public testing::TestWithParam<IntegratorKind> {};
 
 TEST_P(LimitedWeldDynamics, HoldsAForceBelowTheLimit) {
     WeldedBox scene;
     const double force = 0.75 * kLinearLimit;
     scene.addLoad(Vec3(0), Vec3(force, 0, 0));
-    WeldRun run(GetParam(), scene.system, scene.makeState(limitOn(WeldAxis::TranslationX, kLinearLimit)));
+    SteppedRun run(GetParam(), scene.system, scene.makeState(limitOn(WeldAxis::TranslationX, kLinearLimit)), 1e-6, false);
     const SimTK::State& state = run.stepTo(0.5);
     EXPECT_LT(scene.box.getBodyOriginLocation(state).norm(), kHeldDrift);
     EXPECT_LT(scene.box.getBodyVelocity(state).norm(), 1e-9);
@@ -127,7 +99,7 @@ TEST_P(LimitedWeldDynamics, SlidesWithTheExcessForceAboveTheLimit) {
     WeldedBox scene;
     const double force = -2.5 * kLinearLimit;  // along -x: the slip direction follows the load
     scene.addLoad(Vec3(0), Vec3(force, 0, 0));
-    WeldRun run(GetParam(), scene.system, scene.makeState(limitOn(WeldAxis::TranslationX, kLinearLimit)));
+    SteppedRun run(GetParam(), scene.system, scene.makeState(limitOn(WeldAxis::TranslationX, kLinearLimit)), 1e-6, false);
     const double t1 = 0.1, t2 = 0.3;
     const double v1 = scene.box.getBodyVelocity(run.stepTo(t1))[1][0];
     const SimTK::State& state = run.stepTo(t2);
@@ -146,7 +118,7 @@ TEST_P(LimitedWeldDynamics, HoldsATorqueBelowTheLimit) {
     WeldedBox scene;
     const double torque = 0.5 * kAngularLimit;
     scene.addLoad(Vec3(0, 0, torque), Vec3(0));
-    WeldRun run(GetParam(), scene.system, scene.makeState(limitOn(WeldAxis::RotationZ, kAngularLimit)));
+    SteppedRun run(GetParam(), scene.system, scene.makeState(limitOn(WeldAxis::RotationZ, kAngularLimit)), 1e-6, false);
     const SimTK::State& state = run.stepTo(0.5);
     EXPECT_LT(std::abs(calcAngleAboutZ(scene.box.getBodyRotation(state))), kHeldDrift);
     EXPECT_FALSE(scene.weld.isSliding(state, WeldAxis::RotationZ));
@@ -158,7 +130,7 @@ TEST_P(LimitedWeldDynamics, SpinsWithTheExcessTorqueAboveTheLimit) {
     WeldedBox scene;
     const double torque = 3 * kAngularLimit;
     scene.addLoad(Vec3(0, 0, torque), Vec3(0));
-    WeldRun run(GetParam(), scene.system, scene.makeState(limitOn(WeldAxis::RotationZ, kAngularLimit)));
+    SteppedRun run(GetParam(), scene.system, scene.makeState(limitOn(WeldAxis::RotationZ, kAngularLimit)), 1e-6, false);
     // About 2.5 rad by t2: the axes turn with O, and z stays z.
     const double t1 = 0.2, t2 = 0.5;
     const double w1 = scene.box.getBodyVelocity(run.stepTo(t1))[0][2];
@@ -180,7 +152,7 @@ TEST_P(LimitedWeldDynamics, SticksAgainWhenTheForceDrops) {
     WeldedBox scene;
     const double force = 2.5 * kLinearLimit, t1 = 0.1;
     scene.addLoad(Vec3(0), Vec3(force, 0, 0), t1);
-    WeldRun run(GetParam(), scene.system, scene.makeState(limitOn(WeldAxis::TranslationX, kLinearLimit)));
+    SteppedRun run(GetParam(), scene.system, scene.makeState(limitOn(WeldAxis::TranslationX, kLinearLimit)), 1e-6, false);
     const double a1 = (force - kLinearLimit) / kMass, v1 = a1 * t1;
     const double tStop = t1 + v1 * kMass / kLinearLimit;
     const double xStop = 0.5 * a1 * t1 * t1 + v1 * v1 * kMass / (2 * kLinearLimit);
@@ -205,7 +177,7 @@ TEST_P(LimitedWeldDynamics, RelievesOnlyTheOverloadedAxis) {
     Vec6 limits(SimTK::Infinity);
     limits[toIndex(WeldAxis::TranslationX)] = kLinearLimit;
     limits[toIndex(WeldAxis::RotationZ)] = kAngularLimit;
-    WeldRun run(GetParam(), scene.system, scene.makeState(limits));
+    SteppedRun run(GetParam(), scene.system, scene.makeState(limits), 1e-6, false);
     const double t1 = 0.1, t2 = 0.2;
     const double v1 = scene.box.getBodyVelocity(run.stepTo(t1))[1][0];
     const SimTK::State& state = run.stepTo(t2);
@@ -262,7 +234,7 @@ struct SpinningPair {
     double findDrift(double t, double accuracy) {
         const SimTK::State initial = makeState();
         const SimTK::Transform X_FM0 = weld.findTransform(initial);
-        WeldRun run(IntegratorKind::CPodes, system, initial, accuracy);
+        SteppedRun run(IntegratorKind::CPodes, system, initial, accuracy, false);
         const SimTK::State& end = run.stepTo(t);
         const SimTK::Transform X_FM = weld.findTransform(end);
         const Vec3 pCm = 0.5 * (h.getBodyOriginLocation(end) + o.getBodyOriginLocation(end));
