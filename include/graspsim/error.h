@@ -28,4 +28,21 @@ public:
     explicit NumericalError(const std::string& message) : Error(message) {}
 };
 
+/// `text` with every run of line breaks, tabs and spaces folded into one space and the ends
+/// trimmed: messages from other libraries (Simbody's span lines) made fit for one line.
+inline std::string foldToOneLine(const std::string& text) {
+    std::string line;
+    bool gap = false;
+    for (char c : text) {
+        if (c == '\n' || c == '\r' || c == '\t' || c == ' ') {
+            gap = !line.empty();
+            continue;
+        }
+        if (gap) line += ' ';
+        gap = false;
+        line += c;
+    }
+    return line;
+}
+
 }  // namespace graspsim

@@ -35,6 +35,14 @@ SimTK::State& loadWorkState(CvodeCallbackContext& c, realtype t, N_Vector y) {
 }
 
 // ẏ = f(t, y). A Simbody failure (e.g. a singular constraint Jacobian) is reported as
+
+// A callback's exception for the failure message: Simbody's own text without the source-file
+// header its what() starts with, on one line.
+std::string describeCallbackError(const std::exception& e) {
+    const auto* simbody = dynamic_cast<const SimTK::Exception::Base*>(&e);
+    return foldToOneLine(simbody ? simbody->getMessageText() : e.what());
+}
+
 // recoverable: CVODE then retries with a smaller step.
 int evaluateRhs(realtype t, N_Vector y, N_Vector ydot, void* data) {
     CvodeCallbackContext& c = contextOf(data);
@@ -44,7 +52,7 @@ int evaluateRhs(realtype t, N_Vector y, N_Vector ydot, void* data) {
         copyFromState(s.getYDot(), ydot);
         return 0;
     } catch (const std::exception& e) {
-        c.lastCallbackError = e.what();
+        c.lastCallbackError = describeCallbackError(e);
         return 1;
     }
 }
@@ -64,7 +72,7 @@ int evaluateTriggers(realtype t, N_Vector y, realtype* g, void* data) {
         }
         return 0;
     } catch (const std::exception& e) {
-        c.lastCallbackError = e.what();
+        c.lastCallbackError = describeCallbackError(e);
         return -1;
     }
 }
@@ -118,7 +126,7 @@ int projectOntoManifold(realtype t, N_Vector ycur, N_Vector corr, realtype /*eps
         for (int i = 0; i < y.size(); ++i) NV_Ith_S(corr, i) = y[i] - NV_Ith_S(ycur, i);
         return 0;
     } catch (const std::exception& e) {
-        c.lastCallbackError = e.what();
+        c.lastCallbackError = describeCallbackError(e);
         return -1;
     }
 }

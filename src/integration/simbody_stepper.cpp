@@ -1,5 +1,7 @@
 #include "graspsim/integration/simbody_stepper.h"
 
+#include "graspsim/io/filtered_stderr.h"
+
 namespace graspsim::integration {
 
 SimbodyCpodesStepper::SimbodyCpodesStepper(const SimTK::System& system, double accuracy)
@@ -24,7 +26,12 @@ void SimbodyCpodesStepper::initialize(const SimTK::State& initial) {
     initialized_ = true;
 }
 
-void SimbodyCpodesStepper::stepTo(double time) { stepper_->stepTo(time); }
+// CPodes prints its own error block to stderr when it gives up, before the exception that the
+// caller turns into graspsim's one-line message; keep it off the terminal.
+void SimbodyCpodesStepper::stepTo(double time) {
+    io::FilteredStderr quiet({"[CPODES ERROR]", "[CPODES WARNING]"});
+    stepper_->stepTo(time);
+}
 
 void SimbodyCpodesStepper::addCurrentCountsTo(IntegrationStatistics& s) const {
     s.steps += integrator_->getNumStepsTaken();

@@ -270,10 +270,13 @@ void runScene(GraspScene& scene, AnyStepper& stepper, double duration, const cha
         stepThroughSamples(scene, stepper, recorder, phases, duration, progress, observer, lastEvent);
         result.summary.complete = true;
     } catch (const NumericalError& e) {
-        result.summary.failure = e.what();
+        result.summary.failure = foldToOneLine(e.what());
+    } catch (const SimTK::Exception::Base& e) {  // its what() starts with a source file and spans lines
+        result.summary.failure = std::string(failureVerb) + " at t = " + std::to_string(stepper.getState().getTime()) +
+                                 " s (last event: " + lastEvent + "): Simbody: " + foldToOneLine(e.getMessageText());
     } catch (const std::exception& e) {
         result.summary.failure = std::string(failureVerb) + " at t = " + std::to_string(stepper.getState().getTime()) +
-                                 " s (last event: " + lastEvent + "): " + e.what();
+                                 " s (last event: " + lastEvent + "): " + foldToOneLine(e.what());
     }
     result.summary.wallTime = std::chrono::duration<double>(Clock::now() - start).count();
     summarizeRun(scene, phases, scene.getIkTiming().totalSeconds - ikBefore, stepper.getState(), result);

@@ -18,9 +18,7 @@ decltype(auto) callSimbody(const std::string& context, Call&& call) {
     try {
         return std::forward<Call>(call)();
     } catch (const SimTK::Exception::Base& e) {
-        std::string text = e.getMessageText();
-        std::replace(text.begin(), text.end(), '\n', ' ');
-        throw Error(context + ": Simbody: " + text);
+        throw Error(context + ": Simbody: " + foldToOneLine(e.getMessageText()));
     }
 }
 

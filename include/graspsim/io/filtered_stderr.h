@@ -1,0 +1,46 @@
+#pragma once
+/// @file
+/// Keeping a C library's diagnostics off the standard error (file descriptor 2) for a scope.
+///
+/// Why: Simbody's CPodes prints "[CPODES ERROR] ..." blocks to stderr itself when the
+/// integration fails, before the exception that graspsim turns into its one-line message. While
+/// a FilteredStderr is alive, fd 2 goes to a scratch file (one per process, emptied at each use); at the end of the scope everything
+/// in it except the blocks that start with one of the given prefixes is written to the real
+/// stderr, in order. The dropped text stays available (getDropped()).
+///
+/// In sanitizer builds (GRASPSIM_SANITIZED) nothing is redirected: a sanitizer report written
+/// into the temporary file just before the process aborts would be lost.
+
+#include <string>
+#include <vector>
+
+namespace graspsim::io {
+
+/// Redirects fd 2 while alive (see the file comment). Not thread-safe: fd 2 and the scratch file
+/// are shared by the whole process; do not nest. If the redirection cannot be set up, stderr is left alone.
+class FilteredStderr {
+public:
+    /// @param dropPrefixes a block (text between blank lines) starting with one of these, after
+    ///        leading line breaks, is dropped.
+    explicit FilteredStderr(std::vector<std::string> dropPrefixes);
+    ~FilteredStderr();
+    FilteredStderr(const FilteredStderr&) = delete;
+    FilteredStderr& operator=(const FilteredStderr&) = delete;
+
+    /// Restores fd 2 now and passes the kept text on (the destructor does it otherwise).
+    void release();
+    /// The dropped blocks so far, joined with line breaks.
+    const std::string& getDropped() const { return dropped_; }
+
+private:
+    std::vector<std::string> dropPrefixes_;
+    std::string dropped_;
+    int saved_ = -1;    // duplicate of the original fd 2, -1 when not redirected
+    int capture_ = -1;  // the scratch file, -1 when not redirected
+};
+
+/// The kept part of `text`: its blocks (separated by blank lines) minus those that start with
+/// one of `dropPrefixes`; the dropped blocks are appended to `dropped`.
+std::string filterBlocks(const std::string& text, const std::vector<std::string>& dropPrefixes, std::string& dropped);
+
+}  // namespace graspsim::io
