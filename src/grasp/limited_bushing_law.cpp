@@ -51,4 +51,11 @@ SimTK::Vec3 calcRotationVectorRate(const SimTK::Vec3& theta, const SimTK::Vec3& 
     return w_PB_B + 0.5 * thetaCrossW + c * (theta % thetaCrossW);
 }
 
+SimTK::Vec6 calcStiffnessForBound(const SimTK::Vec6& minimum, const SimTK::Vec6& loads, double leverArm, double bound) {
+    const double perAxis = bound / (2 * std::sqrt(3.0));
+    SimTK::Vec6 stiffness;
+    for (int k = 0; k < 6; ++k) stiffness[k] = std::max(minimum[k], loads[k] * (k < 3 ? leverArm : 1.0) / perAxis);
+    return stiffness;
+}
+
 }  // namespace graspsim::grasp

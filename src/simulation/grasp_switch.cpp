@@ -1,6 +1,7 @@
 #include "graspsim/simulation/grasp_switch.h"
 
 #include "graspsim/error.h"
+#include "graspsim/grasp/limited_bushing_law.h"
 #include "graspsim/simulation/contact_grasp_quality.h"
 #include "graspsim/simulation/grasp_scene.h"
 #include "graspsim/simulation/multi_attachment_switch.h"
@@ -63,10 +64,8 @@ double findLeverArm(const std::vector<contact::ContactReport>& reports, const Si
 // The bushing's stiffness at engagement, so that its elastic deflection cannot push a fingertip
 // more than `budget` deeper (quasi-statically). A fingertip at r from M's origin (|r| <= arm) moves
 // by e_p + e_r x r, so it sinks by at most |e_p| + arm |e_r|. While the bushing holds (or slides
-// at its limits) every axis has |e_k| <= L_k / K_k, so |e_p| <= sqrt(3) L_t / K_t and
-// |e_r| <= sqrt(3) L_r / K_r: giving each of the two terms half the budget,
-//   K_t >= 2 sqrt(3) L_t / budget,   K_r >= 2 sqrt(3) arm L_r / budget,
-// never below the scene's default (kBushingFrequency). Damping is critical on every axis,
+// at its limits) every axis has |e_k| <= L_k / K_k: grasp::calcStiffnessForBound with the limits
+// as loads, never below the scene's default (kBushingFrequency). Damping is critical on every axis,
 // 2 sqrt(K m) with the object's mass or central moment of inertia, as the default's.
 // A locked axis (infinite limit) is stiffened from its friction limit all the same: its load is of
 // that order, but the bound is not guaranteed there.
@@ -74,11 +73,9 @@ std::pair<SimTK::Vec6, SimTK::Vec6> calcEngagedStiffness(const grasp::LimitedBus
                                                         const SimTK::MassProperties& mp, const SimTK::Vec6& limits,
                                                         double arm, double budget) {
     const SimTK::Vec3 I = mp.calcCentralInertia().getMoments();
-    const double perAxis = budget / (2 * std::sqrt(3.0));
-    SimTK::Vec6 stiffness = bushing.getStiffness(), damping;
+    const SimTK::Vec6 stiffness = grasp::calcStiffnessForBound(bushing.getStiffness(), limits, arm, budget);
+    SimTK::Vec6 damping;
     for (int k = 0; k < 3; ++k) {
-        stiffness[k] = std::max(stiffness[k], limits[k] * arm / perAxis);
-        stiffness[k + 3] = std::max(stiffness[k + 3], limits[k + 3] / perAxis);
         damping[k] = 2 * std::sqrt(stiffness[k] * I[k]);
         damping[k + 3] = 2 * std::sqrt(stiffness[k + 3] * mp.getMass());
     }
@@ -135,10 +132,13 @@ void GraspSwitch::handleEvent(SimTK::State& state, SimTK::Real accuracy, bool& s
 
 double GraspSwitch::calcQuality(const SimTK::State& state) const {
     scene_.getSystem().realize(state, SimTK::Stage::Velocity);
+    return calcQualityOf(state, scene_.getContacts().findContactReports(state));
+}
+
+double GraspSwitch::calcQualityOf(const SimTK::State& state, const std::vector<contact::ContactReport>& reports) const {
     grasp::QualityOptions quality;
     quality.mu = scene_.getScenario().contact.staticFriction;  // as the recorder (grasp_simulation.cpp)
-    return calcContactGraspQuality(scene_.getContacts().findContactReports(state),
-                                   scene_.getObject().getBodyTransform(state), quality);
+    return calcContactGraspQuality(reports, scene_.getObject().getBodyTransform(state), quality);
 }
 
 double GraspSwitch::calcEngagedQuality(const SimTK::State& state) const {
@@ -146,10 +146,7 @@ double GraspSwitch::calcEngagedQuality(const SimTK::State& state) const {
     // Multi: the fingers move on their own and the palm-fixed tracker does not apply; Q is that of
     // the contacts every pair would produce in `state`, switched on or not.
     scene_.getSystem().realize(state, SimTK::Stage::Velocity);
-    grasp::QualityOptions quality;
-    quality.mu = scene_.getScenario().contact.staticFriction;
-    return calcContactGraspQuality(scene_.getContacts().findContactReports(state, allPairs(scene_.getContacts())),
-                                   scene_.getObject().getBodyTransform(state), quality);
+    return calcQualityOf(state, scene_.getContacts().findContactReports(state, allPairs(scene_.getContacts())));
 }
 
 bool GraspSwitch::isFullContact(const SimTK::State& state) const {

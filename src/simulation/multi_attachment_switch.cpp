@@ -1,6 +1,7 @@
 #include "graspsim/simulation/multi_attachment_switch.h"
 
 #include "graspsim/error.h"
+#include "graspsim/grasp/limited_bushing_law.h"
 #include "graspsim/grasp/multi_attachment.h"
 #include "graspsim/model/body_model.h"
 #include "graspsim/simulation/grasp_scene.h"
@@ -146,16 +147,11 @@ std::string MultiAttachmentSwitch::engage(SimTK::State& state, const std::vector
 // pressing force at attachment. Damping scales with sqrt(K), keeping the default damping ratio.
 void MultiAttachmentSwitch::stiffenPart(SimTK::State& state, int finger, const grasp::FingerLoad& load, double mu) const {
     const grasp::LimitedBushing& part = scene_.getMultiAttachment()->getPart(finger);
-    const double perAxis = penetrationBound_ / (2 * std::sqrt(3.0));
     const double tangent = mu * load.normalForce, moment = mu * load.armRadius * load.normalForce;
-    const SimTK::Vec6 load6(moment * load.armRadius, moment * load.armRadius, moment * load.armRadius, tangent, tangent,
-                            load.normalForce);  // z of a part is the object's normal (multi_attachment.h)
-    SimTK::Vec6 stiffness = part.getStiffness(), damping = part.getDamping();
-    for (int k = 0; k < 6; ++k) {
-        const double K = std::max(stiffness[k], load6[k] / perAxis);
-        damping[k] *= std::sqrt(K / stiffness[k]);
-        stiffness[k] = K;
-    }
+    const SimTK::Vec6 loads(moment, moment, moment, tangent, tangent, load.normalForce);  // z: the object's normal
+    const SimTK::Vec6 stiffness = grasp::calcStiffnessForBound(part.getStiffness(), loads, load.armRadius, penetrationBound_);
+    SimTK::Vec6 damping = part.getDamping();
+    for (int k = 0; k < 6; ++k) damping[k] *= std::sqrt(stiffness[k] / part.getStiffness()[k]);
     part.setStiffness(state, stiffness, damping);
 }
 

@@ -88,5 +88,21 @@ TEST(LimitedBushingLaw, RotationVectorRateMatchesBodyAngularVelocity) {
     }
 }
 
+// The worst displacement of a point at the lever arm, every axis at |e_k| = L_k / K_k with the
+// signs lined up: |e_p| + arm |e_r| = sqrt(3) (L_t / K_t + arm L_r / K_r) must equal the bound
+// when both parts are stiffened, and stay below it when the minimum is the stiffer one.
+TEST(LimitedBushingLaw, StiffnessForBoundKeepsTheWorstDisplacementWithinTheBound) {
+    const double bound = 1e-4, arm = 0.03;
+    const SimTK::Vec6 loads(0.04, 0.04, 0.04, 2.7, 2.7, 2.7);
+    const SimTK::Vec6 soft(1, 1, 1, 10, 10, 10);
+    const SimTK::Vec6 K = calcStiffnessForBound(soft, loads, arm, bound);
+    const double worst = std::sqrt(3.0) * (loads[3] / K[3] + arm * loads[0] / K[0]);
+    EXPECT_NEAR(worst, bound, 1e-12 * bound);
+    EXPECT_NEAR(K[3], 2 * std::sqrt(3.0) * 2.7 / bound, 1e-9 * K[3]);
+
+    const SimTK::Vec6 stiff(1e9, 1e9, 1e9, 1e9, 1e9, 1e9);
+    EXPECT_EQ(calcStiffnessForBound(stiff, loads, arm, bound), stiff);
+}
+
 }  // namespace
 }  // namespace graspsim::grasp

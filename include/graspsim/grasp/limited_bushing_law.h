@@ -24,6 +24,13 @@ double calcSlipFraction(double stiffness, double limit, double onsetWidth, doubl
 /// (1 - s) r.
 double calcAxisForce(double stiffness, double damping, double limit, double e, double edot);
 
+/// Stiffness per axis for which loads up to `loads` (N m on rotations 0-2, N on translations 3-5)
+/// move a point at `leverArm` (m) from the frame origin by at most `bound` (m): each of the two
+/// parts, |e_p| <= sqrt(3) L_t / K_t and leverArm |e_r| <= sqrt(3) leverArm L_r / K_r, gets half
+/// of it, so K_t >= 2 sqrt(3) L_t / bound and K_r >= 2 sqrt(3) leverArm L_r / bound; never below
+/// `minimum` (N m/rad, N/m).
+SimTK::Vec6 calcStiffnessForBound(const SimTK::Vec6& minimum, const SimTK::Vec6& loads, double leverArm, double bound);
+
 /// Rotation vector theta = angle * axis of R (angle in [0, pi]), rad.
 SimTK::Vec3 calcRotationVector(const SimTK::Rotation& R);
 

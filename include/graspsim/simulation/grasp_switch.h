@@ -125,6 +125,7 @@ private:
     void checkRelease(SimTK::State& state) const;
     bool isFullContact(const SimTK::State& state) const;
     bool isSticking(const SimTK::State& state) const;
+    double calcQualityOf(const SimTK::State& state, const std::vector<contact::ContactReport>& reports) const;
     void engage(SimTK::State& state, double quality) const;
     void placeConstraintFrames(SimTK::State& state, const SimTK::Vec3& p_GC) const;
     void enableConstraint(SimTK::State& state, const SimTK::Vec6& limits, double leverArm) const;
