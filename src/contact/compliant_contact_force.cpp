@@ -194,13 +194,7 @@ private:
     }
 
     ContactReport makeReport(int i, const ContactPoint& contact, const ContactForce& force) const {
-        const ContactPair& pair = pairs_[i].pair;
-        ContactReport report;
-        report.pairIndex = i;
-        report.bodyA = pair.a.bodyName;
-        report.bodyB = pair.b.bodyName;
-        report.shapeA = pair.a.shapeName;
-        report.shapeB = pair.b.shapeName;
+        ContactReport report = makePairReport(pairs_[i].pair, i);
         report.p_G = contact.p_G;
         report.n_G = contact.n_G;
         report.depth = contact.depth;
@@ -261,6 +255,16 @@ void CompliantContactForce::setPairsEnabled(SimTK::State& state,
     for (int i : pairIndices) checkPairIndex(i);
     EnabledFlags& flags = asContactImpl(getImplementation()).updEnabledFlags(state);
     for (int i : pairIndices) flags[i] = enabled;
+}
+
+ContactReport makePairReport(const ContactPair& pair, int pairIndex) {
+    ContactReport report;
+    report.pairIndex = pairIndex;
+    report.bodyA = pair.a.bodyName;
+    report.bodyB = pair.b.bodyName;
+    report.shapeA = pair.a.shapeName;
+    report.shapeB = pair.b.shapeName;
+    return report;
 }
 
 std::vector<ContactReport> CompliantContactForce::findContactReports(const SimTK::State& state,

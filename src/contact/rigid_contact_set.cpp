@@ -83,12 +83,7 @@ ContactReport RigidContactSet::makeReport(const SimTK::State& state, int k, cons
     const RigidContact& contact = getContact(k);
     const ContactPair& pair = pairs_[static_cast<std::size_t>(k)];
     const RigidContactGeometry g = contact.findGeometryInGround(state);
-    ContactReport r;
-    r.pairIndex = pairIndices_[static_cast<std::size_t>(k)];
-    r.bodyA = pair.a.bodyName;
-    r.bodyB = pair.b.bodyName;
-    r.shapeA = pair.a.shapeName;
-    r.shapeB = pair.b.shapeName;
+    ContactReport r = makePairReport(pair, pairIndices_[static_cast<std::size_t>(k)]);
     r.p_G = g.p_F;
     r.n_G = g.n_F;
     r.depth = -g.separation;

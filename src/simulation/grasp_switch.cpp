@@ -149,9 +149,7 @@ double GraspSwitch::calcEngagedQuality(const SimTK::State& state) const {
     return calcQualityOf(state, scene_.getContacts().findContactReports(state, allPairs(scene_.getContacts())));
 }
 
-bool GraspSwitch::isFullContact(const SimTK::State& state) const {
-    scene_.getSystem().realize(state, SimTK::Stage::Velocity);
-    const std::vector<contact::ContactReport> reports = scene_.getContacts().findContactReports(state);
+bool GraspSwitch::isFullContact(const std::vector<contact::ContactReport>& reports) const {
     return std::all_of(goalBodies_.begin(), goalBodies_.end(), [&](const std::string& body) {
         return std::any_of(reports.begin(), reports.end(), [&](const contact::ContactReport& c) { return c.bodyA == body; });
     });
@@ -161,32 +159,30 @@ bool GraspSwitch::isFullContact(const SimTK::State& state) const {
 // regularized friction a contact inside its cone creeps slower than the transition velocity, one
 // at its limit slides faster. Without this, an object already slipping out (phone-pinch f1 after a
 // release) was re-engaged and dragged through the locked fingertips.
-bool GraspSwitch::isSticking(const SimTK::State& state) const {
-    if (multi_) return multi_->isSticking(state);
-    scene_.getSystem().realize(state, SimTK::Stage::Velocity);
+bool GraspSwitch::isSticking(const std::vector<contact::ContactReport>& reports) const {
+    if (multi_) return multi_->isSticking(reports);
     const double limit = scene_.getScenario().contact.transitionVelocity;
-    const std::vector<contact::ContactReport> reports = scene_.getContacts().findContactReports(state);
     return std::all_of(reports.begin(), reports.end(),
                        [&](const contact::ContactReport& c) { return c.slipVelocity_G.norm() < limit; });
 }
 
+// One set of contact reports serves every test of the check and the engagement itself.
 void GraspSwitch::checkEngage(SimTK::State& state) const {
-    if (!isFullContact(state)) return;
-    const double q = calcQuality(state);
+    scene_.getSystem().realize(state, SimTK::Stage::Velocity);
+    const std::vector<contact::ContactReport> reports = scene_.getContacts().findContactReports(state);
+    if (!isFullContact(reports)) return;
+    const double q = calcQualityOf(state, reports);
     if (qThreshold_ == 0) {
         // Automatic Q_Th from the first full-contact check once the grasp has settled.
         if (state.getTime() < scene_.getScenario().simulation.settleTime - 1e-12) return;
         qThreshold_ = options_.autoThresholdFraction * q;
         if (options_.qMinimum == 0) qMinimum_ = options_.hysteresisFraction * qThreshold_;
     }
-    if (!isSticking(state)) return;
-    if (q > 0 && q >= qThreshold_) engage(state, q);
+    if (!isSticking(reports)) return;
+    if (q > 0 && q >= qThreshold_) engage(state, q, reports);
 }
 
-void GraspSwitch::engage(SimTK::State& state, double quality) const {
-    const SimTK::MultibodySystem& system = scene_.getSystem();
-    system.realize(state, SimTK::Stage::Velocity);
-    const std::vector<contact::ContactReport> reports = scene_.getContacts().findContactReports(state);
+void GraspSwitch::engage(SimTK::State& state, double quality, const std::vector<contact::ContactReport>& reports) const {
     tracker_.capture(state, reports);  // penetration, for both attachments; Q tracking is merged's
     if (multi_) {
         const std::string limitsText = multi_->engage(state, reports);

@@ -105,10 +105,9 @@ int MultiAttachmentSwitch::findFinger(const std::string& body) const {
     return -1;
 }
 
-bool MultiAttachmentSwitch::isSticking(const SimTK::State& state) const {
-    scene_.getSystem().realize(state, SimTK::Stage::Velocity);
+bool MultiAttachmentSwitch::isSticking(const std::vector<contact::ContactReport>& reports) const {
     const double limit = scene_.getScenario().contact.transitionVelocity;
-    for (const contact::ContactReport& c : scene_.getContacts().findContactReports(state)) {
+    for (const contact::ContactReport& c : reports) {
         if (findFinger(c.bodyA) >= 0 && !(c.slipVelocity_G.norm() < limit)) return false;
     }
     return true;

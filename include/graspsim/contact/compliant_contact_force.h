@@ -44,6 +44,10 @@ struct ContactReport {
     SimTK::Vec3 frictionForce_G{0, 0, 0};  ///< f_t on body b, in Ground (N); a gets -f_t
 };
 
+/// A report naming `pair` (index, bodies, shapes) with every measured field still zero: the
+/// start of each contact model's reports.
+ContactReport makePairReport(const ContactPair& pair, int pairIndex);
+
 /// The compliant contact force element (a Simbody Force::Custom handle; copies refer to the
 /// same element, and the element itself belongs to the GeneralForceSubsystem).
 ///

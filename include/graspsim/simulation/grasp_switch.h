@@ -123,10 +123,10 @@ public:
 private:
     void checkEngage(SimTK::State& state) const;
     void checkRelease(SimTK::State& state) const;
-    bool isFullContact(const SimTK::State& state) const;
-    bool isSticking(const SimTK::State& state) const;
+    bool isFullContact(const std::vector<contact::ContactReport>& reports) const;
+    bool isSticking(const std::vector<contact::ContactReport>& reports) const;
     double calcQualityOf(const SimTK::State& state, const std::vector<contact::ContactReport>& reports) const;
-    void engage(SimTK::State& state, double quality) const;
+    void engage(SimTK::State& state, double quality, const std::vector<contact::ContactReport>& reports) const;
     void placeConstraintFrames(SimTK::State& state, const SimTK::Vec3& p_GC) const;
     void enableConstraint(SimTK::State& state, const SimTK::Vec6& limits, double leverArm) const;
     void release(SimTK::State& state, double quality, const std::string& reason) const;

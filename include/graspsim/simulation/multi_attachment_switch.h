@@ -67,8 +67,8 @@ public:
     /// Whether every goal finger's contacts stick: slip speed below the scenario's friction transition
     /// velocity (its own threshold for "sticking"). Multi engages only then: each part is a sticking
     /// contact, and attaching one that slides (e.g. right after a release, the object falling) would
-    /// freeze the slide. Needs Stage::Velocity.
-    bool isSticking(const SimTK::State& state) const;
+    /// freeze the slide. `reports`: the contacts of the state to judge.
+    bool isSticking(const std::vector<contact::ContactReport>& reports) const;
     /// Whether any finger is attached in `state`.
     bool isEngaged(const SimTK::State& state) const;
     /// Steps (a), (b), (d); returns the limits, per finger, as text for the engage event.
