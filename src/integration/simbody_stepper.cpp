@@ -1,6 +1,5 @@
 #include "graspsim/integration/simbody_stepper.h"
 
-#include "graspsim/io/filtered_stderr.h"
 
 namespace graspsim::integration {
 
@@ -26,11 +25,15 @@ void SimbodyCpodesStepper::initialize(const SimTK::State& initial) {
     initialized_ = true;
 }
 
-// CPodes prints its own error block to stderr when it gives up, before the exception that the
-// caller turns into graspsim's one-line message; keep it off the terminal.
 void SimbodyCpodesStepper::stepTo(double time) {
-    io::FilteredStderr quiet({"[CPODES ERROR]", "[CPODES WARNING]"});
-    stepper_->stepTo(time);
+    if (!quiet_) quiet_ = std::make_unique<io::FilteredStderr>(std::vector<std::string>{"[CPODES ERROR]", "[CPODES WARNING]"});
+    try {
+        stepper_->stepTo(time);
+    } catch (...) {
+        quiet_.reset();  // stderr back before the caller reports the failure
+        throw;
+    }
+    quiet_->forward();
 }
 
 void SimbodyCpodesStepper::addCurrentCountsTo(IntegrationStatistics& s) const {

@@ -40,6 +40,15 @@ std::string readAll(int fd) {
     return text;
 }
 
+// std::cerr cannot be used while it goes to the scratch file.
+void writeAll(int fd, const std::string& text) {
+    for (std::size_t done = 0; done < text.size();) {
+        const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+        if (n <= 0) return;
+        done += static_cast<std::size_t>(n);
+    }
+}
+
 }  // namespace
 
 std::string filterBlocks(const std::string& text, const std::vector<std::string>& dropPrefixes, std::string& dropped) {
@@ -77,6 +86,22 @@ FilteredStderr::FilteredStderr(std::vector<std::string> dropPrefixes) : dropPref
 }
 
 FilteredStderr::~FilteredStderr() { release(); }
+
+void FilteredStderr::forward() {
+    if (saved_ < 0) return;
+    std::cerr.flush();
+    std::fflush(stderr);
+    // fd 2 shares the scratch file's offset: a non-zero offset means something was written.
+    if (::lseek(capture_, 0, SEEK_CUR) <= 0) return;
+    const std::string kept = filterBlocks(readAll(capture_), dropPrefixes_, dropped_);
+    if (::ftruncate(capture_, 0) != 0 || ::lseek(capture_, 0, SEEK_SET) < 0) {
+        // The scratch file cannot be reused: stop filtering rather than lose or repeat text.
+        ::dup2(saved_, 2);
+        ::close(saved_);
+        saved_ = capture_ = -1;
+    }
+    writeAll(saved_ >= 0 ? saved_ : 2, kept);
+}
 
 void FilteredStderr::release() {
     if (saved_ < 0) return;

@@ -42,6 +42,7 @@ class Recorder {
 public:
     Recorder(const GraspScene& scene, SimulationResult& result) : scene_(scene), result_(result) {
         result_.jointNames = scene.getModel().getJointNames();
+        for (const std::string& j : result_.jointNames) jointQ_.push_back(scene.getModel().getJointQIndex(j));
         qualityOptions_.mu = scene.getScenario().contact.staticFriction;
     }
 
@@ -52,9 +53,8 @@ public:
         const SimTK::Transform& X_GO = scene_.getObject().getBodyTransform(s);
         sample.p_GO = X_GO.p();
         sample.q_GO = X_GO.R().convertRotationToQuaternion();
-        for (const std::string& j : result_.jointNames) sample.jointAngles.push_back(scene_.getModel().getJointPosition(s, j));
+        for (const SimTK::QIndex q : jointQ_) sample.jointAngles.push_back(s.getQ()[q]);
         ContactSample contacts{s.getTime(), scene_.findContactReports(s)};
-        sample.graspQuality = calcContactGraspQuality(contacts.contacts, X_GO, qualityOptions_);
         const GraspSwitch* grasp = scene_.getGraspSwitch();
         if (grasp && grasp->isEngaged(s)) {
             // No contacts are solved while engaged: record the estimate the release test uses.
@@ -62,6 +62,8 @@ public:
             const double q = sample.graspQuality;
             double& lowest = result_.summary.minEngagedGraspQuality;
             lowest = engagedSamples_++ == 0 ? q : std::min(lowest, q);
+        } else {
+            sample.graspQuality = calcContactGraspQuality(contacts.contacts, X_GO, qualityOptions_);
         }
         result_.summary.maxGraspQuality = std::max(result_.summary.maxGraspQuality, sample.graspQuality);
         result_.trajectory.push_back(std::move(sample));
@@ -73,6 +75,7 @@ private:
     const GraspScene& scene_;
     SimulationResult& result_;
     grasp::QualityOptions qualityOptions_;  // box friction cone, smallest singular value
+    std::vector<SimTK::QIndex> jointQ_;     // per joint name, looked up once: a sample is taken every 10 ms
     long engagedSamples_ = 0;
 };
 

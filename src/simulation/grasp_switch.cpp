@@ -141,12 +141,28 @@ double GraspSwitch::calcQualityOf(const SimTK::State& state, const std::vector<c
     return calcContactGraspQuality(reports, scene_.getObject().getBodyTransform(state), quality);
 }
 
+bool GraspSwitch::QualityMemo::isFor(const SimTK::State& state) const {
+    const SimTK::Vector& stateY = state.getY();
+    if (time != state.getTime() || y.size() != stateY.size()) return false;
+    for (int i = 0; i < y.size(); ++i) {
+        if (y[i] != stateY[i]) return false;
+    }
+    return true;
+}
+
 double GraspSwitch::calcEngagedQuality(const SimTK::State& state) const {
-    if (!multi_) return tracker_.calcQuality(state);
-    // Multi: the fingers move on their own and the palm-fixed tracker does not apply; Q is that of
-    // the contacts every pair would produce in `state`, switched on or not.
-    scene_.getSystem().realize(state, SimTK::Stage::Velocity);
-    return calcQualityOf(state, scene_.getContacts().findContactReports(state, allPairs(scene_.getContacts())));
+    if (qualityMemo_.isFor(state)) return qualityMemo_.quality;
+    double q = 0;
+    if (!multi_) {
+        q = tracker_.calcQuality(state);
+    } else {
+        // Multi: the fingers move on their own and the palm-fixed tracker does not apply; Q is that
+        // of the contacts every pair would produce in `state`, switched on or not.
+        scene_.getSystem().realize(state, SimTK::Stage::Velocity);
+        q = calcQualityOf(state, scene_.getContacts().findContactReports(state, allPairs(scene_.getContacts())));
+    }
+    qualityMemo_ = {state.getTime(), state.getY(), q};
+    return q;
 }
 
 bool GraspSwitch::isFullContact(const std::vector<contact::ContactReport>& reports) const {
@@ -183,6 +199,7 @@ void GraspSwitch::checkEngage(SimTK::State& state) const {
 }
 
 void GraspSwitch::engage(SimTK::State& state, double quality, const std::vector<contact::ContactReport>& reports) const {
+    qualityMemo_ = {};
     tracker_.capture(state, reports);  // penetration, for both attachments; Q tracking is merged's
     if (multi_) {
         const std::string limitsText = multi_->engage(state, reports);
@@ -239,6 +256,7 @@ void GraspSwitch::enableConstraint(SimTK::State& state, const SimTK::Vec6& limit
 }
 
 void GraspSwitch::checkRelease(SimTK::State& state) const {
+    const std::size_t eventsBefore = events_.size();
     double q = 0;
     std::string reason;
     tracker_.measurePenetration(state);
@@ -251,6 +269,7 @@ void GraspSwitch::checkRelease(SimTK::State& state) const {
         reason = describeRelease(state, q);
     }
     if (!reason.empty()) release(state, q, reason);
+    if (events_.size() != eventsBefore) qualityMemo_ = {};  // a detach or the release changed the state
 }
 
 // Empty while the approximation still holds; otherwise the first reason to release, with numbers.

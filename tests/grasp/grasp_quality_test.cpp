@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 
 using namespace graspsim;
 using namespace graspsim::grasp;
@@ -183,6 +184,28 @@ TEST(GraspQuality, DispatchesToTheSelectedMetric) {
     options.metric = QualityMetric::FerrariCanny;
     EXPECT_EQ(calcGraspQuality(contacts, {}, options), calcFerrariCanny(G));
     EXPECT_GT(calcFerrariCanny(G), 0);
+}
+
+// Oracle: Eigen's Jacobi SVD of the same matrix. Random grasp-like matrices from well conditioned
+// to singular, so that both the Gram-matrix fast path and the Jacobi fallback are exercised.
+TEST(MinSingularValue, AgreesWithTheJacobiSvdFromWellConditionedToSingular) {
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> entry(-1, 1);
+    double worst = 0;
+    for (int trial = 0; trial < 4000; ++trial) {
+        const int columns = 6 + trial % 60;
+        Eigen::MatrixXd G(6, columns);
+        for (Eigen::Index i = 0; i < G.size(); ++i) G.data()[i] = entry(random);
+        G.row(trial % 6) *= std::pow(10.0, -8.0 * (trial % 9) / 8.0);  // sigma_6 / sigma_1 from ~1 to ~1e-8
+        if (trial % 5 == 0) G.row((trial + 1) % 6) = 1.001 * G.row(trial % 6) + 1e-3 * G.row((trial + 2) % 6);  // near-double sigma_6
+        if (trial % 11 == 0) G.row((trial + 1) % 6) = G.row(trial % 6);   // rank 5: sigma_6 = 0 up to round-off
+        const double jacobi = Eigen::JacobiSVD<Eigen::MatrixXd>(G).singularValues()(5);
+        const double q = calcMinSingularValue(G);
+        const double scale = Eigen::JacobiSVD<Eigen::MatrixXd>(G).singularValues()(0);
+        EXPECT_NEAR(q, jacobi, 1e-12 * jacobi + 1e-15 * scale) << "trial " << trial;
+        if (jacobi > 1e-6 * scale) worst = std::max(worst, std::abs(q - jacobi) / jacobi);
+    }
+    EXPECT_LT(worst, 1e-12);
 }
 
 TEST(MinSingularValue, RejectsAMatrixThatIsNotSixRows) {

@@ -45,5 +45,28 @@ TEST(FilteredStderr, PassesOnWhatIsKeptWhenReleased) {
     EXPECT_EQ(dropped, kCpodesBlock);
 }
 
+// A long-lived filter (as the CPodes stepper holds one): forward() passes each batch on at once,
+// without its dropped blocks, and the scratch file starts empty for the next batch.
+TEST(FilteredStderr, ForwardPassesOnEachBatchAndStaysRedirected) {
+#ifdef GRASPSIM_SANITIZED
+    GTEST_SKIP() << "sanitizer builds leave stderr alone (io/filtered_stderr.h)";
+#endif
+    testing::internal::CaptureStderr();
+    std::string dropped;
+    {
+        FilteredStderr filter({"[CPODES ERROR]"});
+        std::fprintf(stderr, "first\n\n");
+        std::fprintf(stderr, "%s", kCpodesBlock.c_str());
+        filter.forward();
+        filter.forward();  // nothing new: nothing passed on twice
+        std::fprintf(stderr, "%s", kCpodesBlock.c_str());
+        std::fprintf(stderr, "second\n");
+        filter.forward();
+        dropped = filter.getDropped();
+    }
+    EXPECT_EQ(testing::internal::GetCapturedStderr(), "first\n\nsecond\n");
+    EXPECT_EQ(dropped, kCpodesBlock + kCpodesBlock);
+}
+
 }  // namespace
 }  // namespace graspsim::io

@@ -5,6 +5,7 @@
 /// finger joints are stiff (µs time constants).
 
 #include "graspsim/integration/stepper.h"
+#include "graspsim/io/filtered_stderr.h"
 
 #include <simbody/Simbody.h>
 
@@ -17,6 +18,12 @@ namespace graspsim::integration {
 /// NEW integrator: Simbody 3.7's CPodes::init allocates the integrator's vectors anew on every
 /// call without freeing those of the previous one (CPodeInit -> cpAllocVectors), which leaked
 /// about 8 kB per restart in parameter sweeps (tests/integration/simbody_stepper_test.cpp).
+///
+/// CPodes prints its own "[CPODES ERROR]" block to stderr when it gives up, before the exception
+/// that graspsim turns into one line; stepTo() keeps it off the terminal with an io::FilteredStderr
+/// that lives from the first stepTo() until the stepper is destroyed or a step throws (setting one
+/// up per step cost 1-2 % of an engaged run). Anything else written to stderr meanwhile is passed on
+/// at the end of the next stepTo().
 class SimbodyCpodesStepper : public Stepper {
 public:
     /// `accuracy`: Simbody's integrator accuracy (relative, also the constraint tolerance).
@@ -40,6 +47,7 @@ private:
     std::unique_ptr<SimTK::TimeStepper> stepper_;  // refers to *integrator_
     IntegrationStatistics totals_;  // of the runs before the last initialize()
     bool initialized_ = false;
+    std::unique_ptr<io::FilteredStderr> quiet_;  // see the class comment
 };
 
 }  // namespace graspsim::integration

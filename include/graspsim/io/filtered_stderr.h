@@ -27,6 +27,10 @@ public:
     FilteredStderr(const FilteredStderr&) = delete;
     FilteredStderr& operator=(const FilteredStderr&) = delete;
 
+    /// Passes on the kept text written so far and empties the scratch file, leaving fd 2
+    /// redirected: a long-lived FilteredStderr calls it after each call that may print, at the
+    /// cost of one system call when nothing was written.
+    void forward();
     /// Restores fd 2 now and passes the kept text on (the destructor does it otherwise).
     void release();
     /// The dropped blocks so far, joined with line breaks.

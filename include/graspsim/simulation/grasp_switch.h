@@ -116,6 +116,8 @@ public:
     /// (EngagedGraspTracker::calcQuality; realizes `state` to Stage::Acceleration). Multi: the
     /// quality of the contacts every pair would produce in `state`, switched on or not
     /// (CompliantContactForce::findContactReports of a list), since the fingers move on their own.
+    /// Asked twice for the same state (the switch's check, then the sample recorded at that
+    /// instant), the second call returns the first's value.
     double calcEngagedQuality(const SimTK::State& state) const;
     /// The contacts tracked while engaged and the penetration measured so far.
     const EngagedGraspTracker& getTracker() const { return tracker_; }
@@ -144,6 +146,15 @@ private:
     mutable SimTK::Transform X_HO_engaged_;  // object pose in the palm frame at engagement
     mutable std::vector<GraspEvent> events_;
     mutable EngagedGraspTracker tracker_;
+    // The last engaged Q and the state it was computed for (time and Y; the discrete state changes
+    // only in engage, detach and release, which forget it).
+    struct QualityMemo {
+        double time = -1;
+        SimTK::Vector y;
+        double quality = 0;
+        bool isFor(const SimTK::State& state) const;
+    };
+    mutable QualityMemo qualityMemo_;
 };
 
 }  // namespace graspsim::simulation
