@@ -202,11 +202,29 @@ void appendBoxHalfSpaceContacts(const ContactShape& box, const SimTK::Transform&
     }
 }
 
+namespace {
+
+// Whether a face normal of Q (box q, with p posed at X_QP) separates the two boxes: along it the
+// centres lie farther apart than q's half-length plus p's half-extent. Separated boxes do not
+// overlap, so they have no contact; a cheap early exit before the vertex and edge passes.
+bool isSeparatedByFaceOf(const ContactShape& q, const ContactShape& p, const SimTK::Transform& X_QP) {
+    const SimTK::Mat33& R = X_QP.R().asMat33();
+    for (int i = 0; i < 3; ++i) {
+        const double extent = std::abs(R(i, 0)) * p.halfLengths[0] + std::abs(R(i, 1)) * p.halfLengths[1] +
+                              std::abs(R(i, 2)) * p.halfLengths[2];
+        if (std::abs(X_QP.p()[i]) >= q.halfLengths[i] + extent) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
 void appendBoxBoxContacts(const ContactShape& a, const SimTK::Transform& X_GA,
                           const ContactShape& b, const SimTK::Transform& X_GB,
                           std::vector<ContactPoint>& contacts) {
     if ((X_GB.p() - X_GA.p()).norm() >= a.calcBoundingRadius() + b.calcBoundingRadius()) return;
     const SimTK::Transform X_BA = ~X_GB * X_GA;
+    if (isSeparatedByFaceOf(b, a, X_BA) || isSeparatedByFaceOf(a, b, ~X_BA)) return;
     const PenetrationPass aIntoB{a, b, X_BA, X_GB, -1};
     const PenetrationPass bIntoA{b, a, ~X_BA, X_GA, +1};
     aIntoB.appendVertexContacts(contacts);

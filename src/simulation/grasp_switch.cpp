@@ -144,6 +144,9 @@ double GraspSwitch::calcQualityOf(const SimTK::State& state, const std::vector<c
 bool GraspSwitch::QualityMemo::isFor(const SimTK::State& state) const {
     const SimTK::Vector& stateY = state.getY();
     if (time != state.getTime() || y.size() != stateY.size()) return false;
+    if (y.hasContiguousData() && stateY.hasContiguousData()) {
+        return std::equal(&y[0], &y[0] + y.size(), &stateY[0]);  // element access costs a call each
+    }
     for (int i = 0; i < y.size(); ++i) {
         if (y[i] != stateY[i]) return false;
     }
@@ -222,7 +225,7 @@ void GraspSwitch::engage(SimTK::State& state, double quality, const std::vector<
 void GraspSwitch::placeConstraintFrames(SimTK::State& state, const SimTK::Vec3& p_GC) const {
     const SimTK::Transform& X_GO = scene_.getObject().getBodyTransform(state);
     const SimTK::Transform& X_GH = scene_.getPalm().getBodyTransform(state);
-    const SimTK::Transform X_OM(SimTK::Rotation(), ~X_GO * p_GC);
+    const SimTK::Transform X_OM(~X_GO * p_GC);  // O's orientation
     const SimTK::Transform X_HF = ~X_GH * X_GO * X_OM;
     if (const grasp::LimitedWeld* weld = scene_.getWeld()) {
         weld->setFrames(state, X_HF, X_OM);

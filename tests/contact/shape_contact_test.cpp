@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -233,6 +234,53 @@ TEST(ShapeContact, BoxOnBoxFaceContactHasFourVertexContacts) {
         expectContact(c, c.p_G, Vec3(0, 0, -1), 0.001, 0.004);
     }
     expectMirrored(small, X_GA, big, Transform());
+}
+
+// The separating-axis early exit must never hide an overlap. Oracle: a vertex of one box strictly
+// inside the other (by the box inequalities, independent of the contact code) means the boxes
+// overlap, so there must be contacts; and boxes whose bounding spheres overlap but that a face
+// plane separates have none.
+TEST(ShapeContact, BoxPairsWithAVertexInsideAlwaysHaveContactsAndSeparatedPairsNone) {
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> unit(-1, 1), size(0.005, 0.04);
+    int overlapping = 0, separated = 0;
+    for (int trial = 0; trial < 5000; ++trial) {
+        const ContactShape a = ContactShape::box(Vec3(size(random), size(random), size(random)));
+        const ContactShape b = ContactShape::box(Vec3(size(random), size(random), size(random)));
+        const Rotation R_GA(Vec3(unit(random), unit(random), unit(random)).norm() * SimTK::Pi,
+                            UnitVec3(unit(random), unit(random), unit(random) + 1e-3));
+        const Transform X_GA(R_GA, 0.06 * Vec3(unit(random), unit(random), unit(random)));
+        const std::vector<ContactPoint> contacts = findContacts(a, X_GA, b, Transform());
+        bool vertexInside = false, faceSeparates = false;
+        for (int i = 0; i < 8; ++i) {
+            const Vec3 v = X_GA * Vec3(i & 1 ? a.halfLengths[0] : -a.halfLengths[0],
+                                       i & 2 ? a.halfLengths[1] : -a.halfLengths[1],
+                                       i & 4 ? a.halfLengths[2] : -a.halfLengths[2]);
+            vertexInside = vertexInside || (std::abs(v[0]) < b.halfLengths[0] && std::abs(v[1]) < b.halfLengths[1] &&
+                                            std::abs(v[2]) < b.halfLengths[2]);
+        }
+        for (int axis = 0; axis < 3; ++axis) {
+            bool allAbove = true, allBelow = true;  // every vertex of a beyond one face plane of b
+            for (int i = 0; i < 8; ++i) {
+                const Vec3 v = X_GA * Vec3(i & 1 ? a.halfLengths[0] : -a.halfLengths[0],
+                                           i & 2 ? a.halfLengths[1] : -a.halfLengths[1],
+                                           i & 4 ? a.halfLengths[2] : -a.halfLengths[2]);
+                allAbove = allAbove && v[axis] > b.halfLengths[axis];
+                allBelow = allBelow && v[axis] < -b.halfLengths[axis];
+            }
+            faceSeparates = faceSeparates || allAbove || allBelow;
+        }
+        if (vertexInside) {
+            ++overlapping;
+            EXPECT_FALSE(contacts.empty()) << "trial " << trial << ": a vertex of A is inside B";
+        }
+        if (faceSeparates) {
+            ++separated;
+            EXPECT_TRUE(contacts.empty()) << "trial " << trial << ": a face plane of B separates the boxes";
+        }
+    }
+    EXPECT_GT(overlapping, 100);
+    EXPECT_GT(separated, 100);
 }
 
 TEST(ShapeContact, BoxEdgeCrossingBoxEdgeGivesOneExactEdgeEdgeContact) {

@@ -29,8 +29,8 @@ struct ApproxCost {
     std::string constraint;              ///< "bushing" or "weld"
     double stepUs = 0;                   ///< µs per integrator step during the first engagement
     double wallPerSimSecond = 0;         ///< wall s per simulated s, first simulated second engaged
-    double holdWallPerSimSecond = 0;     ///< wall s per simulated s, the 4 s of hold after that
-    double floorHoldWallPerSimSecond = 0;  ///< the floor state (below) integrated for 4 s, wall s per simulated s
+    double holdWallPerSimSecond = 0;     ///< wall s per simulated s over the 4 s of hold after that (median of 1-s windows)
+    double floorHoldWallPerSimSecond = 0;  ///< the floor state (below) integrated for 4 s, wall s per simulated s (median of 1-s windows)
     double engageTime = -1;              ///< s; < 0 if it never engaged (then no figures)
     double fullRealizeUs = 0;            ///< one dynamics evaluation, full contact just before engaging (µs)
     double engagedRealizeUs = 0;         ///< one dynamics evaluation, engaged (µs)
