@@ -45,12 +45,8 @@ void EngagedGraspTracker::capture(const SimTK::State& state, const std::vector<c
 // mass), where the grasp quality takes moments.
 SimTK::SpatialVec EngagedGraspTracker::findConstraintWrench(const SimTK::State& state) const {
     // The weld's reaction is a Lagrange multiplier (Acceleration); the bushing's is a force of
-    // the state (Velocity), and a forward-dynamics solve per check would be wasted. Inside the
-    // release witness (evaluated while the System realizes Acceleration) the matter subsystem
-    // already has its multipliers but the System stage is still Dynamics: realizing the System
-    // again there would recurse, so the matter subsystem's stage decides.
-    const SimTK::Stage needed = scene_.getWeld() ? SimTK::Stage::Acceleration : SimTK::Stage::Velocity;
-    if (scene_.getModel().getMatter().getStage(state) < needed) scene_.getSystem().realize(state, needed);
+    // the state (Velocity), and a forward-dynamics solve per check would be wasted.
+    scene_.getSystem().realize(state, scene_.getWeld() ? SimTK::Stage::Acceleration : SimTK::Stage::Velocity);
     const SimTK::Transform& X_GO = scene_.getObject().getBodyTransform(state);
     SimTK::SpatialVec W_M;
     SimTK::Vec3 p_OM;

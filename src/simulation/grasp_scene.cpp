@@ -233,7 +233,6 @@ void GraspScene::addController(const SimulationOptions& options) {
     ownedController_.reset(controller_);
     switch_ = new GraspSwitch(*this, *controller_, options.approx, ikInterval);
     model_.updSystem().addEventHandler(switch_);
-    for (SimTK::TriggeredEventHandler* witness : switch_->makeReleaseWitnesses()) model_.updSystem().addEventHandler(witness);
 }
 
 SimTK::State GraspScene::makeInitialState() {

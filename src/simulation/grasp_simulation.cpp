@@ -57,7 +57,6 @@ public:
         ContactSample contacts{s.getTime(), scene_.findContactReports(s)};
         const GraspSwitch* grasp = scene_.getGraspSwitch();
         if (grasp && grasp->isEngaged(s)) {
-            grasp->trackPenetration(s);
             // No contacts are solved while engaged: record the estimate the release test uses.
             sample.graspQuality = grasp->calcEngagedQuality(s);
             const double q = sample.graspQuality;

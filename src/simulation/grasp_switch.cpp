@@ -114,57 +114,6 @@ GraspSwitch::GraspSwitch(const GraspScene& scene, const control::GraspController
 
 GraspSwitch::~GraspSwitch() = default;
 
-// The release test as witnesses (see the header): the integrator localizes where a margin falls
-// through zero, and the handler releases (or detaches) there. Q's margin and the hold margins are
-// separate witnesses: Q's starts below zero while the merged bushing takes up the load after
-// engagement, and inside one minimum it would hide a hold margin falling meanwhile.
-class GraspSwitch::ReleaseWitness : public SimTK::TriggeredEventHandler {
-public:
-    ReleaseWitness(const GraspSwitch& grasp, bool quality)
-        : SimTK::TriggeredEventHandler(SimTK::Stage::Acceleration), grasp_(grasp), quality_(quality) {
-        getTriggerInfo().setTriggerOnRisingSignTransition(false);
-        getTriggerInfo().setTriggerOnFallingSignTransition(true);
-    }
-
-    SimTK::Real getValue(const SimTK::State& state) const override {
-        if (!grasp_.isEngaged(state)) return 1;
-        return quality_ ? grasp_.calcEngagedQuality(state) - grasp_.qMinimum_ : grasp_.calcHoldMargin(state);
-    }
-
-    void handleEvent(SimTK::State& state, SimTK::Real, bool& shouldTerminate) const override {
-        shouldTerminate = false;
-        if (grasp_.isEngaged(state)) grasp_.checkRelease(state);
-    }
-
-private:
-    const GraspSwitch& grasp_;
-    bool quality_;
-};
-
-std::vector<SimTK::TriggeredEventHandler*> GraspSwitch::makeReleaseWitnesses() const {
-    return {new ReleaseWitness(*this, true), new ReleaseWitness(*this, false)};
-}
-
-SimTK::Real GraspSwitch::getNextEventTime(const SimTK::State& state, bool includeCurrentTime) const {
-    if (isEngaged(state)) return SimTK::Infinity;
-    return SimTK::PeriodicEventHandler::getNextEventTime(state, includeCurrentTime);
-}
-
-// The smallest hold margin, negative exactly when its release (or multi detach) condition holds,
-// so only its sign has a meaning: the slide limit minus the object's slide in the hand (m); the
-// held tolerance minus the farthest fingertip's distance from its goal (m); with multi, per
-// attached finger its pressing force (N), slide margin and goal-distance margin (m).
-double GraspSwitch::calcHoldMargin(const SimTK::State& state) const {
-    if (multi_) return multi_->calcDetachMargin(state);
-    const double slide = options_.releaseSlideDistance - findSlide(state);
-    const double distance = scene_.getScenario().simulation.heldTolerance - scene_.findMaxFingertipGoalDistance(state);
-    return std::min(slide, distance);
-}
-
-void GraspSwitch::trackPenetration(const SimTK::State& state) const {
-    if (isEngaged(state)) tracker_.measurePenetration(state);
-}
-
 bool GraspSwitch::isEngaged(const SimTK::State& state) const {
     if (multi_) return multi_->isEngaged(state);
     if (const grasp::LimitedWeld* weld = scene_.getWeld()) return weld->isEnabled(state);
@@ -249,16 +198,7 @@ void GraspSwitch::checkEngage(SimTK::State& state) const {
         if (options_.qMinimum == 0) qMinimum_ = options_.hysteresisFraction * qThreshold_;
     }
     if (!isSticking(reports)) return;
-    if (!(q > 0 && q >= qThreshold_)) return;
-    // Not at the instant of a release (the witness may release at a check's time): the contacts
-    // just restored still carry the pre-release state, and would re-engage what just failed.
-    if (!events_.empty() && events_.back().kind == "release" && !(state.getTime() > events_.back().time)) return;
-    engage(state, q, reports);
-    // The witness triggers only on a fall through zero: a hold margin already negative at
-    // engagement (say, a fingertip outside the held tolerance) is acted on here. Q's is not: the
-    // merged bushing starts unloaded (its anchor reset where it is), so the Q estimated from its
-    // wrench starts near 0 and rises within milliseconds as the bushing takes the load.
-    if (calcHoldMargin(state) <= 0) checkRelease(state);
+    if (q > 0 && q >= qThreshold_) engage(state, q, reports);
 }
 
 void GraspSwitch::engage(SimTK::State& state, double quality, const std::vector<contact::ContactReport>& reports) const {
@@ -336,15 +276,10 @@ void GraspSwitch::checkRelease(SimTK::State& state) const {
 }
 
 // Empty while the approximation still holds; otherwise the first reason to release, with numbers.
-// How far the object's origin has moved in the palm frame since engagement (m).
-double GraspSwitch::findSlide(const SimTK::State& state) const {
+std::string GraspSwitch::describeRelease(const SimTK::State& state, double quality) const {
     scene_.getSystem().realize(state, SimTK::Stage::Position);
     const SimTK::Transform X_HO = ~scene_.getPalm().getBodyTransform(state) * scene_.getObject().getBodyTransform(state);
-    return (X_HO.p() - X_HO_engaged_.p()).norm();
-}
-
-std::string GraspSwitch::describeRelease(const SimTK::State& state, double quality) const {
-    const double slide = findSlide(state);
+    const double slide = (X_HO.p() - X_HO_engaged_.p()).norm();
     if (slide > options_.releaseSlideDistance) {
         return format("object slid %.6g m in the hand (limit %.6g m)", slide, options_.releaseSlideDistance);
     }

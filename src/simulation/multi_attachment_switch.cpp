@@ -173,37 +173,18 @@ std::string MultiAttachmentSwitch::update(SimTK::State& state, double quality, s
     return format("%.0f finger(s) still attached (at least %.0f needed)", attached, kMinAttachedFingers);
 }
 
-// Needs Stage::Velocity.
-MultiAttachmentSwitch::FingerHold MultiAttachmentSwitch::measureFinger(const SimTK::State& state, int finger) const {
-    const grasp::MultiAttachment& multi = *scene_.getMultiAttachment();
-    const std::size_t k = static_cast<std::size_t>(finger);
-    const SimTK::Vec3 p_GE = scene_.getModel().findEndEffectorLocationInGround(state, scene_.getGoalEndEffectors()[k]);
-    return {multi.findPressingForce(state, finger), multi.findSlide(state, finger),
-            (p_GE - scene_.getObject().getBodyTransform(state) * scene_.getSurfaceGoals()[k]).norm()};
-}
-
-double MultiAttachmentSwitch::calcDetachMargin(const SimTK::State& state) const {
-    const grasp::MultiAttachment& multi = *scene_.getMultiAttachment();
-    scene_.getSystem().realize(state, SimTK::Stage::Velocity);
-    const double tolerance = scene_.getScenario().simulation.heldTolerance;
-    double margin = SimTK::Infinity;
-    for (int i = 0; i < multi.getNumParts(); ++i) {
-        if (!multi.isAttached(state, i)) continue;
-        const FingerHold hold = measureFinger(state, i);
-        margin = std::min({margin, hold.pressing, slideLimit_ - hold.slide, tolerance - hold.goalDistance});
-    }
-    return margin;
-}
-
 // Empty while finger i still holds; needs Stage::Velocity.
 std::string MultiAttachmentSwitch::describeDetach(const SimTK::State& state, int finger) const {
-    const FingerHold hold = measureFinger(state, finger);
-    if (!(hold.pressing > 0)) return format("stopped pressing (normal force %.4g N)", hold.pressing);
-    if (hold.slide > slideLimit_) return format("slid %.4g m on the object (limit %.4g m)", hold.slide, slideLimit_);
+    const grasp::MultiAttachment& multi = *scene_.getMultiAttachment();
+    const double pressing = multi.findPressingForce(state, finger);
+    if (!(pressing > 0)) return format("stopped pressing (normal force %.4g N)", pressing);
+    const double slide = multi.findSlide(state, finger);
+    if (slide > slideLimit_) return format("slid %.4g m on the object (limit %.4g m)", slide, slideLimit_);
+    const std::size_t k = static_cast<std::size_t>(finger);
+    const SimTK::Vec3 p_GE = scene_.getModel().findEndEffectorLocationInGround(state, scene_.getGoalEndEffectors()[k]);
+    const double distance = (p_GE - scene_.getObject().getBodyTransform(state) * scene_.getSurfaceGoals()[k]).norm();
     const double tolerance = scene_.getScenario().simulation.heldTolerance;
-    if (hold.goalDistance > tolerance) {
-        return format("fingertip %.4g m from its goal (held tolerance %.4g m)", hold.goalDistance, tolerance);
-    }
+    if (distance > tolerance) return format("fingertip %.4g m from its goal (held tolerance %.4g m)", distance, tolerance);
     return {};
 }
 

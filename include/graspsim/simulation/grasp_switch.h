@@ -4,7 +4,7 @@
 /// event handler that replaces the finger-object contacts by one friction-limited 6-DOF element
 /// once the grasp is firm, and gives them back when the approximation stops being believable.
 ///
-/// Every `ik_interval` (the IK's own period, so the check costs no extra event) while not engaged:
+/// Every `ik_interval` (the IK's own period, so the check costs no extra event):
 ///  - UNGRASPED (constraint disabled): run the grasp controller's IK update, then, once the object
 ///    has been released, compute the grasp quality Q from the contact reports exactly as the
 ///    recorder does (calcContactGraspQuality, static friction). In full contact (every goal
@@ -40,20 +40,14 @@
 ///     (e) record an "engage" event.
 ///  With ApproxOptions::attach Multi, (c) and (d) are replaced by multi_attachment_switch.h (fingers
 ///  stay free, one friction-limited part per fingertip, fingers detached one by one).
-///  - GRASPED (constraint enabled): the periodic event is off (getNextEventTime() is infinite), so
-///    the integrator takes the engaged model's own steps instead of stopping every ik_interval; IK
-///    is skipped (the fingers are locked, and skipping it is where the approximation saves its
-///    time). The contacts are still tracked without entering the dynamics
-///    (engaged_grasp_tracker.h): their penetration is measured as if the pairs were on (nothing
-///    applied, the state untouched; at every output sample and at each switch), and Q is estimated
-///    from the constraint's reaction wrench distributed over the contacts captured at engagement.
-///    The release test is made of WITNESSES (makeReleaseWitnesses(), triggered event handlers):
-///    Q - Q_M and the smallest hold margin, evaluated at every integrator step and localized by the
-///    integrator when one falls through zero, so Q is watched at every step (the thesis's "every step") and a
-///    release happens where its condition is first met, not at the next check. RELEASE (constraint
-///    off, fingers unlocked, contacts on, "release" event) when the object's centre of mass has
-///    moved more than releaseSlideDistance relative to the palm since engagement, when a fingertip
-///    is farther than the scenario's held tolerance from its goal on the object, or when that Q <
+///  - GRASPED (constraint enabled): IK is skipped (the fingers are locked, and skipping it is where
+///    the approximation saves its time). The contacts are still tracked without entering the
+///    dynamics (engaged_grasp_tracker.h): their penetration is measured as if the pairs were on
+///    (nothing applied, the state untouched), and Q is estimated from the constraint's reaction wrench
+///    distributed over the contacts captured at engagement. RELEASE (constraint off, fingers
+///    unlocked, contacts on, "release" event) when the object's centre of mass has moved more
+///    than releaseSlideDistance relative to the palm since engagement, when a fingertip is
+///    farther than the scenario's held tolerance from its goal on the object, or when that Q <
 ///    Q_M. Nothing at the release changes a velocity (the constraint and the locks are switched
 ///    off, contact comes back as a force), so the object's velocity is continuous; the event
 ///    records the measured jump (GraspEvent::velocityJump) to show it.
@@ -106,19 +100,6 @@ public:
     ~GraspSwitch() override;
 
     void handleEvent(SimTK::State& state, SimTK::Real accuracy, bool& shouldTerminate) const override;
-    /// The periodic time while not engaged; +Infinity while engaged (the release witness watches).
-    SimTK::Real getNextEventTime(const SimTK::State& state, bool includeCurrentTime) const override;
-
-    /// Two new triggered event handlers that release (or, with multi, detach fingers) when Q - Q_M
-    /// (N), or the smallest hold margin, falls through zero: the slide limit minus the object's
-    /// slide in the hand, the held tolerance minus the farthest fingertip's goal distance (m); with
-    /// multi, per attached finger its pressing force (N), slide and goal-distance margins. Each is
-    /// negative exactly when its release condition holds. Add them to the System beside this
-    /// handler, which must outlive them.
-    std::vector<SimTK::TriggeredEventHandler*> makeReleaseWitnesses() const;
-    /// Measures the engaged contacts' penetration in `state` into getTracker()'s statistics
-    /// (nothing while not engaged). Needs Stage::Velocity.
-    void trackPenetration(const SimTK::State& state) const;
 
     /// Whether the approximation is engaged in `state`.
     bool isEngaged(const SimTK::State& state) const;
@@ -142,7 +123,6 @@ public:
     const EngagedGraspTracker& getTracker() const { return tracker_; }
 
 private:
-    class ReleaseWitness;
     void checkEngage(SimTK::State& state) const;
     void checkRelease(SimTK::State& state) const;
     bool isFullContact(const std::vector<contact::ContactReport>& reports) const;
@@ -154,8 +134,6 @@ private:
     void release(SimTK::State& state, double quality, const std::string& reason) const;
     void setFingersMerged(SimTK::State& state, bool merged) const;
     std::string describeRelease(const SimTK::State& state, double quality) const;
-    double findSlide(const SimTK::State& state) const;
-    double calcHoldMargin(const SimTK::State& state) const;
     double findVelocityJump(SimTK::State& state, const SimTK::Vec3& v_before) const;
 
     const GraspScene& scene_;

@@ -78,17 +78,9 @@ public:
     std::string update(SimTK::State& state, double quality, std::vector<GraspEvent>& events) const;
     /// Every part off, every contact pair on.
     void release(SimTK::State& state) const;
-    /// The smallest detach margin over the attached fingers, negative exactly when update() would
-    /// detach one: its pressing force (N), slide limit minus its slide (m), held tolerance minus its
-    /// fingertip's goal distance (m). +Infinity with none attached. Needs Stage::Velocity.
-    double calcDetachMargin(const SimTK::State& state) const;
 
 private:
     int findFinger(const std::string& body) const;
-    struct FingerHold {
-        double pressing = 0, slide = 0, goalDistance = 0;  // N, m, m
-    };
-    FingerHold measureFinger(const SimTK::State& state, int finger) const;
     std::string describeDetach(const SimTK::State& state, int finger) const;
     void stiffenPart(SimTK::State& state, int finger, const grasp::FingerLoad& load, double mu) const;
 
