@@ -81,9 +81,10 @@ double medianWallPerSimSecond(const std::vector<Mark>& marks) {
 }
 
 // The floor over time: the engaged state with the object locked and the constraint off (timeFloor's
-// state), integrated for kHoldSeconds by a CPodes integrator of the run's accuracy, stopping every
-// ik_interval as the switch's checks make the engaged run stop, but with no event handler (the
-// floor has no grasp to check and no goals to track). Wall s per simulated s.
+// state), integrated for kHoldSeconds by a CPodes integrator of the run's accuracy, reporting every
+// ik_interval (interpolated: the integrator is not stopped there, whereas the engaged run stops for
+// the switch's check) with no event handler (the floor has no grasp to check and no goals to
+// track). Wall s per simulated s.
 double timeFloorHold(const simulation::GraspScene& scene, const SimTK::State& engaged) {
     SimTK::State floor = engaged;
     scene.getObject().lock(floor, SimTK::Motion::Position);
@@ -253,7 +254,7 @@ std::string formatSimSecondTable(const CostTable& t) {
     }
     return text + "(full: after the release; 1st s: the first simulated second engaged, with the switch's integrator restart;\n"
                   " hold: the 4 s after it; floor: the engaged state with the object locked and the constraint off, integrated\n"
-                  " 4 s at the same accuracy and stops, no grasp checks; hold and floor are each the median of their four 1-s\n"
+                  " 4 s at the same accuracy and report times, no grasp checks; hold and floor are each the median of their four 1-s\n"
                   " windows. Time spent timing the evaluations below during a run is not counted; writing the output samples\n"
                   " is, in full and hold alike.)\n\n";
 }
