@@ -233,6 +233,7 @@ void GraspScene::addController(const SimulationOptions& options) {
     ownedController_.reset(controller_);
     switch_ = new GraspSwitch(*this, *controller_, options.approx, ikInterval);
     model_.updSystem().addEventHandler(switch_);
+    if (SimTK::TriggeredEventHandler* witness = switch_->makeDetachWitness()) model_.updSystem().addEventHandler(witness);
 }
 
 SimTK::State GraspScene::makeInitialState() {

@@ -114,6 +114,30 @@ GraspSwitch::GraspSwitch(const GraspScene& scene, const control::GraspController
 
 GraspSwitch::~GraspSwitch() = default;
 
+// See makeDetachWitness(). Velocity stage: the parts' forces depend on the relative velocity.
+class GraspSwitch::DetachWitness : public SimTK::TriggeredEventHandler {
+public:
+    explicit DetachWitness(const GraspSwitch& grasp) : SimTK::TriggeredEventHandler(SimTK::Stage::Velocity), grasp_(grasp) {
+        getTriggerInfo().setTriggerOnRisingSignTransition(false);
+        getTriggerInfo().setTriggerOnFallingSignTransition(true);
+    }
+
+    SimTK::Real getValue(const SimTK::State& state) const override {
+        const double pressing = grasp_.multi_->findSmallestPressing(state);
+        return pressing == SimTK::Infinity ? 1.0 : pressing;
+    }
+
+    void handleEvent(SimTK::State& state, SimTK::Real, bool& shouldTerminate) const override {
+        shouldTerminate = false;
+        if (grasp_.isEngaged(state)) grasp_.checkRelease(state);
+    }
+
+private:
+    const GraspSwitch& grasp_;
+};
+
+SimTK::TriggeredEventHandler* GraspSwitch::makeDetachWitness() const { return multi_ ? new DetachWitness(*this) : nullptr; }
+
 bool GraspSwitch::isEngaged(const SimTK::State& state) const {
     if (multi_) return multi_->isEngaged(state);
     if (const grasp::LimitedWeld* weld = scene_.getWeld()) return weld->isEnabled(state);
@@ -198,6 +222,9 @@ void GraspSwitch::checkEngage(SimTK::State& state) const {
         if (options_.qMinimum == 0) qMinimum_ = options_.hysteresisFraction * qThreshold_;
     }
     if (!isSticking(reports)) return;
+    // Not at the instant of a release (a witness may release at a check's time): the contacts just
+    // restored still carry the pre-release state, and would re-engage what just failed.
+    if (!events_.empty() && events_.back().kind == "release" && !(state.getTime() > events_.back().time)) return;
     if (q > 0 && q >= qThreshold_) engage(state, q, reports);
 }
 

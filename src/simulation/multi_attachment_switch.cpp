@@ -188,6 +188,15 @@ std::string MultiAttachmentSwitch::describeDetach(const SimTK::State& state, int
     return {};
 }
 
+double MultiAttachmentSwitch::findSmallestPressing(const SimTK::State& state) const {
+    const grasp::MultiAttachment& multi = *scene_.getMultiAttachment();
+    double smallest = SimTK::Infinity;
+    for (int i = 0; i < multi.getNumParts(); ++i) {
+        if (multi.isAttached(state, i)) smallest = std::min(smallest, multi.findPressingForce(state, i));
+    }
+    return smallest;
+}
+
 void MultiAttachmentSwitch::release(SimTK::State& state) const {
     scene_.getMultiAttachment()->detachAll(state);
     const contact::CompliantContactForce& contacts = scene_.getContacts();

@@ -100,6 +100,12 @@ public:
     ~GraspSwitch() override;
 
     void handleEvent(SimTK::State& state, SimTK::Real accuracy, bool& shouldTerminate) const override;
+    /// With ApproxOptions::attach Multi, a new triggered event handler that runs the engaged check
+    /// (detaching fingers, maybe releasing) where an attached finger's pressing force falls through
+    /// zero, localized by the integrator; nullptr otherwise. Add it to the System beside this
+    /// handler, which must outlive it. (Only this cheap condition is a witness: a witness is
+    /// evaluated at every dynamics evaluation, and Q there would cost more than the checks save.)
+    SimTK::TriggeredEventHandler* makeDetachWitness() const;
 
     /// Whether the approximation is engaged in `state`.
     bool isEngaged(const SimTK::State& state) const;
@@ -123,6 +129,7 @@ public:
     const EngagedGraspTracker& getTracker() const { return tracker_; }
 
 private:
+    class DetachWitness;
     void checkEngage(SimTK::State& state) const;
     void checkRelease(SimTK::State& state) const;
     bool isFullContact(const std::vector<contact::ContactReport>& reports) const;

@@ -19,7 +19,10 @@
 ///      normal preloaded to f_i (mu: the scenario's dynamic friction, as merged).
 /// Every ik_interval while engaged, each attached finger i is DETACHED on its own (its part off, its
 /// contact pairs on again, so it goes back to ordinary contact; a "detach" event) when
-///  - it stopped pressing (the part's normal force <= 0: the contact would have opened), or
+///  - it stopped pressing (the part's normal force <= 0: the contact would have opened; this one is
+///    also watched between checks by a witness of the grasp switch, so the detach happens where the
+///    force falls through zero, not up to ik_interval later while the fingertip is held to an
+///    object that is leaving it), or
 ///  - its anchor slid more than ApproxOptions::releaseSlideDistance on the finger, or
 ///  - its fingertip is farther than the scenario's held tolerance from its goal on the object.
 /// The whole approximation is RELEASED (every part off, every pair on) when fewer than two
@@ -78,6 +81,9 @@ public:
     std::string update(SimTK::State& state, double quality, std::vector<GraspEvent>& events) const;
     /// Every part off, every contact pair on.
     void release(SimTK::State& state) const;
+    /// The smallest pressing force over the attached fingers (N), +Infinity with none attached.
+    /// Needs Stage::Velocity and realizes nothing, so a witness may call it mid-realization.
+    double findSmallestPressing(const SimTK::State& state) const;
 
 private:
     int findFinger(const std::string& body) const;
