@@ -1,6 +1,5 @@
 #include "graspsim/integration/simbody_stepper.h"
 
-
 namespace graspsim::integration {
 
 SimbodyCpodesStepper::SimbodyCpodesStepper(const SimTK::System& system, double accuracy)
