@@ -1,5 +1,9 @@
 #include "graspsim/integration/simbody_stepper.h"
 
+#include "graspsim/error.h"
+
+#include <algorithm>
+
 namespace graspsim::integration {
 
 SimbodyCpodesStepper::SimbodyCpodesStepper(const SimTK::System& system, double accuracy)
@@ -8,10 +12,8 @@ SimbodyCpodesStepper::SimbodyCpodesStepper(const SimTK::System& system, double a
 }
 
 void SimbodyCpodesStepper::makeIntegrator() {
-    stepper_.reset();  // it refers to the old integrator
     integrator_ = std::make_unique<SimTK::CPodesIntegrator>(system_, SimTK::CPodes::BDF, SimTK::CPodes::Newton);
     integrator_->setAccuracy(accuracy_);
-    stepper_ = std::make_unique<SimTK::TimeStepper>(system_, *integrator_);
 }
 
 // A restart begins on a new integrator (see the header): bank the old one's counters first.
@@ -19,20 +21,105 @@ void SimbodyCpodesStepper::initialize(const SimTK::State& initial) {
     if (initialized_) {
         addCurrentCountsTo(totals_);
         makeIntegrator();
+        ++restarts_;
     }
-    stepper_->initialize(initial);
+    integrator_->initialize(initial);
+    lastEventTime_ = lastReportTime_ = -SimTK::Infinity;
     initialized_ = true;
 }
 
 void SimbodyCpodesStepper::stepTo(double time) {
+    if (!initialized_) throw Error("SimbodyCpodesStepper::stepTo(" + std::to_string(time) + ") before initialize()");
     if (!quiet_) quiet_ = std::make_unique<io::FilteredStderr>(std::vector<std::string>{"[CPODES ERROR]", "[CPODES WARNING]"});
     try {
-        stepper_->stepTo(time);
+        advanceTo(time);
     } catch (...) {
         quiet_.reset();  // stderr back before the caller reports the failure
         throw;
     }
     quiet_->forward();
+}
+
+// SimTK::TimeStepper's loop with one difference: scheduled events are handled on the integrator's
+// interpolated state at their time instead of stopping the integrator there, and the integrator
+// restarts from that state only if a handler changed it. Events due exactly at `time` are handled
+// at the start of the next call, so the state returned at `time` is the one the ODE reached.
+void SimbodyCpodesStepper::advanceTo(double time) {
+    handleDueScheduledEvents();  // those due where the last call stopped
+    while (!integrator_->isSimulationOver() && integrator_->getTime() < time) {
+        const SimTK::State& now = integrator_->getState();
+        double tEvent = SimTK::Infinity, tReport = SimTK::Infinity;
+        SimTK::Array_<SimTK::EventId> ids;
+        system_.realize(now, SimTK::Stage::Time);
+        system_.calcTimeOfNextScheduledEvent(now, tEvent, ids, false);
+        system_.calcTimeOfNextScheduledReport(now, tReport, ids, false);
+        const SimTK::Integrator::SuccessfulStepStatus status = integrator_->stepTo(std::min({time, tEvent, tReport}));
+        if (status == SimTK::Integrator::EndOfSimulation) {
+            handleEvents(integrator_->updAdvancedState(), SimTK::Event::Cause::Termination, {});
+            return;
+        }
+        // After these the handlers have worked on the advanced state, ahead of getState().
+        if (status == SimTK::Integrator::ReachedEventTrigger) {
+            triggeredEvents_ += static_cast<long>(integrator_->getTriggeredEvents().size());
+            handleEvents(integrator_->updAdvancedState(), SimTK::Event::Cause::Triggered, integrator_->getTriggeredEvents());
+        } else if (status == SimTK::Integrator::TimeHasAdvanced) {
+            handleEvents(integrator_->updAdvancedState(), SimTK::Event::Cause::TimeAdvanced, {});
+        } else if (integrator_->getTime() < time) {
+            handleDueScheduledEvents();
+        }
+    }
+}
+
+// Scheduled reports and events due at the current state, which may be interpolated. The handlers
+// work on that state in place: getState() returns the integrator's own (non-const) buffer, realized
+// through Acceleration, and a copy would need realizing again, which costs what this saves. If the
+// handlers change nothing the integrator goes on with its step as if it had not been looked at;
+// otherwise the changed state becomes the advanced state and the integrator restarts from it, as
+// TimeStepper restarts it from the advanced state backed up to the event time (same values).
+void SimbodyCpodesStepper::handleDueScheduledEvents() {
+    SimTK::State& now = const_cast<SimTK::State&>(integrator_->getState());
+    const double t = now.getTime();
+    double tEvent = SimTK::Infinity, tReport = SimTK::Infinity;
+    SimTK::Array_<SimTK::EventId> eventIds, reportIds;
+    system_.realize(now, SimTK::Stage::Time);
+    system_.calcTimeOfNextScheduledEvent(now, tEvent, eventIds, lastEventTime_ != t);
+    system_.calcTimeOfNextScheduledReport(now, tReport, reportIds, lastReportTime_ != t);
+    if (tReport <= t) {
+        system_.reportEvents(now, SimTK::Event::Cause::Scheduled, reportIds);
+        lastReportTime_ = t;
+    }
+    if (tEvent > t) return;
+    lastEventTime_ = t;
+    ++scheduledEvents_;
+    const SimTK::HandleEventsResults results = callHandlers(now, SimTK::Event::Cause::Scheduled, eventIds);
+    const bool terminate = results.getExitStatus() == SimTK::HandleEventsResults::ShouldTerminate;
+    if (results.getLowestModifiedStage() == SimTK::Stage::Infinity && !terminate) return;
+    // Even a Report-stage change restarts when `now` is interpolated: the integrator is ahead of it.
+    if (&now != &integrator_->getAdvancedState()) integrator_->updAdvancedState() = now;
+    restartIntegrator(std::min(results.getLowestModifiedStage(), SimTK::Stage(SimTK::Stage::Acceleration)), terminate);
+}
+
+// TimeStepper's way for the events the integrator stopped at: handled on its advanced state.
+void SimbodyCpodesStepper::handleEvents(SimTK::State& state, SimTK::Event::Cause cause, const SimTK::Array_<SimTK::EventId>& ids) {
+    const SimTK::HandleEventsResults results = callHandlers(state, cause, ids);
+    restartIntegrator(results.getLowestModifiedStage(), results.getExitStatus() == SimTK::HandleEventsResults::ShouldTerminate);
+}
+
+SimTK::HandleEventsResults SimbodyCpodesStepper::callHandlers(SimTK::State& state, SimTK::Event::Cause cause,
+                                                             const SimTK::Array_<SimTK::EventId>& ids) const {
+    SimTK::HandleEventsOptions options(integrator_->getConstraintToleranceInUse());
+    if (integrator_->isInfinityNormInUse()) options.setOption(SimTK::HandleEventsOptions::UseInfinityNorm);
+    SimTK::HandleEventsResults results;
+    system_.handleEvents(state, cause, ids, options, results);
+    if (results.getExitStatus() == SimTK::HandleEventsResults::Failed) {
+        throw NumericalError("event handler failed at t = " + std::to_string(state.getTime()) + " s: " + results.getMessage());
+    }
+    return results;
+}
+
+void SimbodyCpodesStepper::restartIntegrator(SimTK::Stage lowestModified, bool terminate) {
+    if (lowestModified < SimTK::Stage::Report) ++restarts_;
+    integrator_->reinitialize(lowestModified, terminate);
 }
 
 void SimbodyCpodesStepper::addCurrentCountsTo(IntegrationStatistics& s) const {
@@ -46,6 +133,9 @@ void SimbodyCpodesStepper::addCurrentCountsTo(IntegrationStatistics& s) const {
 IntegrationStatistics SimbodyCpodesStepper::getStatistics() const {
     IntegrationStatistics all = totals_;
     if (initialized_) addCurrentCountsTo(all);
+    all.scheduledEvents = scheduledEvents_;
+    all.triggeredEvents = triggeredEvents_;
+    all.restarts = restarts_;
     return all;
 }
 

@@ -82,9 +82,9 @@ double medianWallPerSimSecond(const std::vector<Mark>& marks) {
 
 // The floor over time: the engaged state with the object locked and the constraint off (timeFloor's
 // state), integrated for kHoldSeconds by a CPodes integrator of the run's accuracy, reporting every
-// ik_interval (interpolated: the integrator is not stopped there, whereas the engaged run stops for
-// the switch's check) with no event handler (the floor has no grasp to check and no goals to
-// track). Wall s per simulated s.
+// ik_interval (interpolated, as the engaged run's reports and switch checks are: simbody_stepper.h)
+// with no event handler (the floor has no grasp to check and no goals to track). Wall s per
+// simulated s.
 double timeFloorHold(const simulation::GraspScene& scene, const SimTK::State& engaged) {
     SimTK::State floor = engaged;
     scene.getObject().lock(floor, SimTK::Motion::Position);

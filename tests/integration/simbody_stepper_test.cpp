@@ -1,6 +1,9 @@
 // Simbody's CPodes behind the Stepper interface (the grasp simulations' default) on a pendulum. Oracles: a restart continues exactly as a
 // stepper started fresh from the same state would (bit for bit), and restarting does not grow
-// the heap (re-initializing one Simbody 3.7 CPodesIntegrator leaked ~8 kB each time).
+// the heap (re-initializing one Simbody 3.7 CPodesIntegrator leaked ~8 kB each time); with
+// scheduled and triggered event handlers, the trajectory is SimTK::TimeStepper's bit for bit
+// (the same integrator driven by Simbody's own loop), with fewer dynamics evaluations when the
+// scheduled handlers change nothing.
 
 #include "graspsim/integration/simbody_stepper.h"
 
@@ -9,16 +12,23 @@
 #include <simbody/Simbody.h>
 #include <gtest/gtest.h>
 
+#include <vector>
+
 using graspsim::integration::SimbodyCpodesStepper;
 
 namespace {
 
 struct Pendulum {
-    Pendulum() : matter(system), forces(system), gravity(forces, matter, SimTK::Vec3(0, -9.81, 0)) {
+    // `addHandlers`: called with the pendulum (pin and a torque on it) before the topology is fixed.
+    template <class AddHandlers>
+    explicit Pendulum(AddHandlers addHandlers) : matter(system), forces(system), gravity(forces, matter, SimTK::Vec3(0, -9.81, 0)) {
         const SimTK::Body::Rigid body(SimTK::MassProperties(1.0, SimTK::Vec3(0), SimTK::Inertia(0.01)));
         pin = SimTK::MobilizedBody::Pin(matter.Ground(), SimTK::Transform(), body, SimTK::Vec3(0, 0.5, 0));
+        torque = SimTK::Force::MobilityConstantForce(forces, pin, 0, 0.0);
+        addHandlers(*this);
         system.realizeTopology();
     }
+    Pendulum() : Pendulum([](Pendulum&) {}) {}
     SimTK::State makeState() const {
         SimTK::State s = system.getDefaultState();
         pin.setOneQ(s, 0, 1.0);  // rad
@@ -29,9 +39,125 @@ struct Pendulum {
     SimTK::GeneralForceSubsystem forces;
     SimTK::Force::Gravity gravity;
     SimTK::MobilizedBody::Pin pin;
+    SimTK::Force::MobilityConstantForce torque;
 };
 
+// Every 10 ms: looks at the state and changes nothing.
+class Watcher : public SimTK::PeriodicEventHandler {
+public:
+    explicit Watcher(const Pendulum& p) : SimTK::PeriodicEventHandler(0.01), p_(p) {}
+    void handleEvent(SimTK::State& s, SimTK::Real, bool& terminate) const override {
+        p_.system.realize(s, SimTK::Stage::Acceleration);
+        terminate = false;
+    }
+
+private:
+    const Pendulum& p_;
+};
+
+// Every 25 ms: sets the torque on the pin to -0.5 q (N m), a Dynamics-stage change.
+class Kicker : public SimTK::PeriodicEventHandler {
+public:
+    explicit Kicker(const Pendulum& p) : SimTK::PeriodicEventHandler(0.025), p_(p) {}
+    void handleEvent(SimTK::State& s, SimTK::Real, bool& terminate) const override {
+        p_.torque.setForce(s, -0.5 * p_.pin.getOneQ(s, 0));
+        terminate = false;
+    }
+
+private:
+    const Pendulum& p_;
+};
+
+// Where the pendulum swings through the vertical (q falling through 0): a fixed 0.2 N m torque.
+class Crossing : public SimTK::TriggeredEventHandler {
+public:
+    explicit Crossing(const Pendulum& p) : SimTK::TriggeredEventHandler(SimTK::Stage::Position), p_(p) {
+        getTriggerInfo().setTriggerOnRisingSignTransition(false);
+    }
+    SimTK::Real getValue(const SimTK::State& s) const override { return p_.pin.getOneQ(s, 0); }
+    void handleEvent(SimTK::State& s, SimTK::Real, bool& terminate) const override {
+        p_.torque.setForce(s, 0.2);
+        terminate = false;
+    }
+
+private:
+    const Pendulum& p_;
+};
+
+struct Sampled {
+    std::vector<double> t, q, u;
+    long realizations = 0;
+};
+
+// Samples every `dt` to `end` with `stepTo` (either stepper's), then counts realizations.
+template <class StepTo, class GetState>
+Sampled sample(double dt, double end, StepTo stepTo, GetState getState) {
+    Sampled out;
+    for (int k = 1; k * dt <= end + 1e-12; ++k) {
+        stepTo(k * dt);
+        const SimTK::State& s = getState();
+        out.t.push_back(s.getTime());
+        out.q.push_back(s.getQ()[0]);
+        out.u.push_back(s.getU()[0]);
+    }
+    return out;
+}
+
+// The same pendulum (built by `make`) run by SimbodyCpodesStepper and by SimTK::TimeStepper with
+// the same CPodes integrator; every sample must be identical.
+template <class Make>
+void expectSameAsTimeStepper(Make make, double dt, long* ours = nullptr, long* theirs = nullptr) {
+    const Pendulum a = make(), b = make();
+    SimbodyCpodesStepper stepper(a.system, 1e-6);
+    stepper.initialize(a.makeState());
+    Sampled x = sample(dt, 1.0, [&](double t) { stepper.stepTo(t); }, [&]() -> const SimTK::State& { return stepper.getState(); });
+    x.realizations = stepper.getStatistics().rhsEvaluations;
+    SimTK::CPodesIntegrator integrator(b.system, SimTK::CPodes::BDF, SimTK::CPodes::Newton);
+    integrator.setAccuracy(1e-6);
+    SimTK::TimeStepper reference(b.system, integrator);
+    reference.initialize(b.makeState());
+    Sampled y = sample(dt, 1.0, [&](double t) { reference.stepTo(t); }, [&]() -> const SimTK::State& { return reference.getState(); });
+    y.realizations = integrator.getNumRealizations();
+    ASSERT_EQ(x.t.size(), y.t.size());
+    for (std::size_t k = 0; k < x.t.size(); ++k) {
+        EXPECT_EQ(x.t[k], y.t[k]);
+        EXPECT_EQ(x.q[k], y.q[k]) << "at t = " << x.t[k];
+        EXPECT_EQ(x.u[k], y.u[k]) << "at t = " << x.t[k];
+    }
+    if (ours) *ours = x.realizations;
+    if (theirs) *theirs = y.realizations;
+}
+
 }  // namespace
+
+TEST(SimbodyCpodesStepper, HandlersThatChangeNothingLeaveTheTrajectoryAndSaveEvaluations) {
+    const auto make = [] { return Pendulum([](Pendulum& p) { p.system.addEventHandler(new Watcher(p)); }); };
+    long ours = 0, theirs = 0;
+    expectSameAsTimeStepper(make, 0.01, &ours, &theirs);  // samples at the event times
+    // TimeStepper backs the integrator up to each of the 100 events and resumes: two
+    // evaluations each that the interpolated handling does not need.
+    EXPECT_LT(ours, theirs - 100);
+    expectSameAsTimeStepper(make, 0.0375);  // samples between them
+}
+
+TEST(SimbodyCpodesStepper, HandlersThatChangeTheStateRestartItAsTimeStepperDoes) {
+    const auto make = [] {
+        return Pendulum([](Pendulum& p) {
+            p.system.addEventHandler(new Kicker(p));
+            p.system.addEventHandler(new Crossing(p));
+        });
+    };
+    expectSameAsTimeStepper(make, 0.025);
+    expectSameAsTimeStepper(make, 0.01);
+    const Pendulum p = make();
+    SimbodyCpodesStepper stepper(p.system, 1e-6);
+    stepper.initialize(p.makeState());
+    stepper.stepTo(1.0);
+    const graspsim::integration::IntegrationStatistics s = stepper.getStatistics();
+    EXPECT_EQ(s.scheduledEvents, 40);  // t = 0, 0.025, ..., 0.975: the one at 1.0 waits for the next call
+    EXPECT_GT(s.triggeredEvents, 0);   // the swing crosses the vertical within 1 s
+    EXPECT_GE(s.restarts, s.scheduledEvents - 1);
+}
 
 TEST(SimbodyCpodesStepper, RestartContinuesLikeAFreshStepper) {
     const Pendulum p;

@@ -35,7 +35,8 @@
 /// Stages: enabling/disabling the weld and the per-axis stick/slide modes are Instance-stage
 /// (they switch constraints on and off); limits and locks are Dynamics-stage. Change them in an
 /// event handler (the TimeStepper re-realizes and reinitializes the integrator after it) or
-/// before Integrator::initialize(). The weld needs a TimeStepper (which runs its handlers).
+/// before Integrator::initialize(). The weld needs a stepper that runs its handlers (SimTK::TimeStepper,
+/// integration::SimbodyCpodesStepper, integration::CvodeIntegrator).
 ///
 /// Lifetime: the constraints, the force and the handlers belong to the System; this object
 /// holds handles and is referred to by its handlers, so it must outlive every run of the System

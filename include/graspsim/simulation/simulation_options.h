@@ -22,7 +22,7 @@ enum class SimulationMode {
 
 /// Which integrator advances the simulation.
 enum class IntegratorChoice {
-    SimbodyCpodes,  ///< Simbody's CPodes (BDF, Newton) via SimTK::TimeStepper: the default
+    SimbodyCpodes,  ///< Simbody's CPodes (BDF, Newton), stepped as by SimTK::TimeStepper (simbody_stepper.h): the default
     Cvode           ///< SUNDIALS CVODE (BDF, Newton), the reference (integration/cvode_integrator.h)
 };
 
