@@ -153,6 +153,15 @@ public:
         });
     }
 
+    std::vector<ContactDepth> findContactDepths(const SimTK::State& state, const std::vector<int>& pairIndices) const {
+        std::vector<ContactDepth> depths;
+        for (int i = 0; i < getNumPairs(); ++i) {
+            if (std::find(pairIndices.begin(), pairIndices.end(), i) == pairIndices.end()) continue;
+            for (const ContactPoint& contact : findPairContacts(state, i)) depths.push_back({i, contact.depth});
+        }
+        return depths;
+    }
+
 private:
     // The contact points of pair i in the scratch buffer (valid until the next call).
     const std::vector<ContactPoint>& findPairContacts(const SimTK::State& state, int i) const {
@@ -271,6 +280,12 @@ std::vector<ContactReport> CompliantContactForce::findContactReports(const SimTK
                                                                    const std::vector<int>& pairIndices) const {
     for (int i : pairIndices) checkPairIndex(i);
     return asContactImpl(getImplementation()).findContactReports(state, pairIndices);
+}
+
+std::vector<ContactDepth> CompliantContactForce::findContactDepths(const SimTK::State& state,
+                                                                  const std::vector<int>& pairIndices) const {
+    for (int i : pairIndices) checkPairIndex(i);
+    return asContactImpl(getImplementation()).findContactDepths(state, pairIndices);
 }
 
 std::vector<ContactReport> CompliantContactForce::findContactReports(

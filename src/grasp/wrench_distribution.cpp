@@ -55,6 +55,38 @@ Eigen::Vector3d projectOntoCone(const Eigen::Vector3d& f, const Eigen::Vector3d&
     return normal * n + tangential;
 }
 
+// Singular values of the wrench map below this fraction of the largest count as zero: the
+// directions a grasp cannot push in (torsion about the line through two point contacts) are
+// exactly zero up to rounding, ~1e-16 of the largest; a real grasp's smallest is above 1e-3.
+constexpr double kRankTolerance = 1e-7;
+// Pivots of the Gram matrix's pivoted Cholesky above this fraction of the largest: clearly full
+// rank. The smallest eigenvalue is at least the smallest pivot over a factor that depends only on
+// the size (a few thousand at most for 6 x 6), so every eigenvalue is then above ~1e-12 of the
+// largest, far from the rank tolerance's 1e-14, and the plain solve is as exact as the eigen one.
+// Real grasps of 3+ contacts have pivot ratios near their squared singular value ratio, > 1e-6.
+constexpr double kFullRankPivot = 1e-8;
+
+// A^+ r, the minimum-norm least-squares solution of A x = r, as A^T (A A^T)^+ r through the 6 x 6
+// Gram matrix: by Cholesky when it is clearly full rank (every real grasp of 3+ contacts), else by
+// its eigenvalues, the squared singular values of A, leaving out the directions under the rank
+// tolerance as a rank-revealing decomposition of A does. A complete orthogonal decomposition of
+// the 6 x 3N map did the same at several times the cost, at every 10-ms check of an engaged
+// approximation.
+Eigen::VectorXd solveMinimumNorm(const Eigen::MatrixXd& A, const Eigen::Matrix<double, 6, 1>& r) {
+    const Eigen::Matrix<double, 6, 6> gram = A * A.transpose();
+    const Eigen::LDLT<Eigen::Matrix<double, 6, 6>> cholesky(gram);
+    const Eigen::Matrix<double, 6, 1> pivots = cholesky.vectorD();
+    if (cholesky.info() == Eigen::Success && pivots.minCoeff() > kFullRankPivot * pivots.maxCoeff()) {
+        return A.transpose() * cholesky.solve(r);
+    }
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> eigen(gram);
+    const Eigen::Matrix<double, 6, 1>& lambda = eigen.eigenvalues();  // ascending
+    const double cutoff = kRankTolerance * kRankTolerance * lambda[5];
+    Eigen::Matrix<double, 6, 1> y = eigen.eigenvectors().transpose() * r;
+    for (int k = 0; k < 6; ++k) y[k] = lambda[k] > cutoff ? y[k] / lambda[k] : 0.0;
+    return A.transpose() * (eigen.eigenvectors() * y);
+}
+
 }  // namespace
 
 WrenchDistribution distributeWrench(const std::vector<GraspContact>& contacts, const ObjectFrame& frame,
@@ -71,7 +103,7 @@ WrenchDistribution distributeWrench(const std::vector<GraspContact>& contacts, c
     for (std::size_t i = 0; i < contacts.size(); ++i) f0.segment<3>(3 * static_cast<Eigen::Index>(i)) = referenceForces_G[i];
     // Minimum-norm least-squares correction: the pseudo-inverse, rank-revealing so that a wrench
     // direction the contacts cannot produce is left out rather than blown up.
-    const Eigen::VectorXd f = f0 + A.completeOrthogonalDecomposition().solve(wrench_G - A * f0);
+    const Eigen::VectorXd f = f0 + solveMinimumNorm(A, wrench_G - A * f0);
     Eigen::VectorXd projected(A.cols());
     for (std::size_t i = 0; i < contacts.size(); ++i) {
         const Eigen::Index k = 3 * static_cast<Eigen::Index>(i);

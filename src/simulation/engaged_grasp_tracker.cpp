@@ -97,9 +97,9 @@ double EngagedGraspTracker::measurePenetration(const SimTK::State& state) {
     for (int k = 0; k < pairs.getNumPairs(); ++k) {
         if (!pairs.isPairEnabled(state, k)) replaced.push_back(k);
     }
-    scene_.getSystem().realize(state, SimTK::Stage::Velocity);
+    scene_.getSystem().realize(state, SimTK::Stage::Position);
     double deepest = 0;
-    for (const contact::ContactReport& c : pairs.findContactReports(state, replaced)) {
+    for (const contact::ContactDepth& c : pairs.findContactDepths(state, replaced)) {
         deepest = std::max(deepest, c.depth);
         const auto engaged = depthAtEngage_.find(c.pairIndex);
         const double growth = c.depth - (engaged == depthAtEngage_.end() ? 0.0 : engaged->second);

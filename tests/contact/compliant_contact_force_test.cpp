@@ -160,7 +160,7 @@ TEST(CompliantContactForce, DisabledPairsExertNothingAndSwitchingInvalidatesInst
 
 // The reports of listed pairs do not depend on their flags: a disabled pair reports what it
 // would apply if enabled (the engaged approximation measures the replaced fingertips this way),
-// and the state is not invalidated.
+// and the state is not invalidated; their depths alone are the reports' depths.
 TEST(CompliantContactForce, ListedPairsReportAsIfEnabledWithoutTouchingTheState) {
     FiveSpheresOnAPlate s;
     const std::vector<ContactReport> enabled = s.force.findContactReports(s.state);
@@ -179,6 +179,15 @@ TEST(CompliantContactForce, ListedPairsReportAsIfEnabledWithoutTouchingTheState)
     }
     EXPECT_EQ(listed[0].pairIndex, 1);  // in pair order
     EXPECT_THROW(s.force.findContactReports(s.state, {5}), InputError);
+
+    const std::vector<ContactDepth> depths = s.force.findContactDepths(s.state, {3, 1});
+    ASSERT_EQ(depths.size(), listed.size());
+    for (std::size_t k = 0; k < depths.size(); ++k) {
+        EXPECT_EQ(depths[k].pairIndex, listed[k].pairIndex);
+        EXPECT_EQ(depths[k].depth, listed[k].depth);
+    }
+    EXPECT_EQ(s.state.getSystemStage(), SimTK::Stage::Velocity);
+    EXPECT_THROW(s.force.findContactDepths(s.state, {5}), InputError);
 }
 
 TEST(CompliantContactForce, PairsCanStartDisabledAndBadIndicesAreRejected) {

@@ -1,5 +1,6 @@
 // Distributing a wrench over contacts: closed-form oracles for a two-finger pinch (symmetry and
-// equilibrium fix the split), and the equilibrium equations themselves summed by hand.
+// equilibrium fix the split), the equilibrium equations themselves summed by hand, and Eigen's
+// complete orthogonal decomposition as an independent pseudo-inverse.
 
 #include "graspsim/grasp/wrench_distribution.h"
 
@@ -9,7 +10,10 @@
 
 #include <Eigen/Geometry>
 
+#include <Eigen/Dense>
+
 #include <algorithm>
+#include <random>
 
 using namespace graspsim;
 using namespace graspsim::grasp;
@@ -110,4 +114,50 @@ TEST(WrenchDistribution, RejectsMismatchedReferencesAndNegativeFriction) {
     const Eigen::Matrix<double, 6, 1> W = Eigen::Matrix<double, 6, 1>::Zero();
     EXPECT_THROW(distributeWrench(makePinch(), ObjectFrame(), W, {Eigen::Vector3d::Zero()}, 0.5), InputError);
     EXPECT_THROW(distributeWrench(makePinch(), ObjectFrame(), W, makeSqueeze(1), -0.1), InputError);
+}
+
+// The least-norm split (zero references) is A^+ W; with each contact's normal along its own force
+// no cone projection acts, so the forces are exactly that. A^+ from a complete orthogonal
+// decomposition of the 6 x 3N map (rows: moment about O, then force) is the oracle. Random grasps of
+// 3 to 8 contacts, and the degenerate ones: two contacts (no torsion about their line) and three on
+// a line.
+TEST(WrenchDistribution, AgreesWithAnOrthogonalDecompositionPseudoInverse) {
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    const auto vec = [&] { return Eigen::Vector3d(unit(random), unit(random), unit(random)); };
+    const auto check = [&](const std::vector<Eigen::Vector3d>& points) {
+        ObjectFrame O;
+        O.p_GO = 0.01 * vec();
+        Eigen::MatrixXd A(6, 3 * static_cast<Eigen::Index>(points.size()));
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            const Eigen::Vector3d r = points[i] - O.p_GO;
+            Eigen::Matrix3d cross;
+            cross << 0, -r.z(), r.y(), r.z(), 0, -r.x(), -r.y(), r.x(), 0;
+            const Eigen::Index k = 3 * static_cast<Eigen::Index>(i);
+            A.block<3, 3>(0, k) = cross;
+            A.block<3, 3>(3, k) = Eigen::Matrix3d::Identity();
+        }
+        Eigen::Matrix<double, 6, 1> W;
+        W << 0.05 * vec(), 2.0 * vec();
+        const Eigen::VectorXd expected = A.completeOrthogonalDecomposition().solve(W);
+        std::vector<GraspContact> contacts(points.size());
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            contacts[i].p_GC = points[i];
+            contacts[i].n_G = expected.segment<3>(3 * static_cast<Eigen::Index>(i)).normalized();
+        }
+        const WrenchDistribution d =
+            distributeWrench(contacts, O, W, std::vector<Eigen::Vector3d>(points.size(), Eigen::Vector3d::Zero()), 0.5);
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            const Eigen::Vector3d e = expected.segment<3>(3 * static_cast<Eigen::Index>(i));
+            EXPECT_LT((d.forces_G[i] - e).norm(), 1e-9 * e.norm()) << points.size() << " contacts, contact " << i;
+        }
+    };
+    for (int trial = 0; trial < 200; ++trial) {
+        std::vector<Eigen::Vector3d> points(static_cast<std::size_t>(3 + trial % 6));
+        for (Eigen::Vector3d& p : points) p = 0.05 * vec();
+        check(points);
+        const Eigen::Vector3d a = 0.05 * vec(), b = 0.05 * vec();
+        check({a, b});
+        check({a, b, 0.3 * a + 0.7 * b});
+    }
 }

@@ -27,8 +27,8 @@
 ///
 /// PENETRATION WHILE ENGAGED (measurePenetration). The contact pairs the approximation has
 /// switched off (all with merged; the attached fingers' with multi) are evaluated as if on
-/// (CompliantContactForce::findContactReports of a list: geometry and would-be forces, nothing
-/// applied, the state untouched): the depth of every such pair in contact. Pairs still in
+/// (CompliantContactForce::findContactDepths of a list: the geometry alone, nothing applied, the
+/// state untouched): the depth of every such pair in contact. Pairs still in
 /// ordinary contact are not counted: their compression under a load is the compliant model's, as
 /// in full contact. What is bounded: the GROWTH of each pair's depth beyond its depth at
 /// engagement (a new contact counts with its whole depth). What is not: the depth the

@@ -7,9 +7,9 @@
 /// Two kinds of figures, both from one run each, measured in the same process:
 ///  - per integrator step and per simulated second, from the phases of a simulation
 ///    (SimulationSummary: full-contact phase vs first engagement; the approximation's per
-///    simulated second figures over its first second engaged and over the 4 s of hold after
+///    simulated second figures over its first second engaged and over the 20 s of hold after
 ///    it, with the time spent timing evaluations during the run taken out; and the floor state
-///    below integrated for 4 s the same way). The variable-step integrator takes longer steps
+///    below integrated for 20 s the same way). The variable-step integrator takes longer steps
 ///    once contact is gone, so per simulated second is the fair comparison: it is what a
 ///    fixed-step engine's cost per step (the thesis's) measures;
 ///  - per dynamics evaluation (one realization of the system to Stage::Acceleration from
@@ -29,8 +29,8 @@ struct ApproxCost {
     std::string constraint;              ///< "bushing" or "weld"
     double stepUs = 0;                   ///< µs per integrator step during the first engagement
     double wallPerSimSecond = 0;         ///< wall s per simulated s, first simulated second engaged
-    double holdWallPerSimSecond = 0;     ///< wall s per simulated s over the 4 s of hold after that (median of 1-s windows)
-    double floorHoldWallPerSimSecond = 0;  ///< the floor state (below) integrated for 4 s, wall s per simulated s (median of 1-s windows)
+    double holdWallPerSimSecond = 0;     ///< wall s per simulated s over the 20 s of hold after that (median of 1-s windows)
+    double floorHoldWallPerSimSecond = 0;  ///< the floor state (below) integrated for 20 s, wall s per simulated s (median of 1-s windows)
     double engageTime = -1;              ///< s; < 0 if it never engaged (then no figures)
     double fullRealizeUs = 0;            ///< one dynamics evaluation, full contact just before engaging (µs)
     double engagedRealizeUs = 0;         ///< one dynamics evaluation, engaged (µs)
