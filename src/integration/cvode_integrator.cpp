@@ -1,6 +1,7 @@
 #include "graspsim/integration/cvode_integrator.h"
 
 #include "cvode_solver.h"
+#include "scheduled_times.h"
 
 #include "graspsim/error.h"
 
@@ -82,31 +83,24 @@ void CvodeIntegrator::stepTo(double time) {
     if (state_.getLowestSystemStageDifference(stageVersions_) < SimTK::Stage::Report) restart();
     while (!terminated_ && state_.getTime() < time) {
         if (handleDueScheduledEvents()) continue;
-        double tEvent = SimTK::Infinity, tReport = SimTK::Infinity;
-        SimTK::Array_<SimTK::EventId> ids;
-        system_.calcTimeOfNextScheduledEvent(state_, tEvent, ids, false);
-        system_.calcTimeOfNextScheduledReport(state_, tReport, ids, false);
-        advance(std::min({time, tEvent, tReport}));
+        const ScheduledTimes next = findScheduledTimes(system_, state_, false, false);
+        advance(std::min({time, next.event, next.report}));
     }
 }
 
 // Handles the scheduled events and reports due now; true if any was.
 bool CvodeIntegrator::handleDueScheduledEvents() {
     const double t = state_.getTime();
-    double tEvent = SimTK::Infinity, tReport = SimTK::Infinity;
-    SimTK::Array_<SimTK::EventId> eventIds, reportIds;
-    system_.realize(state_, SimTK::Stage::Time);
-    system_.calcTimeOfNextScheduledEvent(state_, tEvent, eventIds, lastEventTime_ != t);
-    system_.calcTimeOfNextScheduledReport(state_, tReport, reportIds, lastReportTime_ != t);
-    if (tReport <= t) {
+    const ScheduledTimes due = findScheduledTimes(system_, state_, lastEventTime_ != t, lastReportTime_ != t);
+    if (due.report <= t) {
         system_.realize(state_, SimTK::Stage::Acceleration);
-        system_.reportEvents(state_, SimTK::Event::Cause::Scheduled, reportIds);
+        system_.reportEvents(state_, SimTK::Event::Cause::Scheduled, due.reportIds);
         lastReportTime_ = t;
         return true;
     }
-    if (tEvent > t) return false;
+    if (due.event > t) return false;
     SimTK::HandleEventsResults results;
-    system_.handleEvents(state_, SimTK::Event::Cause::Scheduled, eventIds,
+    system_.handleEvents(state_, SimTK::Event::Cause::Scheduled, due.eventIds,
                          SimTK::HandleEventsOptions(getConstraintTolerance()), results);
     lastEventTime_ = t;
     events_.scheduledEvents = std::max(events_.scheduledEvents, 0L) + 1;

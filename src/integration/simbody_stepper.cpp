@@ -1,5 +1,7 @@
 #include "graspsim/integration/simbody_stepper.h"
 
+#include "scheduled_times.h"
+
 #include "graspsim/error.h"
 
 #include <algorithm>
@@ -47,13 +49,8 @@ void SimbodyCpodesStepper::stepTo(double time) {
 void SimbodyCpodesStepper::advanceTo(double time) {
     handleDueScheduledEvents();  // those due where the last call stopped
     while (!integrator_->isSimulationOver() && integrator_->getTime() < time) {
-        const SimTK::State& now = integrator_->getState();
-        double tEvent = SimTK::Infinity, tReport = SimTK::Infinity;
-        SimTK::Array_<SimTK::EventId> ids;
-        system_.realize(now, SimTK::Stage::Time);
-        system_.calcTimeOfNextScheduledEvent(now, tEvent, ids, false);
-        system_.calcTimeOfNextScheduledReport(now, tReport, ids, false);
-        const SimTK::Integrator::SuccessfulStepStatus status = integrator_->stepTo(std::min({time, tEvent, tReport}));
+        const ScheduledTimes next = findScheduledTimes(system_, integrator_->getState(), false, false);
+        const SimTK::Integrator::SuccessfulStepStatus status = integrator_->stepTo(std::min({time, next.event, next.report}));
         if (status == SimTK::Integrator::EndOfSimulation) {
             handleEvents(integrator_->updAdvancedState(), SimTK::Event::Cause::Termination, {});
             return;
@@ -79,19 +76,15 @@ void SimbodyCpodesStepper::advanceTo(double time) {
 void SimbodyCpodesStepper::handleDueScheduledEvents() {
     SimTK::State& now = const_cast<SimTK::State&>(integrator_->getState());
     const double t = now.getTime();
-    double tEvent = SimTK::Infinity, tReport = SimTK::Infinity;
-    SimTK::Array_<SimTK::EventId> eventIds, reportIds;
-    system_.realize(now, SimTK::Stage::Time);
-    system_.calcTimeOfNextScheduledEvent(now, tEvent, eventIds, lastEventTime_ != t);
-    system_.calcTimeOfNextScheduledReport(now, tReport, reportIds, lastReportTime_ != t);
-    if (tReport <= t) {
-        system_.reportEvents(now, SimTK::Event::Cause::Scheduled, reportIds);
+    const ScheduledTimes due = findScheduledTimes(system_, now, lastEventTime_ != t, lastReportTime_ != t);
+    if (due.report <= t) {
+        system_.reportEvents(now, SimTK::Event::Cause::Scheduled, due.reportIds);
         lastReportTime_ = t;
     }
-    if (tEvent > t) return;
+    if (due.event > t) return;
     lastEventTime_ = t;
     ++scheduledEvents_;
-    const SimTK::HandleEventsResults results = callHandlers(now, SimTK::Event::Cause::Scheduled, eventIds);
+    const SimTK::HandleEventsResults results = callHandlers(now, SimTK::Event::Cause::Scheduled, due.eventIds);
     const bool terminate = results.getExitStatus() == SimTK::HandleEventsResults::ShouldTerminate;
     if (results.getLowestModifiedStage() == SimTK::Stage::Infinity && !terminate) return;
     // Even a Report-stage change restarts when `now` is interpolated: the integrator is ahead of it.
