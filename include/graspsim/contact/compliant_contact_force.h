@@ -103,8 +103,8 @@ public:
     /// change. Needs Stage::Velocity. @throws graspsim::InputError for an index out of range.
     std::vector<ContactReport> findContactReports(const SimTK::State& state, const std::vector<int>& pairIndices) const;
     /// The depth of every contact point of the listed pairs, enabled or not, in pair order: the
-    /// depths findContactReports(state, pairIndices) reports, without computing forces (a tenth
-    /// of its cost; the engaged approximation measures penetration so at every check). Needs
+    /// depths findContactReports(state, pairIndices) reports, without the forces, velocities and
+    /// names (the engaged approximation measures penetration so at every check). Needs
     /// Stage::Position. @throws graspsim::InputError for an index out of range.
     std::vector<ContactDepth> findContactDepths(const SimTK::State& state, const std::vector<int>& pairIndices) const;
 

@@ -15,9 +15,9 @@
 namespace graspsim::integration {
 
 /// SimTK::CPodesIntegrator(BDF, Newton) stepped by SimTK::TimeStepper's loop, with one change: a
-/// scheduled event is handled on a copy of the integrator's state interpolated at the event time
-/// (the values TimeStepper's handlers see, where the integrator backs its state up to the event
-/// time), and the integrator is restarted from that copy only when a handler changed it.
+/// scheduled event is handled on the integrator's state interpolated at the event time (the values
+/// TimeStepper's handlers see, where the integrator backs its state up to the event time), and the
+/// integrator is restarted from that state only when a handler changed it.
 /// TimeStepper makes the integrator back up and resume at every scheduled event, two extra
 /// dynamics evaluations each: with the grasp switch's check every 10 ms that was a third of an
 /// engaged approximation's cost, for checks that mostly change nothing. The trajectory is the same
