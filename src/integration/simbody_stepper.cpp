@@ -43,8 +43,8 @@ void SimbodyCpodesStepper::stepTo(double time) {
 }
 
 // SimTK::TimeStepper's loop with one difference: scheduled events are handled on the integrator's
-// interpolated state at their time instead of stopping the integrator there, and the integrator
-// restarts from that state only if a handler changed it. Events due exactly at `time` are handled
+// interpolated state at their time instead of on its advanced state backed up to that time (and
+// restored afterwards), and the integrator restarts from that state only if a handler changed it. Events due exactly at `time` are handled
 // at the start of the next call, so the state returned at `time` is the one the ODE reached.
 void SimbodyCpodesStepper::advanceTo(double time) {
     handleDueScheduledEvents();  // those due where the last call stopped
