@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <memory>
 #include <cmath>
-#include <memory>
 
 namespace graspsim::control {
 
@@ -44,16 +43,39 @@ FingertipIk::~FingertipIk() = default;
 
 namespace {
 
-// The Assembler satisfies every enabled constraint of its state. Conditional constraints (rigid
-// contacts, enabled while touching) are not part of the hand's kinematics: the IK places the
-// fingertips at their goals as if nothing were in the way, and contact pushes back in the
-// dynamics. Returns nullptr when `state` has none enabled (no copy needed).
-std::unique_ptr<SimTK::State> withoutConditionalConstraints(const SimTK::SimbodyMatterSubsystem& matter,
-                                                            const SimTK::State& state) {
+// Whether `body` moves with any of the IK's moving joints (it is one of them or outboard of one).
+bool movesWith(const SimTK::MobilizedBody& body, const std::vector<SimTK::MobilizedBodyIndex>& moving) {
+    for (const SimTK::MobilizedBody* b = &body; !b->isGround(); b = &b->getParentMobilizedBody()) {
+        if (std::find(moving.begin(), moving.end(), b->getMobilizedBodyIndex()) != moving.end()) return true;
+    }
+    return false;
+}
+
+bool involvesMovingBodies(const SimTK::Constraint& constraint, const std::vector<SimTK::MobilizedBodyIndex>& moving) {
+    for (SimTK::ConstrainedBodyIndex k(0); k < constraint.getNumConstrainedBodies(); ++k) {
+        if (movesWith(constraint.getMobilizedBodyFromConstrainedBody(k), moving)) return true;
+    }
+    for (SimTK::ConstrainedMobilizerIndex k(0); k < constraint.getNumConstrainedMobilizers(); ++k) {
+        if (movesWith(constraint.getMobilizedBodyFromConstrainedMobilizer(k), moving)) return true;
+    }
+    return false;
+}
+
+// The Assembler satisfies every enabled constraint of its state, but two kinds are not part of
+// the hand's kinematics. Conditional constraints (rigid contacts, enabled while touching): the IK
+// places the fingertips at their goals as if nothing were in the way, and contact pushes back in
+// the dynamics. Constraints among bodies no moving joint moves (the Ground weld holding an object
+// before its release): the IK cannot change them, so they would only fail the assembly when the
+// integrator holds them to a looser tolerance than the Assembler's. Returns nullptr when `state`
+// has none enabled (no copy needed).
+std::unique_ptr<SimTK::State> withoutUnreachableConstraints(const SimTK::SimbodyMatterSubsystem& matter,
+                                                            const SimTK::State& state,
+                                                            const std::vector<SimTK::MobilizedBodyIndex>& moving) {
     std::unique_ptr<SimTK::State> copy;
     for (SimTK::ConstraintIndex c(0); c < matter.getNumConstraints(); ++c) {
         const SimTK::Constraint& constraint = matter.getConstraint(c);
-        if (!constraint.isConditional() || constraint.isDisabled(state)) continue;
+        if (constraint.isDisabled(state)) continue;
+        if (!constraint.isConditional() && involvesMovingBodies(constraint, moving)) continue;
         if (!copy) copy = std::make_unique<SimTK::State>(state);
         constraint.disable(*copy);
     }
@@ -65,7 +87,7 @@ std::unique_ptr<SimTK::State> withoutConditionalConstraints(const SimTK::Simbody
 SimTK::Vector FingertipIk::solve(const SimTK::State& state, const std::vector<SimTK::Vec3>& goals_G) {
     SimTK::Array_<SimTK::Vec3> observations(goals_G.begin(), goals_G.end());
     markers_->moveAllObservations(observations);
-    const std::unique_ptr<SimTK::State> unconstrained = withoutConditionalConstraints(model_.getMatter(), state);
+    const std::unique_ptr<SimTK::State> unconstrained = withoutUnreachableConstraints(model_.getMatter(), state, movingBodies_);
     try {
         // The locked joints (arm, object) come from `state`; the Assembler starts the moving
         // joints from there too, which keeps consecutive solutions close (warm start).

@@ -1,5 +1,6 @@
 #include "graspsim/grasp/limited_weld.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -13,9 +14,11 @@ namespace {
 const char* const kAxisNames[6] = {"rotation x",    "rotation y",    "rotation z",
                                    "translation x", "translation y", "translation z"};
 
-// Instance stage: which constraints are on. direction[k] = 0 stuck, +-1 sliding that way.
+// Instance stage: which constraints are on. direction[k] = 0 stuck, +-1 sliding that way;
+// heldByLock: every axis stuck and O's mobilizer locked instead of the six constraints on.
 struct WeldModes {
     bool enabled = false;
+    bool heldByLock = false;
     std::array<int, 6> direction = {0, 0, 0, 0, 0, 0};
 };
 
@@ -48,9 +51,10 @@ constexpr double kProjectionAccuracy = 1e-12;
 // The sliding force, and the owner of the weld's state variables (allocated with the force).
 class LimitedWeld::Elements : public SimTK::Force::Custom::Implementation {
 public:
-    Elements(const SimTK::GeneralForceSubsystem& forces, const SimTK::MobilizedBody& H,
-             const SimTK::Transform& X_HF, const SimTK::MobilizedBody& O, const SimTK::Transform& X_OM)
-        : forces_(forces), bodyH_(H), defaultFrames_{X_HF, X_OM}, bodyO_(O) {}
+    Elements(const SimTK::SimbodyMatterSubsystem& matter, const SimTK::GeneralForceSubsystem& forces,
+             const SimTK::MobilizedBody& H, const SimTK::Transform& X_HF, const SimTK::MobilizedBody& O,
+             const SimTK::Transform& X_OM)
+        : matter_(matter), forces_(forces), bodyH_(H), defaultFrames_{X_HF, X_OM}, bodyO_(O) {}
 
     void realizeTopology(SimTK::State& state) const override {
         modesIndex_ = forces_.allocateDiscreteVariable(state, SimTK::Stage::Instance,
@@ -61,6 +65,8 @@ public:
                                                          new SimTK::Value<SimTK::Transform>());
         framesIndex_ = forces_.allocateDiscreteVariable(state, SimTK::Stage::Instance,
                                                         new SimTK::Value<WeldFrames>(defaultFrames_));
+        lockReactionIndex_ = forces_.allocateLazyCacheEntry(state, SimTK::Stage::Acceleration,
+                                                            new SimTK::Value<SimTK::Vec6>());
     }
 
     const WeldFrames& getFrames(const SimTK::State& s) const {
@@ -110,6 +116,30 @@ public:
         return r;
     }
 
+    // While held by the lock, the reaction on O along M's axes (N m about M's origin, N): minus the
+    // lock's motion forces (Simbody's prescribed-motion multipliers tau enter as M udot = f - tau,
+    // like constraint multipliers), which for O's Free mobilizer are the moment about its outboard
+    // frame's origin and the force, both in its inboard frame on H. Computed once per
+    // realization: the six witnesses all read it.
+    const SimTK::Vec6& findLockReaction(const SimTK::State& s) const {
+        if (forces_.isCacheValueRealized(s, lockReactionIndex_)) {
+            return SimTK::Value<SimTK::Vec6>::downcast(forces_.getCacheEntry(s, lockReactionIndex_)).get();
+        }
+        SimTK::Vector tau;
+        matter_.findMotionForces(s, tau);
+        const int u0 = bodyO_.getFirstUIndex(s);
+        const SimTK::Rotation R_GF = bodyH_.getBodyRotation(s) * bodyO_.getInboardFrame(s).R();
+        const SimTK::Vec3 m_G = -(R_GF * SimTK::Vec3(tau[u0], tau[u0 + 1], tau[u0 + 2]));
+        const SimTK::Vec3 f_G = -(R_GF * SimTK::Vec3(tau[u0 + 3], tau[u0 + 4], tau[u0 + 5]));
+        const SimTK::Vec3 p_GMobilizer = bodyO_.getBodyTransform(s) * bodyO_.getOutboardFrame(s).p();
+        const SimTK::Rotation R_GM = findR_GM(s);
+        SimTK::Vec6& f = SimTK::Value<SimTK::Vec6>::updDowncast(forces_.updCacheEntry(s, lockReactionIndex_)).upd();
+        f.updSubVec<3>(0) = ~R_GM * (m_G + (p_GMobilizer - findP_GM(s)) % f_G);
+        f.updSubVec<3>(3) = ~R_GM * f_G;
+        forces_.markCacheValueRealized(s, lockReactionIndex_);
+        return f;
+    }
+
     // Generalized force of the sliding axes on O (N m, N; along M's axes).
     SimTK::Vec6 findSlidingForce(const SimTK::State& s) const {
         SimTK::Vec6 f(0);
@@ -145,6 +175,7 @@ public:
     SimTK::Real calcPotentialEnergy(const SimTK::State&) const override { return 0; }
 
 private:
+    const SimTK::SimbodyMatterSubsystem& matter_;
     const SimTK::GeneralForceSubsystem& forces_;
     SimTK::MobilizedBody bodyH_;
     WeldFrames defaultFrames_;
@@ -153,6 +184,7 @@ private:
     mutable SimTK::DiscreteVariableIndex settingsIndex_;
     mutable SimTK::DiscreteVariableIndex engagedIndex_;
     mutable SimTK::DiscreteVariableIndex framesIndex_;
+    mutable SimTK::CacheEntryIndex lockReactionIndex_;
 };
 
 // One witness per axis, negative while the axis's mode is consistent: stuck, |lambda| - L;
@@ -188,12 +220,15 @@ LimitedWeld::LimitedWeld(SimTK::MultibodySystem& system, SimTK::SimbodyMatterSub
                          SimTK::GeneralForceSubsystem& forces, const SimTK::MobilizedBody& bodyH,
                          const SimTK::Transform& X_HF, const SimTK::MobilizedBody& bodyO,
                          const SimTK::Transform& X_OM)
-    : system_(system) {
+    : system_(system),
+      bodyO_(bodyO),
+      lockable_(SimTK::MobilizedBody::Free::isInstanceOf(bodyO) &&
+                bodyO.getParentMobilizedBody().getMobilizedBodyIndex() == bodyH.getMobilizedBodyIndex()) {
     if (bodyH.getMobilizedBodyIndex() == bodyO.getMobilizedBodyIndex()) {
         throw InputError("limited weld: body H and body O are the same body (index " +
                          std::to_string(int(bodyH.getMobilizedBodyIndex())) + ")");
     }
-    elements_ = new Elements(forces, bodyH, X_HF, bodyO, X_OM);
+    elements_ = new Elements(matter, forces, bodyH, X_HF, bodyO, X_OM);
     force_ = SimTK::Force::Custom(forces, elements_);
     for (int k = 0; k < 6; ++k) {
         const Elements* elements = elements_;
@@ -209,6 +244,7 @@ LimitedWeld::LimitedWeld(SimTK::MultibodySystem& system, SimTK::SimbodyMatterSub
 bool LimitedWeld::isEnabled(const SimTK::State& state) const { return elements_->getModes(state).enabled; }
 
 void LimitedWeld::setEnabled(SimTK::State& state, bool enabled) const {
+    if (isHeldByLock(state)) holdByConstraints(state);
     WeldModes& modes = elements_->updModes(state);
     modes.enabled = enabled;
     modes.direction.fill(0);
@@ -226,6 +262,8 @@ void LimitedWeld::setEnabled(SimTK::State& state, bool enabled) const {
     system_.projectU(state, kProjectionAccuracy);
     releaseOverloadedAxes(state);
 }
+
+bool LimitedWeld::isHeldByLock(const SimTK::State& state) const { return elements_->getModes(state).heldByLock; }
 
 void LimitedWeld::setFrames(SimTK::State& state, const SimTK::Transform& X_HF, const SimTK::Transform& X_OM) const {
     elements_->setFrames(state, WeldFrames{X_HF, X_OM});
@@ -309,7 +347,9 @@ const SimTK::Transform& LimitedWeld::findEngagedTransform(const SimTK::State& st
 
 SimTK::Transform LimitedWeld::findTransform(const SimTK::State& state) const { return elements_->findX_FM(state); }
 
+// The constraint's multiplier, or what it would be (minus the reaction) while the lock holds.
 double LimitedWeld::findMultiplier(const SimTK::State& state, int axis) const {
+    if (isHeldByLock(state)) return -elements_->findLockReaction(state)[axis];
     return constraints_[axis].getMultipliersAsVector(state)[0];
 }
 
@@ -337,12 +377,31 @@ void LimitedWeld::stick(SimTK::State& state, int axis) const {
 }
 
 void LimitedWeld::slide(SimTK::State& state, int axis, int direction) const {
+    if (isHeldByLock(state)) holdByConstraints(state);
     elements_->updModes(state).direction[axis] = direction;
     constraints_[axis].disable(state);
 }
 
+// Every axis stuck: the same rigid attachment as the six constraints, with no multipliers to solve
+// for. The relative velocity is already zero (projected when the axes stuck), so the lock's u = 0
+// changes nothing but round-off.
+void LimitedWeld::holdByLock(SimTK::State& state) const {
+    for (const SimTK::Constraint::Custom& c : constraints_) c.disable(state);
+    bodyO_.lock(state, SimTK::Motion::Position);
+    elements_->updModes(state).heldByLock = true;
+}
+
+void LimitedWeld::holdByConstraints(SimTK::State& state) const {
+    bodyO_.unlock(state);
+    WeldModes& modes = elements_->updModes(state);
+    modes.heldByLock = false;
+    for (int k = 0; k < 6; ++k) {
+        if (modes.direction[k] == 0) constraints_[k].enable(state);
+    }
+}
+
 // Stuck axes over their limit start sliding, the most overloaded first (releasing one changes
-// the others' reactions).
+// the others' reactions); if none is sliding after that, the lock takes over from the constraints.
 void LimitedWeld::releaseOverloadedAxes(SimTK::State& state) const {
     for (int pass = 0; pass < 6; ++pass) {
         system_.realize(state, SimTK::Stage::Acceleration);
@@ -357,9 +416,12 @@ void LimitedWeld::releaseOverloadedAxes(SimTK::State& state) const {
                 worstExcess = excess;
             }
         }
-        if (worst < 0) return;
+        if (worst < 0) break;
         slide(state, worst, findMultiplier(state, worst) >= 0 ? 1 : -1);
     }
+    const std::array<int, 6>& direction = elements_->getModes(state).direction;
+    const bool allStuck = std::all_of(direction.begin(), direction.end(), [](int d) { return d == 0; });
+    if (lockable_ && allStuck && !isHeldByLock(state)) holdByLock(state);
     system_.realize(state, SimTK::Stage::Acceleration);
 }
 

@@ -67,7 +67,8 @@ GraspScene::GraspScene(const scenario::Scenario& scenario, const SimulationOptio
                          "and the rigid stepper runs none); use --mode full or --contact compliant");
     }
     checkApproxAttach(scenario, options);
-    addObject();
+    addObject(options.mode == SimulationMode::Approx && options.approx.attach != ApproxAttach::Multi &&
+              options.approx.constraint == ApproxConstraint::Weld);
     addContacts();
     if (options.mode == SimulationMode::Approx) {
         if (options.approx.attach == ApproxAttach::Multi) {
@@ -92,13 +93,20 @@ GraspScene::GraspScene(const scenario::Scenario& scenario, const SimulationOptio
     model_.realizeTopology();
 }
 
-void GraspScene::addObject() {
+// On the palm for the weld, so that the weld can hold it by a lock (limited_weld.h); then a Weld
+// constraint to Ground, not a lock, holds it until its release.
+void GraspScene::addObject(bool onPalm) {
     const model::ModelDescription objectModel = scenario::buildObjectModel(scenario_.object);
     const model::Body& b = objectModel.bodies.at(0);
     const SimTK::Vec3 p_OCm = toVec3(b.p_BCm);
     const SimTK::Inertia I_Cm(b.inertia.xx, b.inertia.yy, b.inertia.zz, b.inertia.xy, b.inertia.xz, b.inertia.yz);
     const SimTK::Body::Rigid body(SimTK::MassProperties(b.mass, p_OCm, I_Cm.shiftFromMassCenter(p_OCm, b.mass)));
-    object_ = SimTK::MobilizedBody::Free(model_.updMatter().updGround(), SimTK::Transform(), body, SimTK::Transform());
+    SimTK::MobilizedBody& parent = onPalm ? updPalm() : model_.updMatter().updGround();
+    object_ = SimTK::MobilizedBody::Free(parent, SimTK::Transform(), body, SimTK::Transform());
+    if (onPalm) {
+        groundHold_ = SimTK::Constraint::Weld(model_.updMatter().updGround(), toTransform(scenario_.object.findPose()),
+                                              object_, SimTK::Transform());
+    }
 }
 
 void GraspScene::addContacts() {
@@ -201,6 +209,8 @@ void GraspScene::addMultiAttachment() {
 
 const SimTK::MobilizedBody& GraspScene::getPalm() const { return model_.getMobilizedBody(kPalm); }
 
+SimTK::MobilizedBody& GraspScene::updPalm() { return model_.updMatter().updMobilizedBody(getPalm().getMobilizedBodyIndex()); }
+
 void GraspScene::addController(const SimulationOptions& options) {
     const model::ModelDescription& d = model_.getDescription();
     std::vector<control::ControlledJoint> joints;
@@ -246,8 +256,7 @@ SimTK::State GraspScene::makeInitialState() {
         targets[static_cast<int>(k)] = it->second;
     }
     pd_->setTargets(state, targets);
-    object_.setQToFitTransform(state, toTransform(scenario_.object.findPose()));
-    object_.lock(state, SimTK::Motion::Position);
+    placeObject(state);
     if (!bushing_.isEmptyHandle()) bushing_.setEnabled(state, false);
     if (multi_) multi_->detachAll(state);  // contact holds the object until the switch engages
     model_.getSystem().realize(state, SimTK::Stage::Position);
@@ -267,6 +276,19 @@ SimTK::State GraspScene::makeInitialState() {
     return state;
 }
 
+// At the scenario's pose in Ground, held there: by a lock on Ground, or by the Ground weld when the
+// object hangs from the palm (its coordinates then depend on where the grasp pose put the palm).
+void GraspScene::placeObject(SimTK::State& state) const {
+    const SimTK::Transform X_GO = toTransform(scenario_.object.findPose());
+    if (groundHold_.isEmptyHandle()) {
+        object_.setQToFitTransform(state, X_GO);
+        object_.lock(state, SimTK::Motion::Position);
+        return;
+    }
+    model_.getSystem().realize(state, SimTK::Stage::Position);
+    object_.setQToFitTransform(state, ~getPalm().getBodyTransform(state) * X_GO);
+}
+
 double GraspScene::findMaxFingertipGoalDistance(const SimTK::State& state) const {
     getSystem().realize(state, SimTK::Stage::Position);
     const SimTK::Transform& X_GO = object_.getBodyTransform(state);
@@ -278,6 +300,16 @@ double GraspScene::findMaxFingertipGoalDistance(const SimTK::State& state) const
     return worst;
 }
 
-void GraspScene::releaseObject(SimTK::State& state) const { object_.unlock(state); }
+void GraspScene::releaseObject(SimTK::State& state) const {
+    if (groundHold_.isEmptyHandle()) {
+        object_.unlock(state);
+    } else {
+        groundHold_.disable(state);
+    }
+}
+
+bool GraspScene::isObjectHeld(const SimTK::State& state) const {
+    return groundHold_.isEmptyHandle() ? object_.isLocked(state) : !groundHold_.isDisabled(state);
+}
 
 }  // namespace graspsim::simulation

@@ -119,7 +119,7 @@ public:
 
 private:
     int findPhase(const SimTK::State& s) const {
-        if (scene_.getObject().isLocked(s)) return 0;
+        if (scene_.isObjectHeld(s)) return 0;
         const GraspSwitch* grasp = scene_.getGraspSwitch();
         if (!grasp || grasp->getEvents().empty()) return 1;
         const auto& events = grasp->getEvents();

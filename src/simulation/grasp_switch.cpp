@@ -151,7 +151,7 @@ void GraspSwitch::handleEvent(SimTK::State& state, SimTK::Real accuracy, bool& s
         return;
     }
     controller_.handleEvent(state, accuracy, shouldTerminate);
-    if (!scene_.getObject().isLocked(state)) checkEngage(state);  // only once the object is released
+    if (!scene_.isObjectHeld(state)) checkEngage(state);  // only once the object is released
 }
 
 double GraspSwitch::calcQuality(const SimTK::State& state) const {

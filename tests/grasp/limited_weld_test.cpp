@@ -13,6 +13,7 @@
 #include <cmath>
 #include <memory>
 #include <string>
+#include <tuple>
 
 #include "graspsim/error.h"
 
@@ -49,14 +50,21 @@ private:
     double offTime_;
 };
 
-// The scene: O's centre at the Ground origin, M = O's frame, F = Ground's frame.
+// The scene: O's centre at the Ground origin, M = O's frame, F = H's frame at the Ground origin.
+// `lockable`: H is Ground, O's parent, so an all-stuck weld is O's mobilizer lock; otherwise H is
+// a base welded to Ground at the origin, not O's parent, and the weld uses its constraints only.
 struct WeldedBox {
+    explicit WeldedBox(bool lockable = false)
+        : weld(system, matter, forces, lockable ? SimTK::MobilizedBody(matter.Ground()) : SimTK::MobilizedBody(base),
+               SimTK::Transform(), box, SimTK::Transform()) {}
+
     SimTK::MultibodySystem system;
     SimTK::SimbodyMatterSubsystem matter{system};
     SimTK::GeneralForceSubsystem forces{system};
+    SimTK::MobilizedBody::Weld base{matter.Ground(), SimTK::Body::Rigid(SimTK::MassProperties(1, Vec3(0), SimTK::UnitInertia(1)))};
     SimTK::MobilizedBody::Free box{matter.Ground(), SimTK::Body::Rigid(SimTK::MassProperties(
                                                         kMass, Vec3(0), SimTK::UnitInertia(kInertia / kMass)))};
-    LimitedWeld weld{system, matter, forces, matter.Ground(), SimTK::Transform(), box, SimTK::Transform()};
+    LimitedWeld weld;
 
     void addLoad(const Vec3& torque, const Vec3& force, double offTime = SimTK::Infinity) {
         SimTK::Force::Custom(forces, new StepLoad(box, SimTK::SpatialVec(torque, force), offTime));
@@ -79,27 +87,34 @@ Vec6 limitOn(WeldAxis axis, double limit) {
     return limits;
 }
 
-class LimitedWeldDynamics : public testing::TestWithParam<IntegratorKind> {};
+// Each case with each integrator, and with the weld held by constraints only or, while every
+// axis sticks, by O's mobilizer lock: the same oracles hold for both.
+class LimitedWeldDynamics : public testing::TestWithParam<std::tuple<IntegratorKind, bool>> {
+protected:
+    IntegratorKind getIntegrator() const { return std::get<0>(GetParam()); }
+    bool isLockable() const { return std::get<1>(GetParam()); }
+};
 
 TEST_P(LimitedWeldDynamics, HoldsAForceBelowTheLimit) {
-    WeldedBox scene;
+    WeldedBox scene(isLockable());
     const double force = 0.75 * kLinearLimit;
     scene.addLoad(Vec3(0), Vec3(force, 0, 0));
-    SteppedRun run(GetParam(), scene.system, scene.makeState(limitOn(WeldAxis::TranslationX, kLinearLimit)), 1e-6, false);
+    SteppedRun run(getIntegrator(), scene.system, scene.makeState(limitOn(WeldAxis::TranslationX, kLinearLimit)), 1e-6, false);
     const SimTK::State& state = run.stepTo(0.5);
     EXPECT_LT(scene.box.getBodyOriginLocation(state).norm(), kHeldDrift);
     EXPECT_LT(scene.box.getBodyVelocity(state).norm(), 1e-9);
     EXPECT_FALSE(scene.weld.isSliding(state, WeldAxis::TranslationX));
+    EXPECT_EQ(scene.weld.isHeldByLock(state), isLockable());
     scene.system.realize(state, SimTK::Stage::Acceleration);
     EXPECT_NEAR(scene.weld.findWrench(state)[1][0], -force, 1e-9 * force);
     EXPECT_NEAR(scene.weld.findGeneralizedForce(state)[toIndex(WeldAxis::TranslationX)], -force, 1e-9 * force);
 }
 
 TEST_P(LimitedWeldDynamics, SlidesWithTheExcessForceAboveTheLimit) {
-    WeldedBox scene;
+    WeldedBox scene(isLockable());
     const double force = -2.5 * kLinearLimit;  // along -x: the slip direction follows the load
     scene.addLoad(Vec3(0), Vec3(force, 0, 0));
-    SteppedRun run(GetParam(), scene.system, scene.makeState(limitOn(WeldAxis::TranslationX, kLinearLimit)), 1e-6, false);
+    SteppedRun run(getIntegrator(), scene.system, scene.makeState(limitOn(WeldAxis::TranslationX, kLinearLimit)), 1e-6, false);
     const double t1 = 0.1, t2 = 0.3;
     const double v1 = scene.box.getBodyVelocity(run.stepTo(t1))[1][0];
     const SimTK::State& state = run.stepTo(t2);
@@ -115,10 +130,10 @@ TEST_P(LimitedWeldDynamics, SlidesWithTheExcessForceAboveTheLimit) {
 }
 
 TEST_P(LimitedWeldDynamics, HoldsATorqueBelowTheLimit) {
-    WeldedBox scene;
+    WeldedBox scene(isLockable());
     const double torque = 0.5 * kAngularLimit;
     scene.addLoad(Vec3(0, 0, torque), Vec3(0));
-    SteppedRun run(GetParam(), scene.system, scene.makeState(limitOn(WeldAxis::RotationZ, kAngularLimit)), 1e-6, false);
+    SteppedRun run(getIntegrator(), scene.system, scene.makeState(limitOn(WeldAxis::RotationZ, kAngularLimit)), 1e-6, false);
     const SimTK::State& state = run.stepTo(0.5);
     EXPECT_LT(std::abs(calcAngleAboutZ(scene.box.getBodyRotation(state))), kHeldDrift);
     EXPECT_FALSE(scene.weld.isSliding(state, WeldAxis::RotationZ));
@@ -127,10 +142,10 @@ TEST_P(LimitedWeldDynamics, HoldsATorqueBelowTheLimit) {
 }
 
 TEST_P(LimitedWeldDynamics, SpinsWithTheExcessTorqueAboveTheLimit) {
-    WeldedBox scene;
+    WeldedBox scene(isLockable());
     const double torque = 3 * kAngularLimit;
     scene.addLoad(Vec3(0, 0, torque), Vec3(0));
-    SteppedRun run(GetParam(), scene.system, scene.makeState(limitOn(WeldAxis::RotationZ, kAngularLimit)), 1e-6, false);
+    SteppedRun run(getIntegrator(), scene.system, scene.makeState(limitOn(WeldAxis::RotationZ, kAngularLimit)), 1e-6, false);
     // About 2.5 rad by t2: the axes turn with O, and z stays z.
     const double t1 = 0.2, t2 = 0.5;
     const double w1 = scene.box.getBodyVelocity(run.stepTo(t1))[0][2];
@@ -149,20 +164,23 @@ TEST_P(LimitedWeldDynamics, SpinsWithTheExcessTorqueAboveTheLimit) {
 // Pushed with 2.5 L until t1, then free: O accelerates at a1 = 1.5 L / m, decelerates at L / m,
 // stops at t1 + v1 m / L and sticks at x1 + v1^2 m / (2 L).
 TEST_P(LimitedWeldDynamics, SticksAgainWhenTheForceDrops) {
-    WeldedBox scene;
+    WeldedBox scene(isLockable());
     const double force = 2.5 * kLinearLimit, t1 = 0.1;
     scene.addLoad(Vec3(0), Vec3(force, 0, 0), t1);
-    SteppedRun run(GetParam(), scene.system, scene.makeState(limitOn(WeldAxis::TranslationX, kLinearLimit)), 1e-6, false);
+    SteppedRun run(getIntegrator(), scene.system, scene.makeState(limitOn(WeldAxis::TranslationX, kLinearLimit)), 1e-6, false);
     const double a1 = (force - kLinearLimit) / kMass, v1 = a1 * t1;
     const double tStop = t1 + v1 * kMass / kLinearLimit;
     const double xStop = 0.5 * a1 * t1 * t1 + v1 * v1 * kMass / (2 * kLinearLimit);
-    EXPECT_TRUE(scene.weld.isSliding(run.stepTo(t1), WeldAxis::TranslationX));
+    const SimTK::State& atT1 = run.stepTo(t1);
+    EXPECT_TRUE(scene.weld.isSliding(atT1, WeldAxis::TranslationX));
+    EXPECT_FALSE(scene.weld.isHeldByLock(atT1));  // the lock gave way to the slide
     const SimTK::State& sliding = run.stepTo(0.5 * (t1 + tStop));
     EXPECT_NEAR(scene.box.getBodyVelocity(sliding)[1][0], 0.5 * v1, 0.02 * 0.5 * v1);
     const SimTK::State& state = run.stepTo(tStop + 0.2);
     EXPECT_FALSE(scene.weld.isSliding(state, WeldAxis::TranslationX));
     EXPECT_NEAR(scene.box.getBodyOriginLocation(state)[0], xStop, 0.005 * xStop);
     EXPECT_LT(scene.box.getBodyVelocity(state).norm(), 1e-9);
+    EXPECT_EQ(scene.weld.isHeldByLock(state), isLockable());  // and took over again
     scene.system.realize(state, SimTK::Stage::Acceleration);
     EXPECT_LT(scene.weld.findWrench(state).norm(), 1e-9);  // nothing left to resist
 }
@@ -171,13 +189,13 @@ TEST_P(LimitedWeldDynamics, SticksAgainWhenTheForceDrops) {
 // x slides with (Fx - Lx) / m, y (locked) and rotation z (under its limit) hold, and the
 // reaction is -Lx, -Fy, -Tz.
 TEST_P(LimitedWeldDynamics, RelievesOnlyTheOverloadedAxis) {
-    WeldedBox scene;
+    WeldedBox scene(isLockable());
     const Vec3 force(3 * kLinearLimit, 5.0, 0), torque(0, 0, 0.8 * kAngularLimit);
     scene.addLoad(torque, force);
     Vec6 limits(SimTK::Infinity);
     limits[toIndex(WeldAxis::TranslationX)] = kLinearLimit;
     limits[toIndex(WeldAxis::RotationZ)] = kAngularLimit;
-    SteppedRun run(GetParam(), scene.system, scene.makeState(limits), 1e-6, false);
+    SteppedRun run(getIntegrator(), scene.system, scene.makeState(limits), 1e-6, false);
     const double t1 = 0.1, t2 = 0.2;
     const double v1 = scene.box.getBodyVelocity(run.stepTo(t1))[1][0];
     const SimTK::State& state = run.stepTo(t2);
@@ -194,11 +212,13 @@ TEST_P(LimitedWeldDynamics, RelievesOnlyTheOverloadedAxis) {
     EXPECT_NEAR(wrench[0][2], -torque[2], 1e-9);
 }
 
-INSTANTIATE_TEST_SUITE_P(Integrators, LimitedWeldDynamics,
-                         testing::Values(IntegratorKind::RungeKuttaMerson, IntegratorKind::CPodes),
-                         [](const testing::TestParamInfo<IntegratorKind>& paramInfo) {
-                             return std::string(paramInfo.param == IntegratorKind::CPodes ? "CPodes"
-                                                                                          : "RungeKuttaMerson");
+INSTANTIATE_TEST_SUITE_P(IntegratorsAndHolds, LimitedWeldDynamics,
+                         testing::Combine(testing::Values(IntegratorKind::RungeKuttaMerson, IntegratorKind::CPodes),
+                                          testing::Bool()),
+                         [](const testing::TestParamInfo<std::tuple<IntegratorKind, bool>>& paramInfo) {
+                             const bool cpodes = std::get<0>(paramInfo.param) == IntegratorKind::CPodes;
+                             return std::string(cpodes ? "CPodes" : "RungeKuttaMerson") +
+                                    (std::get<1>(paramInfo.param) ? "Lock" : "Constraints");
                          });
 
 // Two free boxes welded with every axis locked, spinning and moving together as one rigid body
@@ -302,6 +322,56 @@ TEST(LimitedWeld, EnablingKeepsThePoseAndStopsTheRelativeMotion) {
     EXPECT_LT((scene.weld.findEngagedTransform(state).p() - X_GO.p()).norm(), 1e-15);
     scene.system.realize(state, SimTK::Stage::Velocity);
     EXPECT_LT(scene.box.getBodyVelocity(state).norm(), 1e-10);
+}
+
+// The lock's reaction, read from its motion forces in the mobilizer's frames, against the six
+// constraints' multipliers (second method) for the same pose and load, with F, M and the
+// mobilizer's frames all apart and turned: H a base welded to Ground at a turned pose, O either
+// H's child (lock) or Ground's (constraints) at the same pose in Ground, under gravity and a
+// load off its centre. Every axis locked, so both hold.
+struct OffsetWeld {
+    explicit OffsetWeld(bool onBase)
+        : box(onBase ? static_cast<SimTK::MobilizedBody&>(base) : static_cast<SimTK::MobilizedBody&>(matter.updGround()),
+              SimTK::Transform(SimTK::Rotation(0.3, SimTK::XAxis), Vec3(0.01, 0, 0)),
+              SimTK::Body::Rigid(SimTK::MassProperties(kMass, Vec3(0.01, -0.02, 0), SimTK::UnitInertia(0.02, 0.03, 0.04))),
+              SimTK::Transform(SimTK::Rotation(-0.5, SimTK::YAxis), Vec3(0, 0.02, 0.01))),
+          weld(system, matter, forces, base, X_HF, box, X_OM),
+          lockable(onBase) {
+        SimTK::Force::Gravity(forces, matter, SimTK::UnitVec3(0.2, -1, 0.1), 9.81);
+        SimTK::Force::ConstantForce(forces, box, Vec3(0.03, 0.01, -0.02), Vec3(1, -2, 0.5));
+        SimTK::Force::ConstantTorque(forces, box, Vec3(0.3, 0.1, -0.2));
+    }
+    // The weld's reaction on O at pose X_GO, in Ground.
+    SimTK::SpatialVec findWrench(const SimTK::Transform& X_GO) {
+        SimTK::State state = system.realizeTopology();
+        const SimTK::Transform X_PO = lockable ? ~X_GB * X_GO : X_GO;  // in O's parent
+        box.setQToFitTransform(state, ~box.getInboardFrame(state) * X_PO * box.getOutboardFrame(state));
+        system.realize(state, SimTK::Stage::Position);
+        EXPECT_LT((box.getBodyTransform(state).p() - X_GO.p()).norm(), 1e-12);
+        weld.setEnabled(state, true);
+        EXPECT_EQ(weld.isHeldByLock(state), lockable);
+        system.realize(state, SimTK::Stage::Acceleration);
+        return weld.findWrench(state);
+    }
+
+    SimTK::MultibodySystem system;
+    SimTK::SimbodyMatterSubsystem matter{system};
+    SimTK::GeneralForceSubsystem forces{system};
+    const SimTK::Transform X_GB{SimTK::Rotation(0.7, SimTK::UnitVec3(1, 1, 0)), Vec3(0.1, 0.2, -0.1)};
+    SimTK::MobilizedBody::Weld base{matter.Ground(), X_GB, SimTK::Body::Rigid(SimTK::MassProperties(1, Vec3(0), SimTK::UnitInertia(1))), SimTK::Transform()};
+    SimTK::MobilizedBody::Free box;
+    const SimTK::Transform X_HF{SimTK::Rotation(0.2, SimTK::ZAxis), Vec3(0.05, 0, 0)};
+    const SimTK::Transform X_OM{SimTK::Rotation(-0.4, SimTK::XAxis), Vec3(0, 0.03, 0.02)};
+    LimitedWeld weld;
+    bool lockable;
+};
+
+TEST(LimitedWeld, LockReactionEqualsTheConstraintReaction) {
+    const SimTK::Transform X_GO(SimTK::Rotation(0.9, SimTK::UnitVec3(1, 2, 3)), Vec3(0.12, 0.17, -0.06));
+    OffsetWeld locked(true), constrained(false);
+    const SimTK::SpatialVec byLock = locked.findWrench(X_GO), byConstraints = constrained.findWrench(X_GO);
+    EXPECT_GT(byLock.norm(), 1.0);
+    EXPECT_LT((byLock - byConstraints).norm(), 1e-9 * byConstraints.norm()) << byLock << " vs " << byConstraints;
 }
 
 TEST(LimitedWeld, DisabledWeldAppliesNothing) {

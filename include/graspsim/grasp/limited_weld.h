@@ -32,8 +32,18 @@
 /// keeps r = 0 (CPodes projects the velocity constraints to its tolerance), so it may drift
 /// slowly; there is no position-level restoring term.
 ///
+/// Held by a lock: when O hangs from H on a Free mobilizer (O's parent is H), a weld with every
+/// axis stuck does not use the six constraints: it locks O's mobilizer (MobilizedBody::lock at
+/// the current pose, u = 0), the same rigid attachment with no Lagrange multipliers to solve for,
+/// so the engaged system costs about what it would with O part of H. The lock's motion forces
+/// (SimbodyMatterSubsystem::findMotionForces) are the reaction, which the witnesses compare
+/// with the limits as they do the multipliers; when an axis must slide, the lock gives way to
+/// the constraints (the five stuck axes) and the sliding force, and when every axis sticks
+/// again it takes over again. While locked the pose is held exactly (no drift). Locking is
+/// an Instance-stage change, as switching the constraints is.
+///
 /// Stages: enabling/disabling the weld and the per-axis stick/slide modes are Instance-stage
-/// (they switch constraints on and off); limits and locks are Dynamics-stage. Change them in an
+/// (they switch constraints on and off); limits and axis locks are Dynamics-stage. Change them in an
 /// event handler (the TimeStepper re-realizes and reinitializes the integrator after it) or
 /// before Integrator::initialize(). The weld needs a stepper that runs its handlers (SimTK::TimeStepper,
 /// integration::SimbodyCpodesStepper, integration::CvodeIntegrator).
@@ -101,6 +111,9 @@ public:
     /// The limits in force: L_k, or +Infinity for a locked axis.
     SimTK::Vec6 findEffectiveLimits(const SimTK::State& state) const;
 
+    /// Whether every axis is stuck and O's mobilizer lock holds them (see the file comment); only
+    /// when O's parent is H on a Free mobilizer. Any stage.
+    bool isHeldByLock(const SimTK::State& state) const;
     /// Whether `axis` is sliding (enabled, its constraint off, carrying its limit).
     bool isSliding(const SimTK::State& state, WeldAxis axis) const;
     /// Slip direction s_k of `axis`: +1 or -1 while sliding, 0 while stuck or disabled.
@@ -126,9 +139,13 @@ private:
     void stick(SimTK::State& state, int axis) const;
     void slide(SimTK::State& state, int axis, int direction) const;
     void releaseOverloadedAxes(SimTK::State& state) const;
+    void holdByLock(SimTK::State& state) const;
+    void holdByConstraints(SimTK::State& state) const;
     double findMultiplier(const SimTK::State& state, int axis) const;
 
     const SimTK::MultibodySystem& system_;
+    SimTK::MobilizedBody bodyO_;
+    bool lockable_;  // O hangs from H on a Free mobilizer
     Elements* elements_ = nullptr;  // owned by the System (it is the Force::Custom's implementation)
     SimTK::Force::Custom force_;
     std::array<SimTK::Constraint::Custom, 6> constraints_;

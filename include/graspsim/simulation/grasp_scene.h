@@ -5,8 +5,15 @@
 ///
 /// The thesis's sequence (Figure 4.1): the hand is put in the grasp pose kinematically at t = 0
 /// ("forward kinematics once"); IK then tracks the fingertips to goal points just inside the
-/// object's surface so the fingers press. The object is held in place (its mobilizer locked)
-/// until the scenario's approach time, when it is released and only the grasp holds it.
+/// object's surface so the fingers press. The object is held in place until the scenario's
+/// approach time, when it is released and only the grasp holds it.
+///
+/// The object's mobilizer is Free, from Ground (held by locking it) except with the merged weld:
+/// there it is Free from the palm, so that the engaged weld can hold it by locking that mobilizer
+/// instead of solving six constraint equations (grasp::LimitedWeld, "held by a lock"), and a
+/// SimTK::Constraint::Weld to Ground holds it until its release (to the integrator's constraint
+/// tolerance where the lock is exact: a few micrometres by the release in the built-in scenarios).
+/// After the release the object is the same free rigid body either way; only its coordinates differ.
 ///
 /// In SimulationMode::Approx the scene also holds the approximation's parts: the friction-limited
 /// palm-object constraint chosen by ApproxOptions::constraint, a LimitedBushing or a LimitedWeld
@@ -107,15 +114,20 @@ public:
     /// The perturbation of this run, or nullptr.
     const PerturbationForce* getPerturbation() const { return perturbation_.get(); }
 
-    /// The state at t = 0: grasp pose, object at its initial pose and locked, IK targets set.
+    /// The state at t = 0: grasp pose, object at its initial pose and held, IK targets set.
     SimTK::State makeInitialState();
-    /// Releases the object (unlocks its mobilizer): an Instance-stage change.
+    /// Releases the object (unlocks its mobilizer, or disables the Ground weld that holds it): an
+    /// Instance-stage change.
     void releaseObject(SimTK::State& state) const;
+    /// Whether the object is still held at its initial pose (not yet released). Any stage.
+    bool isObjectHeld(const SimTK::State& state) const;
     /// When the object is released (s).
     double getReleaseTime() const { return scenario_.controller.approachTime; }
 
 private:
-    void addObject();
+    void addObject(bool onPalm);
+    void placeObject(SimTK::State& state) const;
+    SimTK::MobilizedBody& updPalm();
     void addContacts();
     void addController(const SimulationOptions& options);
     void addBushing();
@@ -126,6 +138,7 @@ private:
     const scenario::Scenario& scenario_;
     system::MultibodyModel model_;
     SimTK::MobilizedBody::Free object_;
+    SimTK::Constraint::Weld groundHold_;  // empty unless the object hangs from the palm
     ContactModel contactModel_ = ContactModel::Compliant;
     contact::CompliantContactForce contacts_;
     contact::RigidContactSet rigidContacts_;
