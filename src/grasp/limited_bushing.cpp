@@ -58,6 +58,11 @@ struct BushingResponse {
     SimTK::Vec6 force;  // generalized force on O (N m, N; in A)
 };
 
+struct BushingEvaluation {
+    BushingKinematics kinematics;
+    BushingResponse response;
+};
+
 }  // namespace
 
 class LimitedBushingImpl : public SimTK::Force::Custom::Implementation {
@@ -84,6 +89,8 @@ public:
         framesIndex_ = forces_.allocateDiscreteVariable(
             state, SimTK::Stage::Instance, new SimTK::Value<BushingFrames>(defaultFrames_));
         zIndex_ = forces_.allocateZ(state, SimTK::Vector(6, 0.0));
+        evaluationIndex_ = forces_.allocateLazyCacheEntry(state, SimTK::Stage::Dynamics,
+                                                          new SimTK::Value<BushingEvaluation>());
     }
 
     // ---- state variables ----------------------------------------------------------------
@@ -176,8 +183,9 @@ public:
         const SimTK::Transform X_GM = bodyO_.getBodyTransform(s) * frames.X_OM;
         return ~X_GF * X_GM;
     }
-    SimTK::Vec6 findDisplacement(const SimTK::State& s) const {
-        const SimTK::Transform X_AM = ~findAnchorTransform(s) * findX_FM(s);
+    SimTK::Vec6 findDisplacement(const SimTK::State& s) const { return calcDisplacement(findAnchorTransform(s), findX_FM(s)); }
+    static SimTK::Vec6 calcDisplacement(const SimTK::Transform& X_FA, const SimTK::Transform& X_FM) {
+        const SimTK::Transform X_AM = ~X_FA * X_FM;
         SimTK::Vec6 e;
         e.updSubVec<3>(0) = calcRotationVector(X_AM.R());
         e.updSubVec<3>(3) = X_AM.p();
@@ -191,7 +199,7 @@ public:
         const BushingFrames& frames = getFrames(s);
         k.R_GA = X_GH.R() * frames.X_HF.R() * X_FA.R();
         k.p_GM = X_GO * frames.X_OM.p();
-        k.e = findDisplacement(s);
+        k.e = calcDisplacement(X_FA, findX_FM(s));
         // Velocity of O's material point at M relative to H's coincident point: the rate of
         // p_FM taken in F. Using the coincident point keeps H's rotation out of the slip.
         const SimTK::SpatialVec& V_GH = bodyH_.getBodyVelocity(s);
@@ -214,27 +222,42 @@ public:
         }
         return response;
     }
+    // Kinematics and response in `s`, once per realization: calcForce, realizeDynamics and the
+    // accessors below (the grasp switch's Q at every check) all read them. Needs Stage::Velocity.
+    const BushingEvaluation& findEvaluation(const SimTK::State& s) const {
+        if (forces_.isCacheValueRealized(s, evaluationIndex_)) {
+            return SimTK::Value<BushingEvaluation>::downcast(forces_.getCacheEntry(s, evaluationIndex_)).get();
+        }
+        BushingEvaluation& evaluation =
+            SimTK::Value<BushingEvaluation>::updDowncast(forces_.updCacheEntry(s, evaluationIndex_)).upd();
+        evaluation.kinematics = findKinematics(s);
+        evaluation.response = calcResponse(s, evaluation.kinematics);
+        forces_.markCacheValueRealized(s, evaluationIndex_);
+        return evaluation;
+    }
     SimTK::SpatialVec findWrench(const SimTK::State& s) const {
         if (!isEnabled(s)) return SimTK::SpatialVec(SimTK::Vec3(0), SimTK::Vec3(0));
-        const BushingKinematics k = findKinematics(s);
-        const SimTK::Vec6 f = calcResponse(s, k).force;
-        return SimTK::SpatialVec(k.R_GA * f.getSubVec<3>(0), k.R_GA * f.getSubVec<3>(3));
+        const BushingEvaluation& evaluation = findEvaluation(s);
+        const SimTK::Vec6& f = evaluation.response.force;
+        const SimTK::Rotation& R_GA = evaluation.kinematics.R_GA;
+        return SimTK::SpatialVec(R_GA * f.getSubVec<3>(0), R_GA * f.getSubVec<3>(3));
     }
     bool isSliding(const SimTK::State& s, int axis) const {
         if (!isEnabled(s)) return false;
-        return calcResponse(s, findKinematics(s)).slip[axis] >= 0.5;
+        return findEvaluation(s).response.slip[axis] >= 0.5;
     }
     SimTK::Vec6 findGeneralizedForce(const SimTK::State& s) const {
         if (!isEnabled(s)) return SimTK::Vec6(0);
-        return calcResponse(s, findKinematics(s)).force;
+        return findEvaluation(s).response.force;
     }
 
     // ---- Force::Custom -------------------------------------------------------------------
     void calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>& bodyForces,
                    SimTK::Vector_<SimTK::Vec3>&, SimTK::Vector&) const override {
         if (!isEnabled(s)) return;
-        const BushingKinematics k = findKinematics(s);
-        const SimTK::Vec6 f = calcResponse(s, k).force;
+        const BushingEvaluation& evaluation = findEvaluation(s);
+        const BushingKinematics& k = evaluation.kinematics;
+        const SimTK::Vec6& f = evaluation.response.force;
         const SimTK::Vec3 M_G = k.R_GA * f.getSubVec<3>(0);
         const SimTK::Vec3 F_G = k.R_GA * f.getSubVec<3>(3);
         // Both bodies take the force at M's origin, so the pair adds no spurious moment.
@@ -250,8 +273,9 @@ public:
         SimTK::Vector& zdot = forces_.updZDot(s);
         zdot(int(zIndex_), 6) = 0;
         if (!isEnabled(s)) return;
-        const BushingKinematics k = findKinematics(s);
-        const BushingResponse response = calcResponse(s, k);
+        const BushingEvaluation& evaluation = findEvaluation(s);
+        const BushingKinematics& k = evaluation.kinematics;
+        const BushingResponse& response = evaluation.response;
         SimTK::Vec3 w_A0A_A, v_A0A_A;  // the anchor's own motion in F (= in A0), in A
         for (int i = 0; i < 3; ++i) {
             w_A0A_A[i] = response.slip[i] * k.r[i];
@@ -288,6 +312,7 @@ private:
     mutable SimTK::DiscreteVariableIndex settingsIndex_;
     mutable SimTK::DiscreteVariableIndex baseIndex_;
     mutable SimTK::DiscreteVariableIndex framesIndex_;
+    mutable SimTK::CacheEntryIndex evaluationIndex_;
     mutable SimTK::ZIndex zIndex_;
 };
 
