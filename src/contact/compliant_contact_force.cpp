@@ -1,6 +1,7 @@
 #include "graspsim/contact/compliant_contact_force.h"
 
 #include <algorithm>
+#include <numeric>
 
 #include <string>
 #include <utility>
@@ -242,6 +243,12 @@ void CompliantContactForce::checkPairIndex(int pairIndex) const {
 
 int CompliantContactForce::getNumPairs() const {
     return asContactImpl(getImplementation()).getNumPairs();
+}
+
+std::vector<int> CompliantContactForce::findAllPairIndices() const {
+    std::vector<int> pairs(static_cast<std::size_t>(getNumPairs()));
+    std::iota(pairs.begin(), pairs.end(), 0);
+    return pairs;
 }
 
 const ContactPair& CompliantContactForce::getPair(int pairIndex) const {

@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <numeric>
 #include <utility>
 
 namespace graspsim::simulation {
@@ -20,12 +19,6 @@ std::string format(const char* pattern, double a, double b = 0) {
     char buffer[160];
     std::snprintf(buffer, sizeof buffer, pattern, a, b);
     return buffer;
-}
-
-std::vector<int> allPairs(const contact::CompliantContactForce& contacts) {
-    std::vector<int> pairs(static_cast<std::size_t>(contacts.getNumPairs()));
-    std::iota(pairs.begin(), pairs.end(), 0);
-    return pairs;
 }
 
 // Eq. 4.1-4.3: F_perp = sum f_i . n_i; r = mean distance of the contact points to their centroid.
@@ -186,7 +179,7 @@ double GraspSwitch::calcEngagedQuality(const SimTK::State& state) const {
         // Multi: the fingers move on their own and the palm-fixed tracker does not apply; Q is that
         // of the contacts every pair would produce in `state`, switched on or not.
         scene_.getSystem().realize(state, SimTK::Stage::Velocity);
-        q = calcQualityOf(state, scene_.getContacts().findContactReports(state, allPairs(scene_.getContacts())));
+        q = calcQualityOf(state, scene_.getContacts().findContactReports(state, scene_.getContacts().findAllPairIndices()));
     }
     qualityMemo_ = {state.getTime(), state.getY(), q};
     return q;
@@ -239,7 +232,7 @@ void GraspSwitch::engage(SimTK::State& state, double quality, const std::vector<
     const SimTK::Vec6 limits = calcFrictionLimits(reports, scene_.getScenario().contact.dynamicFriction);
     const SimTK::Vec3 p_GC = findContactCentroid(reports);
     placeConstraintFrames(state, p_GC);
-    scene_.getContacts().setPairsEnabled(state, allPairs(scene_.getContacts()), false);  // (b)
+    scene_.getContacts().setPairsEnabled(state, scene_.getContacts().findAllPairIndices(), false);  // (b)
     setFingersMerged(state, true);                                                        // (c)
     enableConstraint(state, limits, findLeverArm(reports, p_GC));                         // (d)
     X_HO_engaged_ = ~scene_.getPalm().getBodyTransform(state) * scene_.getObject().getBodyTransform(state);
@@ -332,7 +325,7 @@ void GraspSwitch::release(SimTK::State& state, double quality, const std::string
         scene_.getBushing().setEnabled(state, false);
     }
     setFingersMerged(state, false);
-    scene_.getContacts().setPairsEnabled(state, allPairs(scene_.getContacts()), true);
+    scene_.getContacts().setPairsEnabled(state, scene_.getContacts().findAllPairIndices(), true);
     events_.push_back({state.getTime(), "release", quality, reason, findVelocityJump(state, v_before)});
 }
 

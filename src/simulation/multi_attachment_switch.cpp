@@ -11,7 +11,6 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <numeric>
 
 namespace graspsim::simulation {
 
@@ -200,9 +199,7 @@ double MultiAttachmentSwitch::findSmallestPressing(const SimTK::State& state) co
 void MultiAttachmentSwitch::release(SimTK::State& state) const {
     scene_.getMultiAttachment()->detachAll(state);
     const contact::CompliantContactForce& contacts = scene_.getContacts();
-    std::vector<int> all(static_cast<std::size_t>(contacts.getNumPairs()));
-    std::iota(all.begin(), all.end(), 0);
-    contacts.setPairsEnabled(state, all, true);
+    contacts.setPairsEnabled(state, contacts.findAllPairIndices(), true);
 }
 
 }  // namespace graspsim::simulation

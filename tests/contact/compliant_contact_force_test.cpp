@@ -201,6 +201,7 @@ TEST(CompliantContactForce, PairsCanStartDisabledAndBadIndicesAreRejected) {
     SimTK::State state = scene.system.realizeTopology();
     EXPECT_FALSE(force.isPairEnabled(state, 0));
     EXPECT_EQ(force.getNumPairs(), 1);
+    EXPECT_EQ(force.findAllPairIndices(), std::vector<int>{0});
     EXPECT_EQ(force.getPair(0).a.bodyName, "ball");
     try {
         force.setPairEnabled(state, 1, true);

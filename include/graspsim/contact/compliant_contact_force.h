@@ -81,6 +81,9 @@ public:
 
     /// Number of contact pairs.
     int getNumPairs() const;
+    /// Every pair's index, 0 .. getNumPairs() - 1: the list setPairsEnabled() and
+    /// findContactReports() take, for all pairs at once.
+    std::vector<int> findAllPairIndices() const;
     /// Pair `pairIndex`, as given to the constructor.
     /// @throws graspsim::InputError if pairIndex is out of range.
     const ContactPair& getPair(int pairIndex) const;
