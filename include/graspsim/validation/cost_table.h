@@ -9,9 +9,12 @@
 ///    (SimulationSummary: full-contact phase vs first engagement; the approximation's per
 ///    simulated second figures over its first second engaged and over the 20 s of hold after
 ///    it, with the time spent timing evaluations during the run taken out; and the floor state
-///    below integrated for 20 s the same way). The variable-step integrator takes longer steps
+///    below integrated for 20 s the same way, in wall time and in dynamics evaluations, a count
+///    that is the same on any machine). The variable-step integrator takes longer steps
 ///    once contact is gone, so per simulated second is the fair comparison: it is what a
-///    fixed-step engine's cost per step (the thesis's) measures;
+///    fixed-step engine's cost per step (the thesis's) measures. Wall times on a shared machine
+///    drift by tens of per cent over a minute, so the hold is also compared with its own floor
+///    timed back to back with it, window by window (ApproxCost::holdOverOwnFloor);
 ///  - per dynamics evaluation (one realization of the system to Stage::Acceleration from
 ///    Stage::Time, i.e. one right-hand side of the ODE, what every integrator step pays at
 ///    least once): in the full-contact state just before the approximation engages, in the
@@ -32,7 +35,16 @@ struct ApproxCost {
     double stepUs = 0;                   ///< µs per integrator step during the first engagement
     double wallPerSimSecond = 0;         ///< wall s per simulated s, first simulated second engaged
     double holdWallPerSimSecond = 0;     ///< wall s per simulated s over the 20 s of hold after that (median of 1-s windows)
-    double ownFloorHoldWallPerSimSecond = 0;  ///< the floor state in this run's System (its constraint off) integrated for 20 s, wall s per simulated s (median of 1-s windows)
+    /// The floor state in this run's System (its constraint off), integrated one simulated second
+    /// after each second of the hold (20 s), wall s per simulated s (median of 1-s windows).
+    double ownFloorHoldWallPerSimSecond = 0;
+    /// Hold / own floor, wall time: the median over the 20 pairs of windows timed back to back,
+    /// the figure least moved by a machine that slows down for a while.
+    double holdOverOwnFloor = 0;
+    /// Dynamics evaluations (System realizations of Stage::Acceleration) per simulated s over the
+    /// hold, and over the own floor's 20 s: counts, the same on any machine, unlike wall times.
+    double holdEvaluationsPerSimSecond = 0;
+    double ownFloorEvaluationsPerSimSecond = 0;
     double engageTime = -1;              ///< s; < 0 if it never engaged (then no figures)
     double fullRealizeUs = 0;            ///< one dynamics evaluation, full contact just before engaging (µs)
     double engagedRealizeUs = 0;         ///< one dynamics evaluation, engaged (µs)
@@ -50,9 +62,9 @@ struct ExperimentCost {
     /// The floor in the full-contact run's System, which holds no approximation elements: its last
     /// state with fingers and object locked and every pair off, integrated for 20 s (wall s per
     /// simulated s, median of 1-s windows) and one dynamics evaluation of it (µs). Both rows'
-    /// hold/floor use it: an approximation's own System can cost more even with its element off
-    /// (the weld's witnesses make CPodes evaluate the dynamics at every report).
+    /// hold/floor use it; ApproxCost has the floor in the approximation's own System beside it.
     double floorHoldWallPerSimSecond = 0;
+    double floorEvaluationsPerSimSecond = 0;  ///< the floor's dynamics evaluations per simulated s (a count)
     double floorRealizeUs = 0;
     std::vector<ApproxCost> approx;      ///< bushing, then weld
 };
