@@ -5,6 +5,8 @@
 #include "graspsim/simulation/grasp_simulation.h"
 #include "graspsim/simulation/grasp_switch.h"
 
+#include "run_timing.h"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -19,40 +21,6 @@
 namespace graspsim::validation {
 
 namespace {
-
-// One batch of `realizations` dynamics evaluations of `state`, µs each.
-double timeBatch(const SimTK::System& system, SimTK::State& state, int realizations) {
-    const auto start = std::chrono::steady_clock::now();
-    for (int k = 0; k < realizations; ++k) {
-        state.invalidateAllCacheAtOrAbove(SimTK::Stage::Time);
-        system.realize(state, SimTK::Stage::Acceleration);
-    }
-    return 1e6 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / realizations;
-}
-
-// Best of a few batches, so that another process taking the core for a moment does not count.
-double timeRealization(const SimTK::System& system, const SimTK::State& source, int realizations) {
-    SimTK::State state = source;
-    system.realize(state, SimTK::Stage::Acceleration);
-    double best = 1e300;
-    for (int batch = 0; batch < 5; ++batch) best = std::min(best, timeBatch(system, state, realizations));
-    return best;
-}
-
-// Two states of one System timed in alternating batches, best of each: a machine slowed for a
-// while slows both alike, so their ratio holds where separate timings drift apart.
-std::pair<double, double> timeRealizationPair(const SimTK::System& system, const SimTK::State& sourceA,
-                                              const SimTK::State& sourceB, int realizations) {
-    SimTK::State a = sourceA, b = sourceB;
-    system.realize(a, SimTK::Stage::Acceleration);
-    system.realize(b, SimTK::Stage::Acceleration);
-    double bestA = 1e300, bestB = 1e300;
-    for (int batch = 0; batch < 10; ++batch) {
-        bestA = std::min(bestA, timeBatch(system, a, realizations));
-        bestB = std::min(bestB, timeBatch(system, b, realizations));
-    }
-    return {bestA, bestB};
-}
 
 // The floor state: `state` with the approximation's element off, the fingers and the object locked
 // where they are and every finger-object pair off: the same arm and merged hand with no object
@@ -76,124 +44,86 @@ SimTK::State makeFloorState(const simulation::GraspScene& scene, const SimTK::St
 // 10 %: twenty windows make the median steady (four moved the phone's hold/floor by 1.26-1.39).
 constexpr double kHoldSeconds = 20.0;
 
-// Wall-clock time and dynamics evaluations (System realizations of Stage::Acceleration, one ODE
-// right-hand side each: machine-independent, unlike the wall time) of a run, with what the sample
-// observer spends (the per-evaluation timings: hundreds of milliseconds and thousands of
-// realizations) taken out, so that it does not count as simulation cost.
-class RunClock {
+// An approximation run's sample observer: times the full-contact and engaged evaluations, marks
+// the first engaged second and each second of the hold after it, and integrates the run's own floor
+// one simulated second after each of those seconds, all out of the run's clock.
+class ApproxRunMeter {
 public:
-    double now() const { return seconds() - observing_; }
-    long evaluations(const SimTK::System& system) const { return countEvaluations(system) - observedEvaluations_; }
-    void beginObserving(const SimTK::System& system) {
-        observeStart_ = seconds();
-        evaluationsAtStart_ = countEvaluations(system);
-    }
-    void endObserving(const SimTK::System& system) {
-        observing_ += seconds() - observeStart_;
-        observedEvaluations_ += countEvaluations(system) - evaluationsAtStart_;
-    }
-    double getObservingSeconds() const { return observing_; }
+    // `endTime`: the run's last sample, after which its System is gone.
+    ApproxRunMeter(ApproxCost& cost, int realizations, double endTime) : cost_(cost), realizations_(realizations), endTime_(endTime) {}
 
-private:
-    static double seconds() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
-    static long countEvaluations(const SimTK::System& system) { return system.getNumRealizationsOfThisStage(SimTK::Stage::Acceleration); }
-    double observing_ = 0, observeStart_ = 0;
-    long observedEvaluations_ = 0, evaluationsAtStart_ = 0;
-};
-
-// Simulated and (observer-free) wall time and evaluation count at a sample.
-struct Mark {
-    double time = -1, wall = 0;
-    long evaluations = 0;
-    bool isSet() const { return time >= 0; }
-};
-
-double wallPerSimSecond(const Mark& a, const Mark& b) { return b.time > a.time ? (b.wall - a.wall) / (b.time - a.time) : 0; }
-
-// The median wall s per simulated s over the windows between successive marks: one window slowed
-// by another process on a shared machine does not move it, and hold and floor are taken alike.
-double medianWallPerSimSecond(const std::vector<Mark>& marks) {
-    std::vector<double> rates;
-    for (std::size_t k = 1; k < marks.size(); ++k) rates.push_back(wallPerSimSecond(marks[k - 1], marks[k]));
-    if (rates.empty()) return 0;
-    std::sort(rates.begin(), rates.end());
-    const std::size_t n = rates.size();
-    return n % 2 ? rates[n / 2] : 0.5 * (rates[n / 2 - 1] + rates[n / 2]);
-}
-
-// Evaluations per simulated second from the first mark to the last: a count, the same on any machine.
-double evaluationsPerSimSecond(const std::vector<Mark>& marks) {
-    if (marks.size() < 2 || marks.back().time <= marks.front().time) return 0;
-    return double(marks.back().evaluations - marks.front().evaluations) / (marks.back().time - marks.front().time);
-}
-
-// A hold's cost per simulated second, in wall time and in dynamics evaluations.
-struct HoldCost {
-    double wallPerSimSecond = 0, evaluationsPerSimSecond = 0;
-};
-
-HoldCost findHoldCost(const std::vector<Mark>& marks) { return {medianWallPerSimSecond(marks), evaluationsPerSimSecond(marks)}; }
-
-// The floor over time: a floor state integrated by a CPodes integrator of the run's accuracy,
-// driven as integration::SimbodyCpodesStepper drives it (returning after every internal step, so
-// that triggers are checked at steps only) and reporting every ik_interval (interpolated, as the
-// engaged run's reports and switch checks are) with no event handler: the floor has no grasp to
-// check and no goals to track.
-class FloorRun {
-public:
-    FloorRun(const simulation::GraspScene& scene, const SimTK::State& floorState)
-        : system_(scene.getSystem()), integrator_(system_, SimTK::CPodes::BDF, SimTK::CPodes::Newton),
-          interval_(scene.getScenario().controller.ikInterval) {
-        integrator_.setAccuracy(scene.getScenario().simulation.accuracy);
-        integrator_.setReturnEveryInternalStep(true);
-        integrator_.initialize(floorState);
-        next_ = floorState.getTime() + interval_;
+    void observe(const simulation::GraspScene& scene, const SimTK::State& state) {
+        const Mark here = clock_.mark(state.getTime(), scene.getSystem());
+        const double before = clock_.getObservingSeconds();
+        clock_.beginObserving(scene.getSystem());
+        const simulation::GraspSwitch* grasp = scene.getGraspSwitch();
+        if (!scene.isObjectHeld(state) && grasp) observeReleased(scene, state, *grasp, here);
+        if (state.getTime() >= endTime_ - 1e-9) ownFloor_.reset();
+        clock_.endObserving(scene.getSystem());
+        if (engaged_.isSet()) observingWhileEngaged_ += clock_.getObservingSeconds() - before;
     }
 
-    // Integrates one more simulated second; its wall time and evaluations, from zero.
-    Mark advanceOneSecond() {
-        const auto wallStart = std::chrono::steady_clock::now();
-        const long evaluationsStart = system_.getNumRealizationsOfThisStage(SimTK::Stage::Acceleration);
-        const double end = integrator_.getTime() + 1.0;
-        while (integrator_.getTime() < end - 1e-12) {
-            const SimTK::Integrator::SuccessfulStepStatus status = integrator_.stepTo(std::min(end, next_));
-            if (status == SimTK::Integrator::ReachedEventTrigger) integrator_.reinitialize(SimTK::Stage::Report, false);
-            if (status == SimTK::Integrator::ReachedReportTime && integrator_.getTime() >= next_ - 1e-12) next_ += interval_;
-            if (status == SimTK::Integrator::EndOfSimulation) break;
+    void finish(const simulation::SimulationSummary& summary) {
+        cost_.engageTime = summary.engaged ? summary.engageTime : -1;
+        if (summary.approxSteps > 0) {
+            cost_.stepUs = (summary.approxStepUs * summary.approxSteps - 1e6 * observingWhileEngaged_) / summary.approxSteps;
         }
-        return {1.0, std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count(),
-                system_.getNumRealizationsOfThisStage(SimTK::Stage::Acceleration) - evaluationsStart};
+        cost_.wallPerSimSecond = wallPerSimSecond(engaged_, oneSecond_);
+        const HoldCost hold = findHoldCost(holdSeconds_);
+        cost_.holdWallPerSimSecond = hold.wallPerSimSecond;
+        cost_.holdEvaluationsPerSimSecond = hold.evaluationsPerSimSecond;
+        std::vector<Mark> floorMarks{{0, 0, 0}};
+        std::vector<double> floorWalls;
+        for (const Mark& one : ownFloorSeconds_) {
+            const Mark& last = floorMarks.back();
+            floorMarks.push_back({last.time + 1, last.wall + one.wall, last.evaluations + one.evaluations});
+            floorWalls.push_back(one.wall);
+        }
+        const HoldCost floor = findHoldCost(floorMarks);
+        cost_.ownFloorHoldWallPerSimSecond = floor.wallPerSimSecond;
+        cost_.ownFloorEvaluationsPerSimSecond = floor.evaluationsPerSimSecond;
+        cost_.holdOverOwnFloor = findMedianPairedRatio(holdSeconds_, floorWalls);
     }
 
 private:
-    const SimTK::System& system_;
-    SimTK::CPodesIntegrator integrator_;
-    double interval_, next_;
+    void observeReleased(const simulation::GraspScene& scene, const SimTK::State& state, const simulation::GraspSwitch& grasp,
+                         const Mark& here) {
+        if (!grasp.isEngaged(state) && grasp.getEvents().empty()) {
+            cost_.fullRealizeUs = timeRealization(scene.getSystem(), state, realizations_);
+        } else if (grasp.isEngaged(state) && !engaged_.isSet()) {
+            engaged_ = here;
+            const SimTK::State floor = makeFloorState(scene, state);
+            std::tie(cost_.engagedRealizeUs, cost_.ownFloorRealizeUs) =
+                timeRealizationPair(scene.getSystem(), state, floor, realizations_);
+            const scenario::Scenario& s = scene.getScenario();
+            ownFloor_ = std::make_unique<FloorRun>(scene.getSystem(), floor, s.simulation.accuracy, s.controller.ikInterval);
+        }
+        if (engaged_.isSet() && !oneSecond_.isSet() && here.time >= engaged_.time + 1.0 - 1e-9) {
+            oneSecond_ = here;
+            markHoldSecond(here);
+        } else if (grasp.isEngaged(state) && !holdSeconds_.empty() && here.time >= holdSeconds_.back().time + 1.0 - 1e-9) {
+            markHoldSecond(here);
+        }
+        if (!grasp.isEngaged(state)) ownFloor_.reset();
+    }
+
+    void markHoldSecond(const Mark& here) {
+        holdSeconds_.push_back(here);
+        if (!ownFloor_ || holdSeconds_.size() < 2) return;
+        ownFloorSeconds_.push_back(ownFloor_->advanceOneSecond());
+        if (ownFloorSeconds_.size() >= std::size_t(kHoldSeconds)) ownFloor_.reset();  // before the run's System goes
+    }
+
+    ApproxCost& cost_;
+    int realizations_;
+    double endTime_;
+    RunClock clock_;
+    Mark engaged_, oneSecond_;
+    std::vector<Mark> holdSeconds_;       // one mark per whole simulated second of the hold
+    std::unique_ptr<FloorRun> ownFloor_;  // this run's floor, one simulated second after each second of hold
+    std::vector<Mark> ownFloorSeconds_;
+    double observingWhileEngaged_ = 0;
 };
-
-// The floor integrated for kHoldSeconds on its own.
-HoldCost timeFloorHold(const simulation::GraspScene& scene, const SimTK::State& floorState) {
-    FloorRun floor(scene, floorState);
-    std::vector<Mark> seconds{{0, 0, 0}};
-    for (int k = 1; k <= int(kHoldSeconds); ++k) {
-        const Mark one = floor.advanceOneSecond();
-        seconds.push_back({double(k), seconds.back().wall + one.wall, seconds.back().evaluations + one.evaluations});
-    }
-    return findHoldCost(seconds);
-}
-
-// The median over the pairs (hold window k, floor window k) of hold / floor, wall time: each pair
-// is timed within milliseconds, so a machine slowed for a while slows both alike.
-double medianPairedRatio(const std::vector<Mark>& hold, const std::vector<double>& floorWalls) {
-    std::vector<double> ratios;
-    for (std::size_t k = 1; k < hold.size() && k - 1 < floorWalls.size(); ++k) {
-        if (floorWalls[k - 1] > 0) ratios.push_back(wallPerSimSecond(hold[k - 1], hold[k]) / floorWalls[k - 1]);
-    }
-    if (ratios.empty()) return 0;
-    std::sort(ratios.begin(), ratios.end());
-    const std::size_t n = ratios.size();
-    return n % 2 ? ratios[n / 2] : 0.5 * (ratios[n / 2 - 1] + ratios[n / 2]);
-}
 
 ApproxCost measureApprox(const scenario::Scenario& s, simulation::ApproxConstraint constraint, double duration,
                          int realizations) {
@@ -203,62 +133,11 @@ ApproxCost measureApprox(const scenario::Scenario& s, simulation::ApproxConstrai
     options.mode = simulation::SimulationMode::Approx;
     options.approx.constraint = constraint;
     options.duration = duration + kHoldSeconds;
-    RunClock clock;
-    Mark engaged, oneSecond;
-    std::vector<Mark> holdSeconds;  // one mark per whole simulated second of the hold
-    std::unique_ptr<FloorRun> ownFloor;  // this run's floor, one simulated second after each second of hold
-    std::vector<Mark> ownFloorSeconds;
-    double observingWhileEngaged = 0;
-    const auto markHoldSecond = [&](const Mark& here) {
-        holdSeconds.push_back(here);
-        if (!ownFloor || holdSeconds.size() < 2) return;
-        ownFloorSeconds.push_back(ownFloor->advanceOneSecond());
-        if (ownFloorSeconds.size() >= std::size_t(kHoldSeconds)) ownFloor.reset();  // before the run's System goes
-    };
-    // The last full-contact sample before engaging, and the first engaged one.
+    ApproxRunMeter meter(cost, realizations, options.duration);
     const simulation::SampleObserver observe = [&](const simulation::GraspScene& scene, const SimTK::State& state) {
-        const Mark here{state.getTime(), clock.now(), clock.evaluations(scene.getSystem())};
-        const double before = clock.getObservingSeconds();
-        clock.beginObserving(scene.getSystem());
-        const simulation::GraspSwitch* grasp = scene.getGraspSwitch();
-        if (!scene.isObjectHeld(state) && grasp) {
-            if (!grasp->isEngaged(state) && grasp->getEvents().empty()) {
-                cost.fullRealizeUs = timeRealization(scene.getSystem(), state, realizations);
-            } else if (grasp->isEngaged(state) && !engaged.isSet()) {
-                engaged = here;
-                const SimTK::State floor = makeFloorState(scene, state);
-                std::tie(cost.engagedRealizeUs, cost.ownFloorRealizeUs) =
-                    timeRealizationPair(scene.getSystem(), state, floor, realizations);
-                ownFloor = std::make_unique<FloorRun>(scene, floor);
-            }
-            if (engaged.isSet() && !oneSecond.isSet() && here.time >= engaged.time + 1.0 - 1e-9) {
-                oneSecond = here;
-                markHoldSecond(here);
-            } else if (grasp->isEngaged(state) && !holdSeconds.empty() && here.time >= holdSeconds.back().time + 1.0 - 1e-9) {
-                markHoldSecond(here);
-            }
-            if (!grasp->isEngaged(state)) ownFloor.reset();
-        }
-        clock.endObserving(scene.getSystem());
-        if (engaged.isSet()) observingWhileEngaged += clock.getObservingSeconds() - before;
+        meter.observe(scene, state);
     };
-    const simulation::SimulationSummary a = simulation::runGraspSimulation(s, options, {}, observe).summary;
-    cost.engageTime = a.engaged ? a.engageTime : -1;
-    if (a.approxSteps > 0) cost.stepUs = (a.approxStepUs * a.approxSteps - 1e6 * observingWhileEngaged) / a.approxSteps;
-    cost.wallPerSimSecond = wallPerSimSecond(engaged, oneSecond);
-    const HoldCost hold = findHoldCost(holdSeconds);
-    cost.holdWallPerSimSecond = hold.wallPerSimSecond;
-    cost.holdEvaluationsPerSimSecond = hold.evaluationsPerSimSecond;
-    std::vector<Mark> floorMarks{{0, 0, 0}};
-    std::vector<double> floorWalls;
-    for (const Mark& one : ownFloorSeconds) {
-        floorMarks.push_back({floorMarks.back().time + 1, floorMarks.back().wall + one.wall, floorMarks.back().evaluations + one.evaluations});
-        floorWalls.push_back(one.wall);
-    }
-    const HoldCost floor = findHoldCost(floorMarks);
-    cost.ownFloorHoldWallPerSimSecond = floor.wallPerSimSecond;
-    cost.ownFloorEvaluationsPerSimSecond = floor.evaluationsPerSimSecond;
-    cost.holdOverOwnFloor = medianPairedRatio(holdSeconds, floorWalls);
+    meter.finish(simulation::runGraspSimulation(s, options, {}, observe).summary);
     return cost;
 }
 
@@ -271,7 +150,9 @@ void measureFloor(const scenario::Scenario& s, const simulation::SimulationOptio
         if (state.getTime() < options.duration - 1e-9) return;
         const SimTK::State floor = makeFloorState(scene, state);
         cost.floorRealizeUs = timeRealization(scene.getSystem(), floor, realizations);
-        const HoldCost hold = timeFloorHold(scene, floor);
+        const scenario::Scenario& scenario = scene.getScenario();
+        const HoldCost hold = timeFloorHold(scene.getSystem(), floor, scenario.simulation.accuracy, scenario.controller.ikInterval,
+                                            int(kHoldSeconds));
         cost.floorHoldWallPerSimSecond = hold.wallPerSimSecond;
         cost.floorEvaluationsPerSimSecond = hold.evaluationsPerSimSecond;
     };
