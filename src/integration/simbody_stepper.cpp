@@ -20,7 +20,7 @@ void SimbodyCpodesStepper::makeIntegrator() {
     // a step, it also evaluates every trigger there, and Simbody's trigger function is a full
     // realization: with any witness in the System (the weld's stick/slip, multi's detach) that
     // doubled the evaluations of an engaged hold (400 against 200 per simulated second, reports
-    // every 10 ms). The steps, and a report's interpolated state, are the same either way.
+    // every 10 ms). Without triggers the steps are the same either way, the reports to round-off.
     integrator_->setReturnEveryInternalStep(true);
 }
 

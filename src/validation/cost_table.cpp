@@ -72,17 +72,10 @@ public:
         const HoldCost hold = findHoldCost(holdSeconds_);
         cost_.holdWallPerSimSecond = hold.wallPerSimSecond;
         cost_.holdEvaluationsPerSimSecond = hold.evaluationsPerSimSecond;
-        std::vector<Mark> floorMarks{{0, 0, 0}};
-        std::vector<double> floorWalls;
-        for (const Mark& one : ownFloorSeconds_) {
-            const Mark& last = floorMarks.back();
-            floorMarks.push_back({last.time + 1, last.wall + one.wall, last.evaluations + one.evaluations});
-            floorWalls.push_back(one.wall);
-        }
-        const HoldCost floor = findHoldCost(floorMarks);
+        const HoldCost floor = findHoldCostOfSeconds(ownFloorSeconds_);
         cost_.ownFloorHoldWallPerSimSecond = floor.wallPerSimSecond;
         cost_.ownFloorEvaluationsPerSimSecond = floor.evaluationsPerSimSecond;
-        cost_.holdOverOwnFloor = findMedianPairedRatio(holdSeconds_, floorWalls);
+        cost_.holdOverOwnFloor = findMedianPairedRatio(holdSeconds_, ownFloorSeconds_);
     }
 
 private:

@@ -79,10 +79,20 @@ HoldCost findHoldCost(const std::vector<Mark>& marks) {
     return cost;
 }
 
-double findMedianPairedRatio(const std::vector<Mark>& hold, const std::vector<double>& floorWalls) {
+HoldCost findHoldCostOfSeconds(const std::vector<Mark>& seconds) {
+    std::vector<Mark> marks{{0, 0, 0}};
+    for (const Mark& one : seconds) {
+        const Mark& last = marks.back();
+        marks.push_back({last.time + one.time, last.wall + one.wall, last.evaluations + one.evaluations});
+    }
+    return findHoldCost(marks);
+}
+
+double findMedianPairedRatio(const std::vector<Mark>& hold, const std::vector<Mark>& floorSeconds) {
     std::vector<double> ratios;
-    for (std::size_t k = 1; k < hold.size() && k - 1 < floorWalls.size(); ++k) {
-        if (floorWalls[k - 1] > 0) ratios.push_back(wallPerSimSecond(hold[k - 1], hold[k]) / floorWalls[k - 1]);
+    for (std::size_t k = 1; k < hold.size() && k - 1 < floorSeconds.size(); ++k) {
+        const double floorWall = floorSeconds[k - 1].wall;
+        if (floorWall > 0) ratios.push_back(wallPerSimSecond(hold[k - 1], hold[k]) / floorWall);
     }
     return findMedian(ratios);
 }
@@ -111,12 +121,9 @@ Mark FloorRun::advanceOneSecond() {
 HoldCost timeFloorHold(const SimTK::System& system, const SimTK::State& floorState, double accuracy, double reportInterval,
                        int seconds) {
     FloorRun floor(system, floorState, accuracy, reportInterval);
-    std::vector<Mark> marks{{0, 0, 0}};
-    for (int k = 1; k <= seconds; ++k) {
-        const Mark one = floor.advanceOneSecond();
-        marks.push_back({double(k), marks.back().wall + one.wall, marks.back().evaluations + one.evaluations});
-    }
-    return findHoldCost(marks);
+    std::vector<Mark> ones;
+    for (int k = 0; k < seconds; ++k) ones.push_back(floor.advanceOneSecond());
+    return findHoldCostOfSeconds(ones);
 }
 
 }  // namespace graspsim::validation

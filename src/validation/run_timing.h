@@ -54,10 +54,12 @@ struct HoldCost {
     double wallPerSimSecond = 0, evaluationsPerSimSecond = 0;
 };
 HoldCost findHoldCost(const std::vector<Mark>& marks);
+// The same from one-second stretches, each counted from zero (FloorRun::advanceOneSecond()).
+HoldCost findHoldCostOfSeconds(const std::vector<Mark>& seconds);
 
-// The median over the pairs (hold window k, floorWalls[k - 1]) of hold / floor wall time, for a
+// The median over the pairs (hold window k, floorSeconds[k - 1]) of hold / floor wall time, for a
 // floor integrated one simulated second right after each window of the hold.
-double findMedianPairedRatio(const std::vector<Mark>& hold, const std::vector<double>& floorWalls);
+double findMedianPairedRatio(const std::vector<Mark>& hold, const std::vector<Mark>& floorSeconds);
 
 // A floor state integrated by CPodes at `accuracy`, driven as integration::SimbodyCpodesStepper
 // drives it (returning after every internal step, so that triggers are checked at steps only) and

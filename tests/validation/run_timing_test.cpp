@@ -42,14 +42,24 @@ TEST(RunTiming, HoldCostIsTheMedianWindowAndTheMeanEvaluationRate) {
     EXPECT_DOUBLE_EQ(cost.evaluationsPerSimSecond, 100);
     EXPECT_EQ(graspsim::validation::findHoldCost({}).wallPerSimSecond, 0);
     EXPECT_EQ(graspsim::validation::findHoldCost({marks[0]}).evaluationsPerSimSecond, 0);
+    // The same stretch as one-second pieces, each counted from zero.
+    const graspsim::validation::HoldCost pieces =
+        graspsim::validation::findHoldCostOfSeconds({{1, 1, 100}, {1, 2, 100}, {1, 1, 100}, {1, 6, 100}});
+    EXPECT_DOUBLE_EQ(pieces.wallPerSimSecond, 1.5);
+    EXPECT_DOUBLE_EQ(pieces.evaluationsPerSimSecond, 100);
 }
 
 TEST(RunTiming, PairedRatioIsTheMedianOfWindowByWindowRatios) {
     const std::vector<Mark> hold{{0, 0, 0}, {1, 1, 0}, {2, 3, 0}, {3, 4, 0}, {4, 10, 0}};
     // Ratios 1, 2, 2, 2 (a slow window of the hold paired with a slow floor window), median 2;
     // a floor window of zero wall time is left out.
-    EXPECT_DOUBLE_EQ(graspsim::validation::findMedianPairedRatio(hold, {1, 1, 0.5, 3}), 2);
-    EXPECT_DOUBLE_EQ(graspsim::validation::findMedianPairedRatio(hold, {1, 0, 0.5, 3}), 2);
+    const auto floor = [](std::vector<double> walls) {
+        std::vector<Mark> seconds;
+        for (double w : walls) seconds.push_back({1, w, 0});
+        return seconds;
+    };
+    EXPECT_DOUBLE_EQ(graspsim::validation::findMedianPairedRatio(hold, floor({1, 1, 0.5, 3})), 2);
+    EXPECT_DOUBLE_EQ(graspsim::validation::findMedianPairedRatio(hold, floor({1, 0, 0.5, 3})), 2);
     EXPECT_EQ(graspsim::validation::findMedianPairedRatio(hold, {}), 0);
 }
 

@@ -23,9 +23,10 @@ namespace graspsim::integration {
 /// only: asked to stop at a report inside a step, it evaluates every trigger there too, and each
 /// trigger evaluation is a full realization of the System. With the grasp checks every 10 ms and
 /// the engaged integrator's steps far longer, that doubled an engaged weld's dynamics evaluations
-/// (`graspsim bench`: 400 against 200 per simulated second). Without triggers the trajectory is
-/// the same bit for bit; with them, a trigger's crossing is localized on a different bracket, to
-/// the same root tolerance (tests/integration/simbody_stepper_test.cpp).
+/// (`graspsim bench`: 400 against 200 per simulated second). Without triggers the integrator takes
+/// the same steps and the samples agree to round-off (where the interpolation is done differs);
+/// with them, a trigger's crossing is localized on a different bracket, to the same root
+/// tolerance (tests/integration/simbody_stepper_test.cpp).
 /// TimeStepper makes the integrator back up and resume at every scheduled event, two extra
 /// dynamics evaluations each: with the grasp switch's check every 10 ms that was about a quarter
 /// of an engaged approximation's cost (ball hold, `graspsim bench`: 0.014 -> 0.010 s per simulated
