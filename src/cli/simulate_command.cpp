@@ -3,6 +3,7 @@
 #include "number_option.h"
 
 #include "graspsim/error.h"
+#include "graspsim/opensim/opensim_storage.h"
 #include "graspsim/results/result_files.h"
 #include "graspsim/scenario/scenario_file.h"
 #include "graspsim/simulation/grasp_simulation.h"
@@ -51,7 +52,8 @@ SimulateCommand::SimulateCommand(CLI::App& app) : options_(std::make_shared<Opti
     command_->add_option("--q-threshold", o.qThreshold, "approx: grasp quality Q_Th (N) to engage (default: 0.8 x the settled grasp's)");
     command_->add_option("--q-minimum", o.qMinimum, "approx: grasp quality Q_M (N) below which to release (default: 0.5 x Q_Th)");
     command_->add_option("--out", o.out,
-                         "output folder (default out); receives trajectory.csv, contacts.csv, summary.json (and events.csv in approx mode)");
+                         "output folder (default out); receives trajectory.csv, contacts.csv, summary.json (and events.csv in approx mode), "
+                         "and for OpenSim motion.mot, object_forces.sto and external_loads.xml");
 }
 
 bool SimulateCommand::parsed() const { return command_->parsed(); }
@@ -145,6 +147,7 @@ int SimulateCommand::run() const {
     prepareFolder(o.out);
     const simulation::SimulationResult result = simulation::runGraspSimulation(scenario, options, makeProgress());
     results::writeResultFiles(o.out, result);
+    opensim::writeOpenSimResultFiles(o.out, result);
     const simulation::SimulationSummary& s = result.summary;
     std::cout << scenario.name << " (" << s.contact << ", " << s.mode << ", perturbation " << s.perturbation
               << "): " << s.simTime << " s simulated in " << s.wallTime << " s, " << s.steps << " steps, held "

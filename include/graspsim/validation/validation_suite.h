@@ -3,7 +3,7 @@
 /// Running `graspsim validate`: every planned simulation, its comparison with full contact, the
 /// bounds, and the files it leaves in the output folder.
 ///
-/// DIR/runs/<run id>/ holds each run's own files (trajectory.csv, contacts.csv, summary.json,
+/// `DIR/runs/<run id>/` holds each run's own files (trajectory.csv, contacts.csv, summary.json,
 /// events.csv; see result_files.h); DIR/results.csv one row per run; DIR/checks.csv one row per
 /// bound; DIR/report.md the tables for people (validation_report.h).
 
