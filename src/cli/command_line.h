@@ -1,10 +1,11 @@
 #pragma once
-// graspsim's whole command line (`model ...`, `simulate ...`, `validate ...`, `bench ...`) as one object, so that main() stays
+// graspsim's whole command line (`model ...`, `simulate ...`, `validate ...`, `bench ...`, `study ...`) as one object, so that main() stays
 // a few lines and the parsing can be exercised without a process (tests/fuzz).
 
 #include "bench_command.h"
 #include "model_command.h"
 #include "simulate_command.h"
+#include "study_command.h"
 #include "validate_command.h"
 
 #include <CLI/CLI.hpp>
@@ -34,6 +35,7 @@ private:
     SimulateCommand simulate_;
     ValidateCommand validate_;
     BenchCommand bench_;
+    StudyCommand study_;
 };
 
 }  // namespace graspsim::cli
