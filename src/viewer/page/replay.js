@@ -80,38 +80,59 @@
   var marker = new THREE.Mesh(new THREE.SphereBufferGeometry(0.0025, 12, 8), new THREE.MeshBasicMaterial({ color: 0x7d3c98 }));
   scene.add(marker);
 
-  // Force arrows: one scale for the whole run, a round number of newtons per centimetre.
-  var maxForce = 0;
-  data.contacts.forEach(function (cs) { cs.forEach(function (c) { maxForce = Math.max(maxForce, Math.hypot(c[3], c[4], c[5])); }); });
-  data.constraintSamples.forEach(function (s) { if (s) maxForce = Math.max(maxForce, Math.hypot(s.reaction[3], s.reaction[4], s.reaction[5])); });
+  // Force arrows: one scale for the whole run, a round number of newtons per centimetre that draws
+  // the 95th percentile of the forces about 5 cm long (the largest, at impacts, would shrink the rest).
+  var magnitudes = [];
+  data.contacts.forEach(function (cs) { cs.forEach(function (c) { magnitudes.push(Math.hypot(c[3], c[4], c[5])); }); });
+  data.constraintSamples.forEach(function (s) { if (s) magnitudes.push(Math.hypot(s.reaction[3], s.reaction[4], s.reaction[5])); });
+  magnitudes.sort(function (a, b) { return a - b; });
+  var typicalForce = magnitudes.length ? magnitudes[Math.floor(0.95 * (magnitudes.length - 1))] : 0;
   function niceNumber(x) { var e = Math.pow(10, Math.floor(Math.log10(x))), m = x / e; return (m < 1.5 ? 1 : m < 3.5 ? 2 : m < 7.5 ? 5 : 10) * e; }
-  var newtonsPerCm = maxForce > 0 ? niceNumber(maxForce / 4) : 1;  // the largest force about 4 cm long
+  var newtonsPerCm = typicalForce > 0 ? niceNumber(typicalForce / 5) : 1;
   var metresPerNewton = 0.01 / newtonsPerCm;
+  // Arrows and the constraint's axes are drawn over the bodies: a force acts where fingers and
+  // object meet, inside what would hide it.
+  function drawOnTop(object) {
+    object.renderOrder = 10;
+    object.traverse(function (o) { if (o.material) { o.material.depthTest = false; o.material.transparent = true; } });
+    return object;
+  }
+  // A solid arrow along +y from its origin: shaft, head and a dot at its tip (the point of action).
+  var HEAD = 0.007;
+  function makeArrow(colour) {
+    var material = new THREE.MeshBasicMaterial({ color: colour });
+    var shaftGeometry = new THREE.CylinderBufferGeometry(0.0011, 0.0011, 1, 8);
+    shaftGeometry.translate(0, 0.5, 0);
+    var a = new THREE.Group();
+    a.add(new THREE.Mesh(shaftGeometry, material));
+    a.add(new THREE.Mesh(new THREE.ConeBufferGeometry(0.003, HEAD, 12), material));
+    a.add(new THREE.Mesh(new THREE.SphereBufferGeometry(0.0018, 10, 6), material));
+    scene.add(drawOnTop(a));
+    return a;
+  }
   var arrows = [];
   function getArrow(i) {
-    while (arrows.length <= i) {
-      var a = new THREE.ArrowHelper(new THREE.Vector3(1, 0, 0), new THREE.Vector3(), 0.01, 0xc0392b, 0.006, 0.004);
-      var dot = new THREE.Mesh(new THREE.SphereBufferGeometry(0.0018, 10, 6), new THREE.MeshBasicMaterial({ color: 0xc0392b }));
-      a.add(dot);
-      scene.add(a);
-      arrows.push(a);
-    }
+    while (arrows.length <= i) arrows.push(makeArrow(0xc0392b));
     return arrows[i];
   }
-  function placeArrow(a, p, f, colour) {
+  // The arrow ends at the point p, where force f (N) acts: it pushes the object from outside.
+  var Y = new THREE.Vector3(0, 1, 0);
+  function placeArrow(a, p, f) {
     var n = Math.hypot(f[0], f[1], f[2]);
+    var len = n * metresPerNewton;
     a.visible = true;
-    a.position.set(p[0], p[1], p[2]);
-    a.children[a.children.length - 1].position.set(0, 0, 0);
-    if (n < 1e-9) { a.setLength(1e-4, 1e-4, 1e-4); return; }
-    a.setDirection(new THREE.Vector3(f[0] / n, f[1] / n, f[2] / n));
-    var len = Math.max(n * metresPerNewton, 0.002);
-    a.setLength(len, Math.min(0.006, 0.4 * len), Math.min(0.004, 0.3 * len));
-    a.setColor(new THREE.Color(colour));
+    a.children[0].visible = a.children[1].visible = len > 1e-4;
+    var u = n > 1e-12 ? new THREE.Vector3(f[0] / n, f[1] / n, f[2] / n) : Y.clone();
+    a.position.set(p[0] - u.x * len, p[1] - u.y * len, p[2] - u.z * len);
+    a.quaternion.setFromUnitVectors(Y, u);
+    var head = Math.min(HEAD, 0.5 * len);
+    a.children[0].scale.set(1, Math.max(len - head, 1e-6), 1);
+    a.children[1].scale.set(head / HEAD, head / HEAD, head / HEAD);
+    a.children[1].position.set(0, len - head / 2, 0);
+    a.children[2].position.set(0, len, 0);
   }
-  var reactionArrow = new THREE.ArrowHelper(new THREE.Vector3(1, 0, 0), new THREE.Vector3(), 0.01, 0x27ae60, 0.006, 0.004);
-  var constraintAxes = new THREE.AxesHelper(0.025);
-  scene.add(reactionArrow);
+  var reactionArrow = makeArrow(0x27ae60);
+  var constraintAxes = drawOnTop(new THREE.AxesHelper(0.025));
   scene.add(constraintAxes);
 
   // --- panels ----------------------------------------------------------------------------------
@@ -164,7 +185,7 @@
     var contacts = data.contacts[frame], perFinger = {};
     arrows.forEach(function (a) { a.visible = false; });
     contacts.forEach(function (c, i) {
-      placeArrow(getArrow(i), c, [c[3], c[4], c[5]], "#c0392b");
+      placeArrow(getArrow(i), c, [c[3], c[4], c[5]]);
       var f = c[6] || "palm";
       perFinger[f] = (perFinger[f] || 0) + Math.hypot(c[3], c[4], c[5]);
     });
@@ -180,7 +201,7 @@
       constraintAxes.position.set(sample.pose[0], sample.pose[1], sample.pose[2]);
       constraintAxes.quaternion.copy(q);
       var force = new THREE.Vector3(sample.reaction[3], sample.reaction[4], sample.reaction[5]).applyQuaternion(q);
-      placeArrow(reactionArrow, sample.pose, [force.x, force.y, force.z], "#27ae60");
+      placeArrow(reactionArrow, sample.pose, [force.x, force.y, force.z]);
       constraintRows.forEach(function (tr, k) {
         var limit = sample.limits[k], r = Math.abs(sample.reaction[k]), unit = k < 3 ? " N m" : " N";
         var fraction = limit === null ? 0 : limit > 0 ? Math.min(1, r / limit) : 1;
@@ -204,8 +225,10 @@
 
   // --- camera, size, controls --------------------------------------------------------------------
   var o0 = pathPoints[0];
-  var target = new THREE.Vector3(0.75 * o0.x, 0.75 * o0.y, 0.75 * o0.z);
-  camera.position.set(target.x + 0.45, target.y + 0.3, target.z + 0.5);
+  // Looking at the hand from the subject's right, a little in front and above: the fingers press
+  // along the view's plane, so their force arrows show their length.
+  var target = new THREE.Vector3(0.8 * o0.x, 0.8 * o0.y, 0.8 * o0.z);
+  camera.position.set(target.x + 0.24, target.y + 0.1, target.z + 0.5);
   var controls = new THREE.OrbitControls(camera, renderer.domElement);
   controls.target.copy(target);
   controls.update();
