@@ -60,15 +60,33 @@ double findSimulatedTime(const validation::ValidationRun& run) {
     return run.options.duration > 0 ? run.options.duration : scenario::findBuiltinScenario(run.scenario).simulation.duration;
 }
 
-// Progress over the plan, weighted by simulated time, shown as "[k/n] run id".
-validation::ValidationProgress makeProgress(ProgressMeter& meter, const std::vector<validation::ValidationRun>& runs) {
-    if (!meter.isShown()) return {};
-    auto before = std::make_shared<std::vector<double>>(1, 0.0);  // simulated time before run k
-    for (const validation::ValidationRun& run : runs) before->push_back(before->back() + findSimulatedTime(run));
-    return [&meter, before](std::size_t index, std::size_t count, const validation::ValidationRun& run) {
-        meter.update((*before)[index], before->back(), "[" + std::to_string(index + 1) + "/" + std::to_string(count) + "] " + run.id);
-    };
-}
+// Progress over the plan in simulated seconds, shown as "[k/n] run id", moving within each run.
+class SuiteProgress {
+public:
+    SuiteProgress(ProgressMeter& meter, const std::vector<validation::ValidationRun>& runs) : meter_(meter) {
+        for (const validation::ValidationRun& run : runs) before_.push_back(total_), total_ += findSimulatedTime(run);
+    }
+    validation::ValidationProgress makeRunStart() {
+        if (!meter_.isShown()) return {};
+        return [this](std::size_t index, std::size_t count, const validation::ValidationRun& run) {
+            index_ = index;
+            detail_ = "[" + std::to_string(index + 1) + "/" + std::to_string(count) + "] " + run.id;
+            meter_.update(before_[index], total_, detail_);
+        };
+    }
+    simulation::ProgressCallback makeWithinRun() {
+        if (!meter_.isShown()) return {};
+        return [this](double t, double) { meter_.update(before_[index_] + t, total_, detail_); };
+    }
+    void finish() { meter_.update(total_, total_, "done"); }
+
+private:
+    ProgressMeter& meter_;
+    std::vector<double> before_;  // simulated time before run k (s)
+    double total_ = 0;
+    std::size_t index_ = 0;
+    std::string detail_;
+};
 
 }  // namespace
 
@@ -84,7 +102,10 @@ int ValidateCommand::run() const {
     const std::vector<validation::ValidationRun> runs = validation::makeValidationPlan(plan);
     prepareFolder(o.out);
     ProgressMeter meter("validating", o.quiet);
-    const validation::ValidationResults results = validation::runValidation(runs, o.out, makeProgress(meter, runs));
+    SuiteProgress progress(meter, runs);
+    const validation::ValidationResults results =
+        validation::runValidation(runs, o.out, progress.makeRunStart(), progress.makeWithinRun());
+    progress.finish();
     meter.finish();
     // The tables first, so that a plotting failure still leaves the numbers.
     validation::writeValidationReport(o.out, results, {});

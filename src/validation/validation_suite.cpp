@@ -35,7 +35,7 @@ void writeRunFiles(const std::string& folder, const ValidationRun& run, const sc
 }  // namespace
 
 ValidationResults runValidation(const std::vector<ValidationRun>& plan, const std::string& folder,
-                                const ValidationProgress& progress) {
+                                const ValidationProgress& progress, const simulation::ProgressCallback& runProgress) {
     const auto start = std::chrono::steady_clock::now();
     ValidationResults results;
     // Full-contact results are kept only until the runs compared with them are done.
@@ -44,7 +44,7 @@ ValidationResults runValidation(const std::vector<ValidationRun>& plan, const st
         const ValidationRun& run = plan[k];
         if (progress) progress(k, plan.size(), run);
         const scenario::Scenario s = scenario::findBuiltinScenario(run.scenario);
-        simulation::SimulationResult result = simulation::runGraspSimulation(s, run.options);
+        simulation::SimulationResult result = simulation::runGraspSimulation(s, run.options, runProgress);
         writeRunFiles(folder, run, s, result);
         RunRecord record;
         record.run = run;

@@ -12,8 +12,8 @@
 /// reaction against its limits while engaged; and the object's path.
 ///
 /// The page reports its own state for tests: once drawn, document.title reads
-/// "graspsim replay: ready" and the element #replay-state holds JSON {frames, bodies, drawn,
-/// time, errors} (errors counts console errors and uncaught exceptions). Opened as
+/// "graspsim replay: ready" and the element with id "replay-state" holds JSON {frames, bodies, drawn,
+/// time, webgl, errors} (errors counts console errors and uncaught exceptions). Opened as
 /// replay.html?t=SECONDS it shows that instant, still, for pictures (still_picture.h).
 
 #include "graspsim/viewer/result_reader.h"
