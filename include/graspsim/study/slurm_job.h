@@ -18,7 +18,7 @@ struct SlurmJob {
     int arraySize = 1;       ///< K tasks, numbered 0..K-1
 };
 
-/// The sbatch script: #SBATCH lines for the array and the logs (DIR/slurm/task-<i>.log), then
+/// The sbatch script: `#SBATCH` lines for the array and the logs (DIR/slurm/task-\<i\>.log), then
 /// the shard run with $SLURM_ARRAY_TASK_ID/$SLURM_ARRAY_TASK_COUNT. sbatch's own options
 /// (partition, time, account) go on its command line, see submitSlurmJob.
 std::string formatSbatchScript(const SlurmJob& job);

@@ -9,7 +9,7 @@
 ///     DIR/results.csv         one row per case (study run without --shard, study collect)
 ///     DIR/plots/*.png         each measure against each axis
 ///
-/// A case is run in DIR/cases/0007.tmp-<pid> and renamed to DIR/cases/0007 once its case.json
+/// A case is run in DIR/cases/0007.tmp-\<pid\> and renamed to DIR/cases/0007 once its case.json
 /// is written, so a case folder exists only complete; a killed run leaves temporaries, which
 /// the next run of that case removes.
 
