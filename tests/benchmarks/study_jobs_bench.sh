@@ -29,12 +29,12 @@ STUDY
 
 calc() { awk "BEGIN { print $1 }"; }
 
-run_once() {  # jobs round -> seconds
-  local start end
-  start=$(date +%s.%N)
-  "$graspsim" study run "$work/study.yaml" --out "$work/out-$1-$2" --jobs "$1" >/dev/null
-  end=$(date +%s.%N)
-  calc "$end - $start"
+run_once() {  # jobs round -> wall seconds; the CPU seconds of the run and its cases go to stderr
+  local TIMEFORMAT="%R %U %S" times
+  times=$( { time "$graspsim" study run "$work/study.yaml" --out "$work/out-$1-$2" --jobs "$1" >/dev/null; } 2>&1)
+  read -r wall user sys <<<"$times"
+  printf "  --jobs %d: wall %.2f s, CPU %.2f s\n" "$1" "$wall" "$(calc "$user + $sys")" >&2
+  echo "$wall"
 }
 
 echo "load average before: $(cut -d' ' -f1-3 /proc/loadavg), cores: $(nproc)"
