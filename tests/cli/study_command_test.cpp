@@ -114,6 +114,15 @@ TEST_F(StudyCommand, RunResumesAndShardsCollectToTheSameTable) {
     EXPECT_NE(table.find("2,0.9,0.8,full,ok,true,"), std::string::npos) << table;
     EXPECT_NE(table.find("3,0.9,0.8,approx,ok,true,"), std::string::npos) << table;
 
+    // Plots of each measure, or one line saying why there are none.
+    EXPECT_TRUE(fs::exists(whole / "plots/object_displacement_m.png") || first.out.find("plots skipped") != std::string::npos)
+        << first.out;
+    ::setenv("GRASPSIM_PYTHON", "/nonexistent/python3", 1);
+    const RunResult noPython = run("study collect " + whole.string());
+    ::unsetenv("GRASPSIM_PYTHON");
+    EXPECT_EQ(noPython.exitCode, 0);
+    EXPECT_NE(noPython.out.find("plots skipped: no Python interpreter at /nonexistent/python3"), std::string::npos) << noPython.out;
+
     // Interrupted: case 2 never committed, case 3 half-written (its temporary folder, no case.json).
     const auto case1Time = fs::last_write_time(whole / "cases/0001/case.json");
     fs::remove_all(whole / "cases/0002");
