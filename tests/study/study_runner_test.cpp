@@ -1,8 +1,8 @@
 // The runner: every case of the shard gets one process and one committed folder; a process that
 // leaves no summary is recorded as failed with its error and the others go on; and over a
 // 200-case study the study process's own memory stays flat (the sweep memory test's oracle:
-// live heap and resident set at case 200 against case 20). The child here is /bin/sh printing
-// an error for every fourth case, so the test exercises the runner, not the simulation.
+// live heap and resident set at case 200 against case 20). The child here is a /bin/sh script
+// that fails or stops early for every fifth case, so the test exercises the runner, not the simulation.
 
 #include "graspsim/study/study_folder.h"
 #include "graspsim/study/study_runner.h"
@@ -34,9 +34,11 @@ protected:
         dir_ = fs::temp_directory_path() / ("graspsim_study_runner_" + std::to_string(::getpid()));
         fs::remove_all(dir_);
         fs::create_directories(dir_);
-        // `simulate SCENARIO --out DIR ...`: writes a summary, or fails like graspsim for every
-        // scenario whose case folder name ends in 3 (cases 3, 7, ...: every fourth of 0-7 mod 10).
-        std::ofstream(dir_ / "fake.sh") << "#!/bin/sh\ncase \"$4\" in *3.tmp-*) echo 'graspsim: case refused' >&2; exit 2;; esac\n"
+        // `simulate SCENARIO --out DIR ...`: writes a summary; fails like graspsim on bad input for
+        // cases whose number ends in 3, and stops early (exit 3, incomplete summary) for those
+        // ending in 7.
+        std::ofstream(dir_ / "fake.sh") << "#!/bin/sh\ncase \"$4\" in *3.tmp-*) echo 'graspsim: case refused' >&2; exit 2;;\n"
+                                           "*7.tmp-*) echo '{\"complete\": false, \"failure\": \"diverged\"}' > \"$4/summary.json\"; exit 3;; esac\n"
                                            "echo '{\"held\": true}' > \"$4/summary.json\"\n";
         fs::permissions(dir_ / "fake.sh", fs::perms::owner_all);
     }
@@ -69,8 +71,11 @@ TEST_F(StudyRunner, TwoHundredCasesEachCommittedOnceMemoryFlat) {
     const double residentGrowth = findResidentBytes() - residentAtWarmUp;
     EXPECT_EQ(report.total, kCases);
     EXPECT_EQ(report.ran, kCases);
-    EXPECT_EQ(report.failed, kCases / 10);  // case numbers ending in 3
+    EXPECT_EQ(report.failed, 2 * kCases / 10);  // case numbers ending in 3 or 7
     EXPECT_EQ(readCaseRecord(folder, 13).error, "case refused");
+    EXPECT_EQ(readCaseRecord(folder, 13).status, CaseStatus::Failed);
+    EXPECT_EQ(readCaseRecord(folder, 17).error, "diverged");
+    EXPECT_EQ(readCaseRecord(folder, 17).status, CaseStatus::Incomplete);
     EXPECT_EQ(readCaseRecord(folder, 14).status, CaseStatus::Ok);
     for (int i = 0; i < kCases; ++i) ASSERT_TRUE(isCaseFinished(folder, i)) << i;
     EXPECT_EQ(std::distance(fs::directory_iterator(folder + "/cases"), fs::directory_iterator()), kCases) << "no temporaries left";
