@@ -9,7 +9,11 @@ and writes, per experiment (scenario):
                                    one column per perturbation;
   DIR/<experiment>_quality.png     grasp quality vs time with the engaged intervals shaded;
   DIR/<experiment>_forces.png      summed contact normal force per hand body (full contact);
-  DIR/<experiment>_error.png       object position error of each approximation vs full contact.
+  DIR/<experiment>_error.png       object position error of each variant vs full contact, one
+                                   panel per perturbation.
+Each variant has one colour and line style in every panel of every figure (make_styles), every
+panel has its own legend naming each line it shows, and every axis says its unit;
+tests/analysis/plot_validation_test.py checks this.
 The graspsim CLI runs this script after the suite (`graspsim validate`); it can also be rerun by
 hand on an existing folder. Nothing here computes a pass/fail: the bounds live in the C++ suite.
 """
@@ -91,82 +95,109 @@ def group_runs(results):
     return groups
 
 
-def plot_trajectories(directory, experiment, perturbations, out):
-    fig, axes = plt.subplots(3, len(perturbations), figsize=(4.5 * len(perturbations), 7), squeeze=False, sharex=True)
+# One colour and line style per variant (or per hand body), the same in every panel of every
+# figure: assigned once from the sorted names of everything that is plotted, never from the order
+# in which a panel happens to draw its lines (a variant missing from one panel must not shift the
+# colours of the others).
+COLOURS = ["tab:blue", "tab:orange", "tab:green", "tab:red", "tab:purple", "tab:brown", "tab:pink",
+           "tab:olive", "tab:cyan", "tab:gray"]
+DASHES = ["-", "--", "-.", ":"]
+
+
+def make_styles(names, first=None):
+    """name -> {"color", "linestyle"}: distinct for every name; `first` (if present) gets the first style."""
+    ordered = sorted(set(names), key=lambda n: (n != first, n))
+    return {n: {"color": COLOURS[i % len(COLOURS)], "linestyle": DASHES[(i // len(COLOURS) + i) % len(DASHES)]}
+            for i, n in enumerate(ordered)}
+
+
+def variant_styles(results):
+    return make_styles([r["variant"] for r in results], first="full")
+
+
+def finish_panel(ax, xlabel, ylabel, title, **legend):
+    """Units on both axes and a legend naming every line of this panel."""
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.set_title(title, fontsize="medium")
+    if ax.get_legend_handles_labels()[0]:
+        ax.legend(fontsize="x-small", **legend)
+
+
+def plot_trajectories(directory, experiment, perturbations, styles):
+    fig, axes = plt.subplots(3, len(perturbations), figsize=(4.5 * len(perturbations), 8), squeeze=False, sharex=True)
     for col, (name, rows) in enumerate(sorted(perturbations.items())):
         for r in rows:
             t, p, _ = read_trajectory(os.path.join(directory, "runs", r["id"]))
-            for k, axis in enumerate("xyz"):
-                axes[k][col].plot(t, [1000 * v[k] for v in p], label=r["variant"],
-                                  linestyle="-" if r["variant"] == "full" else "--")
-                axes[k][col].set_ylabel("object %s (mm)" % axis)
-        axes[0][col].set_title("%s, perturbation %s" % (experiment, name))
-        axes[2][col].set_xlabel("time (s)")
-    axes[0][0].legend(fontsize="small")
+            for k in range(3):
+                axes[k][col].plot(t, [1000 * v[k] for v in p], label=r["variant"], **styles[r["variant"]])
+        for k, axis in enumerate("xyz"):
+            finish_panel(axes[k][col], "time (s)", "object %s (mm)" % axis, "%s, perturbation %s" % (experiment, name))
     fig.tight_layout()
-    fig.savefig(out, dpi=110)
-    plt.close(fig)
+    return fig
 
 
-def plot_quality(directory, experiment, perturbations, out):
-    fig, axes = plt.subplots(len(perturbations), 1, figsize=(8, 2.6 * len(perturbations)), squeeze=False, sharex=True)
+def plot_quality(directory, experiment, perturbations, styles):
+    fig, axes = plt.subplots(len(perturbations), 1, figsize=(8, 3 * len(perturbations)), squeeze=False, sharex=True)
     for row, (name, rows) in enumerate(sorted(perturbations.items())):
         ax = axes[row][0]
         for r in rows:
             folder = os.path.join(directory, "runs", r["id"])
             t, _, q = read_trajectory(folder)
-            ax.plot(t, q, label=r["variant"])
-            for start, end in read_engaged_intervals(folder, t[-1]):
-                ax.axvspan(start, end, alpha=0.15, color="tab:green")
-        ax.set_ylabel("Q (N)")
-        ax.set_title("%s, perturbation %s (shaded: approximation engaged)" % (experiment, name), fontsize="medium")
-    axes[0][0].legend(fontsize="small")
-    axes[-1][0].set_xlabel("time (s)")
+            ax.plot(t, q, label=r["variant"], **styles[r["variant"]])
+            for k, (start, end) in enumerate(read_engaged_intervals(folder, t[-1])):
+                ax.axvspan(start, end, alpha=0.08, color=styles[r["variant"]]["color"],
+                           label="%s engaged" % r["variant"] if k == 0 else None)
+        finish_panel(ax, "time (s)", "grasp quality Q (N)", "%s, perturbation %s (shaded: approximation engaged)"
+                     % (experiment, name), ncol=2)
     fig.tight_layout()
-    fig.savefig(out, dpi=110)
-    plt.close(fig)
+    return fig
 
 
-def plot_forces(directory, experiment, perturbations, out):
-    fig, axes = plt.subplots(len(perturbations), 1, figsize=(8, 2.6 * len(perturbations)), squeeze=False, sharex=True)
+def plot_forces(directory, experiment, perturbations, styles):
+    """Summed normal force per hand body of the full-contact run; one style per body."""
+    fig, axes = plt.subplots(len(perturbations), 1, figsize=(8, 3 * len(perturbations)), squeeze=False, sharex=True)
+    runs = {}
+    for name, rows in perturbations.items():
+        full = [r for r in rows if r["variant"] == "full"]
+        if full:
+            runs[name] = read_normal_forces(os.path.join(directory, "runs", full[0]["id"]))
+    body_styles = make_styles([b for _, forces in runs.values() for b in forces])
+    for row, name in enumerate(sorted(perturbations)):
+        ax = axes[row][0]
+        if name in runs:
+            times, forces = runs[name]
+            for body, f in sorted(forces.items()):
+                ax.plot(times, f, label=body, **body_styles[body])
+        finish_panel(ax, "time (s)", "normal force (N)", "%s, perturbation %s, full contact" % (experiment, name), ncol=3)
+    fig.tight_layout()
+    return fig
+
+
+def plot_errors(directory, experiment, perturbations, styles):
+    """Position error of each variant against full contact, one panel per perturbation."""
+    fig, axes = plt.subplots(len(perturbations), 1, figsize=(8, 3 * len(perturbations)), squeeze=False, sharex=True)
     for row, (name, rows) in enumerate(sorted(perturbations.items())):
+        ax = axes[row][0]
         full = [r for r in rows if r["variant"] == "full"]
-        if not full:
-            continue
-        times, forces = read_normal_forces(os.path.join(directory, "runs", full[0]["id"]))
-        for body, f in sorted(forces.items()):
-            axes[row][0].plot(times, f, label=body)
-        axes[row][0].set_ylabel("normal force (N)")
-        axes[row][0].set_title("%s, perturbation %s, full contact" % (experiment, name), fontsize="medium")
-        axes[row][0].legend(fontsize="x-small", ncol=3)
-    axes[-1][0].set_xlabel("time (s)")
+        if full:
+            reference = read_trajectory(os.path.join(directory, "runs", full[0]["id"]))
+            for r in rows:
+                if r["variant"] == "full":
+                    continue
+                t, e = position_error(reference, read_trajectory(os.path.join(directory, "runs", r["id"])))
+                # Log scale: errors span micrometres (integrators) to metres (a dropped object).
+                ax.plot(t, [max(v, 1e-5) for v in e], label=r["variant"], **styles[r["variant"]])
+        if name == "none":
+            ax.axhline(2.0, color="k", linestyle=(0, (1, 3)), label="2 mm bound")
+        ax.set_yscale("log")
+        finish_panel(ax, "time (s)", "position error (mm)", "%s, perturbation %s: against full contact"
+                     % (experiment, name), ncol=2)
     fig.tight_layout()
-    fig.savefig(out, dpi=110)
-    plt.close(fig)
+    return fig
 
 
-def plot_errors(directory, experiment, perturbations, out):
-    fig, ax = plt.subplots(figsize=(9, 4.5))
-    for name, rows in sorted(perturbations.items()):
-        full = [r for r in rows if r["variant"] == "full"]
-        if not full:
-            continue
-        reference = read_trajectory(os.path.join(directory, "runs", full[0]["id"]))
-        for r in rows:
-            if r["variant"] == "full":
-                continue
-            t, e = position_error(reference, read_trajectory(os.path.join(directory, "runs", r["id"])))
-            # Log scale: errors span micrometres (integrators) to metres (a dropped object).
-            ax.plot(t, [max(v, 1e-5) for v in e], label="%s, %s" % (name, r["variant"]))
-    ax.axhline(2.0, color="k", linestyle=":", label="2 mm bound (no perturbation)")
-    ax.set_yscale("log")
-    ax.set_xlabel("time (s)")
-    ax.set_ylabel("position error (mm)")
-    ax.set_title("%s: approximation vs full contact" % experiment, fontsize="medium")
-    ax.legend(fontsize="x-small", ncol=2)
-    fig.tight_layout()
-    fig.savefig(out, dpi=110)
-    plt.close(fig)
+PLOTS = (("trajectory", plot_trajectories), ("quality", plot_quality), ("forces", plot_forces), ("error", plot_errors))
 
 
 def main(argv):
@@ -174,12 +205,14 @@ def main(argv):
         sys.stderr.write("usage: plot_validation.py DIR\n")
         return 2
     directory = argv[1]
-    groups = group_runs(read_rows(os.path.join(directory, "results.csv")))
-    for experiment, perturbations in sorted(groups.items()):
-        for kind, plot in (("trajectory", plot_trajectories), ("quality", plot_quality),
-                           ("forces", plot_forces), ("error", plot_errors)):
+    results = read_rows(os.path.join(directory, "results.csv"))
+    styles = variant_styles(results)
+    for experiment, perturbations in sorted(group_runs(results).items()):
+        for kind, plot in PLOTS:
             name = "%s_%s.png" % (experiment, kind)
-            plot(directory, experiment, perturbations, os.path.join(directory, name))
+            fig = plot(directory, experiment, perturbations, styles)
+            fig.savefig(os.path.join(directory, name), dpi=110)
+            plt.close(fig)
             print(name)
     return 0
 

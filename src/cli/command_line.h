@@ -1,5 +1,5 @@
 #pragma once
-// graspsim's whole command line (`model ...`, `simulate ...`, `validate ...`, `bench ...`, `study ...`) as one object, so that main() stays
+// graspsim's whole command line (`model ...`, `simulate ...`, `validate ...`, `bench ...`, `study ...`, `view ...`) as one object, so that main() stays
 // a few lines and the parsing can be exercised without a process (tests/fuzz).
 
 #include "bench_command.h"
@@ -7,6 +7,7 @@
 #include "simulate_command.h"
 #include "study_command.h"
 #include "validate_command.h"
+#include "view_command.h"
 
 #include <CLI/CLI.hpp>
 
@@ -31,11 +32,13 @@ public:
 
 private:
     CLI::App app_;
+    std::vector<std::string> arguments_;  // argv as given, for the results' provenance
     ModelCommand model_;
     SimulateCommand simulate_;
     ValidateCommand validate_;
     BenchCommand bench_;
     StudyCommand study_;
+    ViewCommand view_;
 };
 
 }  // namespace graspsim::cli

@@ -10,6 +10,7 @@
 #include "graspsim/model/object_model.h"
 #include "graspsim/model/urdf_export.h"
 #include "graspsim/model/urdf_import.h"
+#include "graspsim/opensim/osim_model.h"
 #include "graspsim/system/multibody_model.h"
 
 #include <nlohmann/json.hpp>
@@ -44,11 +45,11 @@ ModelCommand::ModelCommand(CLI::App& app) : options_(std::make_shared<Options>()
     build_->add_option("--body", o.body, "arm (right arm + hand, 27 DOF; default) or humanoid");
     build_->add_option("--finger-stiffness", o.fingerStiffness, "finger joint stiffness in N m/rad (default 0.25)");
     build_->add_option("--finger-damping", o.fingerDamping, "finger joint damping in N m s/rad (default 0.05)");
-    build_->add_option("-o,--output", o.output, "URDF file to write")->required();
+    build_->add_option("-o,--output", o.output, "file to write: URDF, or an OpenSim 4 model when it ends in .osim")->required();
 
     object_ = model->add_subcommand("object", "Write one of the thesis's objects (ball 200 g, phone 100 g) as URDF");
     object_->add_option("name", o.objectName, "ball or phone")->required();
-    object_->add_option("-o,--output", o.objectOutput, "URDF file to write")->required();
+    object_->add_option("-o,--output", o.objectOutput, "file to write: URDF, or an OpenSim 4 model when it ends in .osim")->required();
 
     info_ = model->add_subcommand("info", "Summarize a URDF model: bodies, DOF, total and per-segment mass");
     info_->add_option("file", o.infoFile, "URDF file")->required();
@@ -81,6 +82,13 @@ void parseFingerOptions(const std::string& stiffness, const std::string& damping
     if (!damping.empty()) {
         options.fingerDamping = parseNumber(damping, "--finger-damping", "a number >= 0 N m s/rad");
     }
+}
+
+// The file's format follows its extension: .osim is an OpenSim 4 model, anything else URDF.
+std::string formatModelFile(const model::ModelDescription& description, const std::string& path) {
+    const std::string osim = ".osim";
+    const bool isOsim = path.size() >= osim.size() && path.compare(path.size() - osim.size(), osim.size(), osim) == 0;
+    return isOsim ? opensim::writeOsim(description) : model::writeUrdf(description);
 }
 
 // Builds the Simbody system too, so `info` vouches that the file simulates, not just parses.
@@ -150,7 +158,7 @@ int ModelCommand::run() const {
         model::BuildOptions options = parseBuildOptions(o.sex, o.mass, o.stature, o.preset, o.body);
         parseFingerOptions(o.fingerStiffness, o.fingerDamping, options);
         const model::ModelDescription description = model::buildBodyModel(options);
-        io::writeFileAtomically(o.output, model::writeUrdf(description));
+        io::writeFileAtomically(o.output, formatModelFile(description, o.output));
         std::cout << "wrote " << o.output << ": " << description.bodies.size() << " bodies, "
                   << description.getDofCount() << " DOF, " << std::fixed << std::setprecision(4)
                   << description.calcTotalMass() << " kg\n";
@@ -158,7 +166,7 @@ int ModelCommand::run() const {
     }
     if (object_->parsed()) {
         const model::ModelDescription description = model::buildObjectModel(o.objectName, "object name");
-        io::writeFileAtomically(o.objectOutput, model::writeUrdf(description));
+        io::writeFileAtomically(o.objectOutput, formatModelFile(description, o.objectOutput));
         std::cout << "wrote " << o.objectOutput << ": " << o.objectName << ", " << description.calcTotalMass()
                   << " kg\n";
         return 0;

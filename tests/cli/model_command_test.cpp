@@ -20,6 +20,23 @@ TEST_F(ModelCommand, BuildsAndDescribesTheDefaultArm) {
     EXPECT_NE(text.out.find("DOF: 27"), std::string::npos) << text.out;
 }
 
+// The format follows the extension: .osim is an OpenSim 4 document; an unwritable path is one
+// line naming it, exit code 2, and no file.
+TEST_F(ModelCommand, WritesAnOpenSimModelForAnOsimPath) {
+    const std::string osim = (dir_ / "arm.osim").string();
+    const RunResult build = run("model build --preset thesis -o " + osim);
+    ASSERT_EQ(build.exitCode, 0) << build.err;
+    const std::string text = graspsim::testing::slurp(osim);
+    EXPECT_NE(text.find("<OpenSimDocument Version=\"40000\">"), std::string::npos);
+    EXPECT_NE(text.find("<PinJoint name=\"index_mcp_flexion\">"), std::string::npos);
+    const RunResult object = run("model object phone -o " + (dir_ / "phone.osim").string());
+    ASSERT_EQ(object.exitCode, 0) << object.err;
+    EXPECT_NE(graspsim::testing::slurp(dir_ / "phone.osim").find("<Body name=\"phone\">"), std::string::npos);
+    extraFiles_ = 2;
+    expectBadInput("model build -o " + (dir_ / "missing" / "arm.osim").string(), {"missing/arm.osim"});
+    EXPECT_FALSE(fs::exists(dir_ / "missing"));
+}
+
 TEST_F(ModelCommand, HelpIsAvailableEverywhere) {
     for (const char* args : {"--help", "model --help", "model build --help", "model info --help"}) {
         const RunResult r = run(args);

@@ -86,6 +86,34 @@ TEST_F(SimulateCommand, ShortRunWritesTheSummary) {
     }
 }
 
+// The OpenSim files beside the CSVs: motion.mot has a row per trajectory.csv row and a column per
+// joint, labelled as trajectory.csv's joint columns; external_loads.xml names object_forces.sto.
+TEST_F(SimulateCommand, ShortRunWritesTheOpenSimFiles) {
+    const std::string out = (dir_ / "run").string();
+    const RunResult a = run("simulate phone-pinch --duration 0.1 --out " + out);
+    ASSERT_EQ(a.exitCode, 0) << a.err;
+    std::istringstream trajectory(slurp(fs::path(out) / "trajectory.csv")), motion(slurp(fs::path(out) / "motion.mot"));
+    std::string header, line;
+    std::getline(trajectory, header);
+    int rows = 0;
+    while (std::getline(trajectory, line)) ++rows;
+    std::vector<std::string> motionLines;
+    while (std::getline(motion, line)) motionLines.push_back(line);
+    ASSERT_GT(motionLines.size(), 7u);
+    EXPECT_EQ(motionLines[2], "nRows=" + std::to_string(rows));
+    EXPECT_EQ(motionLines[4], "inDegrees=yes");
+    EXPECT_EQ(motionLines.size(), 7u + rows);
+    // trajectory.csv: time, 3 position, 4 quaternion, quality, then <joint>_rad; motion.mot: time, <joint>.
+    std::string expected = "time", field;
+    std::istringstream columns(header);
+    for (int k = 0; std::getline(columns, field, ','); ++k) {
+        if (k >= 9) expected += "\t" + field.substr(0, field.size() - 4);
+    }
+    EXPECT_EQ(motionLines[6], expected);
+    EXPECT_NE(slurp(fs::path(out) / "external_loads.xml").find("<datafile>object_forces.sto</datafile>"), std::string::npos);
+    EXPECT_EQ(slurp(fs::path(out) / "object_forces.sto").rfind("object_forces\nversion=1\n", 0), 0u);
+}
+
 // A scenario that passes every check but cannot be integrated: a perturbation of 1e300 N (any
 // finite force is accepted) throws the released phone out of double range. The run stops early
 // with exit code 3, a message naming the failure, and complete result files up to it, marked

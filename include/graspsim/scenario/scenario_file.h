@@ -34,7 +34,7 @@ Scenario parseScenario(const std::string& yamlText, const std::string& source);
 /// The names of the built-in scenarios ("ball-clutch", "phone-pinch"), sorted.
 std::vector<std::string> getBuiltinScenarioNames();
 
-/// The built-in scenario `name`: models/scenarios/<name>.yaml, compiled into the library.
+/// The built-in scenario `name`: `models/scenarios/<name>.yaml`, compiled into the library.
 /// @throws graspsim::InputError listing the built-in names when there is none called `name`.
 Scenario findBuiltinScenario(const std::string& name);
 

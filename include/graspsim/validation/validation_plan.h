@@ -12,7 +12,7 @@ namespace graspsim::validation {
 
 /// One simulation of the suite.
 struct ValidationRun {
-    std::string id;            ///< unique, also its folder under DIR/runs: <experiment>_<perturbation>_<variant>, e.g. "ball-clutch_f1_approx-bushing-merged"
+    std::string id;            ///< unique, also its folder under DIR/runs: `<experiment>_<perturbation>_<variant>`, e.g. "ball-clutch_f1_approx-bushing-merged"
     std::string scenario;      ///< built-in scenario name
     std::string variant;       ///< "full" or an approximation variant, e.g. "approx-bushing-merged"
     simulation::SimulationOptions options;
