@@ -45,7 +45,12 @@ std::string submitSlurmJob(const std::string& scriptPath, const std::vector<std:
     for (int c = std::fgetc(pipe); c != EOF; c = std::fgetc(pipe)) output += static_cast<char>(c);
     const int status = ::pclose(pipe);
     while (!output.empty() && (output.back() == '\n' || output.back() == '\r')) output.pop_back();
-    if (status != 0) throw Error("sbatch refused the job (" + command + "): " + foldToOneLine(output));
+    // Both are the user's to fix (a machine without Slurm, an sbatch option the site refuses).
+    if (WIFEXITED(status) && WEXITSTATUS(status) == 127) {
+        throw InputError("sbatch is not found; submit from a machine with Slurm's client, or run the shards with "
+                         "`graspsim study run STUDY --out DIR --shard i/K`");
+    }
+    if (status != 0) throw InputError("sbatch refused the job (" + command + "): " + foldToOneLine(output));
     const std::size_t lastLine = output.find_last_of('\n');
     std::string id = lastLine == std::string::npos ? output : output.substr(lastLine + 1);
     return id.substr(0, id.find(';'));  // --parsable prints "id" or "id;cluster"

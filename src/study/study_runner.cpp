@@ -54,7 +54,11 @@ CaseRecord judgeCase(const RunningCase& running, const ProcessEnd& end) {
         record.status = CaseStatus::Ok;
     } else if (end.exitCode == 3 && hasSummary) {
         record.status = CaseStatus::Incomplete;
-        record.error = nlohmann::json::parse(io::readTextFile(summaryPath)).value("failure", "stopped early");
+        try {
+            record.error = nlohmann::json::parse(io::readTextFile(summaryPath)).value("failure", "stopped early");
+        } catch (const nlohmann::json::exception&) {
+            record.error = "stopped early; summary.json unreadable";
+        }
     } else {
         record.error = findLastLine(running.tmpFolder + "/stderr.txt");
         if (record.error.empty()) {

@@ -6,6 +6,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -15,6 +16,10 @@
 namespace graspsim::study {
 
 namespace {
+
+// Case folders are numbered with at least four digits; a million cases is far beyond any study
+// that finishes, and keeps a mistyped range from filling the disk.
+constexpr int kMaxCases = 1000000;
 
 const std::vector<std::string> kTopKeys{"name", "description", "base", "set", "axes", "sampling", "samples", "seed", "measures"};
 
@@ -178,11 +183,18 @@ void readSampling(const std::string& source, const YAML::Node& root, StudySpec& 
     }
     if (sampled) spec.samples = static_cast<int>(readInteger(source, root["samples"], "samples", 1));
     if (root["seed"]) spec.seed = static_cast<std::uint64_t>(readInteger(source, root["seed"], "seed", 0));
+    double gridSize = 1;
     for (const StudyAxis& axis : spec.axes) {
         if (!sampled && axis.isRange && axis.range.steps == 0) {
             throw InputError(source + ":" + std::to_string(axis.line) + ": axis '" + axis.name + "' range needs steps (>= 2) on a grid");
         }
+        gridSize *= axis.isRange ? axis.range.steps : static_cast<double>(axis.values.size());
     }
+    if (!sampled && gridSize > kMaxCases) {
+        throw InputError(source + ": the grid has " + std::to_string(static_cast<long long>(gridSize)) + " cases, more than " +
+                         std::to_string(kMaxCases) + "; use fewer values or sampling: random or latin with samples: N");
+    }
+    if (sampled && spec.samples > kMaxCases) reject(source, root["samples"], "'samples' is above " + std::to_string(kMaxCases));
 }
 
 }  // namespace

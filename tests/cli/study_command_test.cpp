@@ -1,12 +1,13 @@
 // `graspsim study run / collect`: bad input gets one line and exit 2 with nothing written; a small
 // study runs on two processes into results.csv; a run interrupted (a case gone, another
-// half-written) and restarted ends with the same table; shards run by hand and collected give the
+// half-written; and a run killed with its case processes) and restarted ends with the same table; shards run by hand and collected give the
 // same table as one run; a case the reader refuses is recorded as failed and the others run.
 
 #include "cli_process.h"
 
 #include <gtest/gtest.h>
 
+#include <csignal>
 #include <sstream>
 
 namespace fs = std::filesystem;
@@ -113,6 +114,15 @@ TEST_F(StudyCommand, RunResumesAndShardsCollectToTheSameTable) {
     EXPECT_NE(table.find("2,0.9,0.8,full,ok,true,"), std::string::npos) << table;
     EXPECT_NE(table.find("3,0.9,0.8,approx,ok,true,"), std::string::npos) << table;
 
+    // Plots of each measure, or one line saying why there are none.
+    EXPECT_TRUE(fs::exists(whole / "plots/object_displacement_m.png") || first.out.find("plots skipped") != std::string::npos)
+        << first.out;
+    ::setenv("GRASPSIM_PYTHON", "/nonexistent/python3", 1);
+    const RunResult noPython = run("study collect " + whole.string());
+    ::unsetenv("GRASPSIM_PYTHON");
+    EXPECT_EQ(noPython.exitCode, 0);
+    EXPECT_NE(noPython.out.find("plots skipped: no Python interpreter at /nonexistent/python3"), std::string::npos) << noPython.out;
+
     // Interrupted: case 2 never committed, case 3 half-written (its temporary folder, no case.json).
     const auto case1Time = fs::last_write_time(whole / "cases/0001/case.json");
     fs::remove_all(whole / "cases/0002");
@@ -125,6 +135,28 @@ TEST_F(StudyCommand, RunResumesAndShardsCollectToTheSameTable) {
     EXPECT_EQ(dropWallTime(slurp(whole / "results.csv")), dropWallTime(table));
     EXPECT_EQ(fs::last_write_time(whole / "cases/0001/case.json"), case1Time) << "a finished case is not run again";
     EXPECT_FALSE(fs::exists(whole / "cases/0003.tmp-99999"));
+
+    // Killed for real (the run and its case processes, one process group) while cases 2 and 3
+    // run (0 and 1 fail at once, without a process), then restarted: the same table.
+    const fs::path killed = dir_ / "killed";
+    const std::string start = "setsid " + std::string(GRASPSIM_CLI_PATH) + " study run " + study + " --out " + killed.string() +
+                              " --jobs 2 >/dev/null 2>&1 & echo $! > " + (dir_ / "pid").string();
+    ASSERT_EQ(std::system(("sh -c '" + start + "'").c_str()), 0);
+    const auto running = [&] {
+        if (!fs::exists(killed / "cases/0001/case.json")) return false;
+        for (const auto& entry : fs::directory_iterator(killed / "cases")) {
+            if (entry.path().filename().string().rfind("0003.tmp-", 0) == 0) return true;
+        }
+        return false;
+    };
+    for (int i = 0; i < 600 && !running(); ++i) ::usleep(20000);
+    const int pid = std::stoi(slurp(dir_ / "pid"));
+    ASSERT_EQ(::kill(-pid, SIGKILL), 0);
+    ::usleep(200000);
+    ASSERT_FALSE(fs::exists(killed / "results.csv")) << "killed before the end";
+    EXPECT_FALSE(fs::exists(killed / "cases/0003/case.json"));
+    ASSERT_EQ(run("study run " + study + " --out " + killed.string() + " --jobs 2").exitCode, 0);
+    EXPECT_EQ(dropWallTime(slurp(killed / "results.csv")), dropWallTime(table));
 
     // Three shards by hand, then collect.
     for (const char* shard : {"0/3", "1/3", "2/3"}) {

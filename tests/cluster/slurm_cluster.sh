@@ -6,6 +6,7 @@
 #                                                until the node is idle, prints `export SLURM_CONF=...`
 #   tests/cluster/slurm_cluster.sh stop [DIR]    stops the three daemons it started and removes DIR
 #
+# Ports: $GRASPSIM_SLURMCTLD_PORT and $GRASPSIM_SLURMD_PORT (default 16817, 16818).
 # Needs Debian's slurm-wlm and munge (.ci/install) and root. Exits non-zero with one line saying
 # what failed when the cluster does not come up within 30 s (logs in DIR/*.log).
 set -euo pipefail

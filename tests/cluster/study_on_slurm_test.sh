@@ -32,6 +32,9 @@ axes:
 measures: [held, object_displacement_m, max_penetration_m, q_at_engage_n, steps, wall_time_s]
 STUDY
 
+# Ports of its own, so that two checkouts testing at once on one machine do not meet.
+export GRASPSIM_SLURMCTLD_PORT=$((20000 + ($$ % 5000) * 2))
+export GRASPSIM_SLURMD_PORT=$((GRASPSIM_SLURMCTLD_PORT + 1))
 start_output=$("$here/slurm_cluster.sh" start "$cluster" 2>&1) ||
   fail "the one-node Slurm cluster did not start, so the study could not be tested on it: $start_output"
 export SLURM_CONF="$cluster/slurm.conf"

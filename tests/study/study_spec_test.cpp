@@ -61,6 +61,9 @@ TEST(StudySpec, MalformedStudiesGetOneLineNamingTheKey) {
               std::string::npos);
     EXPECT_NE(errorOf(kHead + "set: {mode: full}\naxes: {mode: [full]}\nmeasures: [held]\n").find("both set and an axis"),
               std::string::npos);
+    EXPECT_NE(errorOf(kHead + "axes: {subject.mass: {from: 60, to: 80, steps: 2000}, object.mass: {from: 0.1, to: 1, steps: 1000}}\n"
+                              "measures: [held]\n").find("the grid has 2000000 cases"),
+              std::string::npos);
     EXPECT_NE(errorOf("base: ball-clutch\naxes: {mode: [full]}\nmeasures: [held]\n").find("'name' is missing"), std::string::npos);
     EXPECT_NE(errorOf(kHead + "axes: {'subject..mass': [1]}\nmeasures: [held]\n").find("axis 'subject..mass' is not accepted"),
               std::string::npos);

@@ -24,7 +24,7 @@ struct SlurmJob {
 std::string formatSbatchScript(const SlurmJob& job);
 
 /// Runs `sbatch --parsable <sbatchArguments> <scriptPath>` and returns the job id it prints.
-/// @throws graspsim::Error with sbatch's message when it is missing or refuses the job.
+/// @throws graspsim::InputError with sbatch's message when it is missing or refuses the job.
 std::string submitSlurmJob(const std::string& scriptPath, const std::vector<std::string>& sbatchArguments);
 
 }  // namespace graspsim::study
