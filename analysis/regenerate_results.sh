@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Regenerates the README's results (analysis/results/): the full validation suite (report, tables,
+# Regenerates the results in docs/validation.md and docs/performance.md (analysis/results/): the full validation suite (report, tables,
 # plots) and the Table 5.1 benchmark, from an existing build.
 # Usage: bash analysis/regenerate_results.sh [BUILD_DIR]   (default: build)
 # Takes a few minutes (the full suite includes a 600-s simulated hold). The validation exit code

@@ -1,29 +1,41 @@
 #include "command_line.h"
 
 #include "graspsim/error.h"
+#include "graspsim/results/provenance.h"
 
 #include <iostream>
 
 namespace graspsim::cli {
 
 CommandLine::CommandLine()
-    : app_("graspsim: anthropometric grasp simulation on Simbody"), model_(app_), simulate_(app_), validate_(app_), bench_(app_) {
+    : app_("graspsim: anthropometric grasp simulation on Simbody"), model_(app_), simulate_(app_), validate_(app_), bench_(app_), study_(app_), view_(app_) {
     app_.require_subcommand(0, 1);  // none given: say which exist; unknown ones: CLI11 names them
-    app_.set_version_flag("--version", "graspsim 0.1.0");
+    // Version, commit and library versions: what provenance.json records for each result.
+    app_.set_version_flag("--version", [] {
+        std::string text = results::formatVersionText(results::findBuildProvenance());
+        text.pop_back();  // CLI11 ends the line itself
+        return text;
+    });
 }
 
-void CommandLine::parse(int argc, const char* const* argv) { app_.parse(argc, argv); }
+void CommandLine::parse(int argc, const char* const* argv) {
+    arguments_.assign(argv, argv + argc);
+    app_.parse(argc, argv);
+}
 
 void CommandLine::checkOptions() const {
     if (simulate_.parsed()) simulate_.checkOptions();
     if (model_.parsed()) model_.checkOptions();
+    if (study_.parsed()) study_.checkOptions();
 }
 
 int CommandLine::run() const {
-    if (simulate_.parsed()) return simulate_.run();
+    if (simulate_.parsed()) return simulate_.run(arguments_);
+    if (view_.parsed()) return view_.run();
     if (validate_.parsed()) return validate_.run();
     if (bench_.parsed()) return bench_.run();
-    if (!model_.parsed()) throw InputError("a command is required: model, simulate, validate or bench (see graspsim --help)");
+    if (study_.parsed()) return study_.run();
+    if (!model_.parsed()) throw InputError("a command is required: model, simulate, view, validate, bench or study (see graspsim --help)");
     return model_.run();
 }
 

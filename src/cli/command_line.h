@@ -1,11 +1,13 @@
 #pragma once
-// graspsim's whole command line (`model ...`, `simulate ...`, `validate ...`, `bench ...`) as one object, so that main() stays
+// graspsim's whole command line (`model ...`, `simulate ...`, `validate ...`, `bench ...`, `study ...`, `view ...`) as one object, so that main() stays
 // a few lines and the parsing can be exercised without a process (tests/fuzz).
 
 #include "bench_command.h"
 #include "model_command.h"
 #include "simulate_command.h"
+#include "study_command.h"
 #include "validate_command.h"
+#include "view_command.h"
 
 #include <CLI/CLI.hpp>
 
@@ -30,10 +32,13 @@ public:
 
 private:
     CLI::App app_;
+    std::vector<std::string> arguments_;  // argv as given, for the results' provenance
     ModelCommand model_;
     SimulateCommand simulate_;
     ValidateCommand validate_;
     BenchCommand bench_;
+    StudyCommand study_;
+    ViewCommand view_;
 };
 
 }  // namespace graspsim::cli

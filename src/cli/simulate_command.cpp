@@ -1,17 +1,16 @@
 #include "simulate_command.h"
 
 #include "number_option.h"
+#include "progress_meter.h"
 
 #include "graspsim/error.h"
 #include "graspsim/opensim/opensim_storage.h"
-#include "graspsim/results/result_files.h"
+#include "graspsim/results/result_folder.h"
 #include "graspsim/scenario/scenario_file.h"
 #include "graspsim/simulation/grasp_simulation.h"
 #include "graspsim/simulation/multi_attachment_switch.h"
+#include "graspsim/viewer/replay_page.h"
 
-#include <unistd.h>
-
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -31,6 +30,8 @@ struct SimulateCommand::Options {
     std::string accuracy;
     std::string qThreshold, qMinimum;
     std::string out = "out";
+    bool view = false;
+    bool quiet = false;
 };
 
 SimulateCommand::SimulateCommand(CLI::App& app) : options_(std::make_shared<Options>()) {
@@ -52,8 +53,11 @@ SimulateCommand::SimulateCommand(CLI::App& app) : options_(std::make_shared<Opti
     command_->add_option("--q-threshold", o.qThreshold, "approx: grasp quality Q_Th (N) to engage (default: 0.8 x the settled grasp's)");
     command_->add_option("--q-minimum", o.qMinimum, "approx: grasp quality Q_M (N) below which to release (default: 0.5 x Q_Th)");
     command_->add_option("--out", o.out,
-                         "output folder (default out); receives trajectory.csv, contacts.csv, summary.json (and events.csv in approx mode), "
-                         "and for OpenSim motion.mot, object_forces.sto and external_loads.xml");
+                         "output folder (default out); receives trajectory.csv, contacts.csv, summary.json, scenario.yaml, "
+                         "model.urdf, provenance.json (and events.csv, constraint.csv in approx mode), and for OpenSim "
+                         "motion.mot, object_forces.sto and external_loads.xml");
+    command_->add_flag("-q,--quiet", o.quiet, "no progress display (it appears only on a terminal anyway)");
+    command_->add_flag("--view", o.view, "also write the 3-D replay, replay.html, into the output folder (as graspsim view)");
 }
 
 bool SimulateCommand::parsed() const { return command_->parsed(); }
@@ -104,14 +108,13 @@ void prepareFolder(const std::string& folder) {
     }
 }
 
-// A one-line progress display, on a terminal only, once the run has taken more than a second.
-simulation::ProgressCallback makeProgress() {
-    if (!::isatty(STDERR_FILENO)) return {};
-    const auto start = std::chrono::steady_clock::now();
-    return [start](double t, double duration) {
-        if (std::chrono::steady_clock::now() - start < std::chrono::seconds(1)) return;
-        std::fprintf(stderr, "\rsimulating: t = %.3f / %.3f s", t, duration);
-        if (t >= duration) std::fprintf(stderr, "\n");
+// Simulated time as progress: on a terminal only, unless --quiet.
+simulation::ProgressCallback makeProgress(ProgressMeter& meter) {
+    if (!meter.isShown()) return {};
+    return [&meter](double t, double duration) {
+        char detail[64];
+        std::snprintf(detail, sizeof detail, "t = %.3f / %.3f s", t, duration);
+        meter.update(t, duration, detail);
     };
 }
 
@@ -137,7 +140,31 @@ simulation::SimulationOptions SimulateCommand::parseOptions() const {
 
 void SimulateCommand::checkOptions() const { parseOptions(); }
 
-int SimulateCommand::run() const {
+namespace {
+
+// The per-run choices of provenance.json, as the options were given (defaults written out).
+results::RunProvenance makeRunProvenance(const std::vector<std::string>& commandLine,
+                                         const simulation::SimulationOptions& options) {
+    results::RunProvenance run;
+    run.commandLine = commandLine;
+    run.run["contact"] = simulation::toString(options.contact);
+    run.run["mode"] = simulation::toString(options.mode);
+    run.run["perturbation"] = options.perturbation;
+    run.run["integrator"] = simulation::toString(options.integrator);
+    run.run["duration_s"] = options.duration > 0 ? std::to_string(options.duration) : "scenario";
+    run.run["accuracy"] = options.accuracy > 0 ? std::to_string(options.accuracy) : "scenario";
+    if (options.mode == simulation::SimulationMode::Approx) {
+        run.run["constraint"] = simulation::toString(options.approx.constraint);
+        run.run["attach"] = simulation::toString(options.approx.attach);
+        run.run["q_threshold_n"] = options.approx.qThreshold > 0 ? std::to_string(options.approx.qThreshold) : "scenario";
+        run.run["q_minimum_n"] = options.approx.qMinimum > 0 ? std::to_string(options.approx.qMinimum) : "scenario";
+    }
+    return run;
+}
+
+}  // namespace
+
+int SimulateCommand::run(const std::vector<std::string>& commandLine) const {
     const Options& o = *options_;
     simulation::SimulationOptions options = parseOptions();
     const scenario::Scenario scenario = scenario::loadScenario(o.scenario);
@@ -145,10 +172,13 @@ int SimulateCommand::run() const {
     options.perturbation = o.perturbation;
     simulation::checkApproxAttach(scenario, options);
     prepareFolder(o.out);
-    const simulation::SimulationResult result = simulation::runGraspSimulation(scenario, options, makeProgress());
-    results::writeResultFiles(o.out, result);
+    ProgressMeter meter("simulating", o.quiet);
+    const simulation::SimulationResult result = simulation::runGraspSimulation(scenario, options, makeProgress(meter));
+    meter.finish();
+    results::writeResultFolder(o.out, scenario, result, makeRunProvenance(commandLine, options));
     opensim::writeOpenSimResultFiles(o.out, result);
     const simulation::SimulationSummary& s = result.summary;
+    if (o.view) std::cout << "replay written to " << viewer::writeReplayPage(o.out) << ": open it in a web browser\n";
     std::cout << scenario.name << " (" << s.contact << ", " << s.mode << ", perturbation " << s.perturbation
               << "): " << s.simTime << " s simulated in " << s.wallTime << " s, " << s.steps << " steps, held "
               << (s.held ? "yes" : "no") << ", object moved " << s.objectDisplacement * 1000 << " mm after settling; "

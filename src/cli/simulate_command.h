@@ -6,6 +6,8 @@
 #include <CLI/CLI.hpp>
 
 #include <memory>
+#include <string>
+#include <vector>
 
 namespace graspsim::cli {
 
@@ -16,7 +18,8 @@ public:
     // Checks the option values that need no scenario (numbers, names); throws InputError.
     void checkOptions() const;
     // Runs the simulation; returns the exit code (0, or 3 when the run stopped early).
-    int run() const;
+    // `commandLine` (argv as given) goes into the result's provenance.json.
+    int run(const std::vector<std::string>& commandLine) const;
 
 private:
     // Every option the user gave that needs no scenario, checked before anything is loaded or written.

@@ -1,12 +1,12 @@
 #include "validate_command.h"
 
 #include "number_option.h"
+#include "progress_meter.h"
 
 #include "graspsim/error.h"
+#include "graspsim/scenario/scenario_file.h"
 #include "graspsim/validation/plot_script.h"
 #include "graspsim/validation/validation_report.h"
-
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -21,6 +21,7 @@ struct ValidateCommand::Options {
     std::vector<std::string> experiments, modes;
     std::string longHold;
     std::string out = "out/validation";
+    bool quiet = false;
 };
 
 ValidateCommand::ValidateCommand(CLI::App& app) : options_(std::make_shared<Options>()) {
@@ -34,6 +35,7 @@ ValidateCommand::ValidateCommand(CLI::App& app) : options_(std::make_shared<Opti
     command_->add_option("--long-hold", o.longHold, "simulated seconds of the long approximation hold (default 600; 0 skips it)");
     command_->add_flag("!--no-plots", o.plots, "skip the plots (no Python needed)");
     command_->add_option("--out", o.out, "output folder (default out/validation)");
+    command_->add_flag("-q,--quiet", o.quiet, "no progress display (it appears only on a terminal anyway)");
 }
 
 bool ValidateCommand::parsed() const { return command_->parsed(); }
@@ -52,9 +54,39 @@ void prepareFolder(const std::string& folder) {
     if (!writable) throw InputError("--out: folder '" + folder + "' cannot be created or written");
 }
 
-void printProgress(std::size_t index, std::size_t count, const validation::ValidationRun& run) {
-    std::cerr << "[" << index + 1 << "/" << count << "] " << run.id << (::isatty(STDERR_FILENO) ? "\r" : "\n") << std::flush;
+// Simulated seconds of a run: the unit of the progress display, since a run's cost grows with it
+// (the long hold is 600 s, the others 3 s).
+double findSimulatedTime(const validation::ValidationRun& run) {
+    return run.options.duration > 0 ? run.options.duration : scenario::findBuiltinScenario(run.scenario).simulation.duration;
 }
+
+// Progress over the plan in simulated seconds, shown as "[k/n] run id", moving within each run.
+class SuiteProgress {
+public:
+    SuiteProgress(ProgressMeter& meter, const std::vector<validation::ValidationRun>& runs) : meter_(meter) {
+        for (const validation::ValidationRun& run : runs) before_.push_back(total_), total_ += findSimulatedTime(run);
+    }
+    validation::ValidationProgress makeRunStart() {
+        if (!meter_.isShown()) return {};
+        return [this](std::size_t index, std::size_t count, const validation::ValidationRun& run) {
+            index_ = index;
+            detail_ = "[" + std::to_string(index + 1) + "/" + std::to_string(count) + "] " + run.id;
+            meter_.update(before_[index], total_, detail_);
+        };
+    }
+    simulation::ProgressCallback makeWithinRun() {
+        if (!meter_.isShown()) return {};
+        return [this](double t, double) { meter_.update(before_[index_] + t, total_, detail_); };
+    }
+    void finish() { meter_.update(total_, total_, "done"); }
+
+private:
+    ProgressMeter& meter_;
+    std::vector<double> before_;  // simulated time before run k (s)
+    double total_ = 0;
+    std::size_t index_ = 0;
+    std::string detail_;
+};
 
 }  // namespace
 
@@ -69,7 +101,12 @@ int ValidateCommand::run() const {
     }
     const std::vector<validation::ValidationRun> runs = validation::makeValidationPlan(plan);
     prepareFolder(o.out);
-    const validation::ValidationResults results = validation::runValidation(runs, o.out, printProgress);
+    ProgressMeter meter("validating", o.quiet);
+    SuiteProgress progress(meter, runs);
+    const validation::ValidationResults results =
+        validation::runValidation(runs, o.out, progress.makeRunStart(), progress.makeWithinRun());
+    progress.finish();
+    meter.finish();
     // The tables first, so that a plotting failure still leaves the numbers.
     validation::writeValidationReport(o.out, results, {});
     const std::vector<std::string> plots = o.plots ? validation::runPlotScript(o.out) : std::vector<std::string>{};

@@ -143,11 +143,34 @@ std::string formatEventsCsv(const simulation::SimulationResult& result) {
     return out.str();
 }
 
+std::string formatConstraintCsv(const simulation::SimulationResult& result) {
+    static const char* const kAxes[6] = {"rx", "ry", "rz", "x", "y", "z"};
+    std::ostringstream out;
+    out << "time_s,origin_x_m,origin_y_m,origin_z_m,qw,qx,qy,qz";
+    for (const char* axis : kAxes) out << ",limit_" << axis;
+    for (const char* axis : kAxes) out << ",reaction_" << axis;
+    out << '\n';
+    for (const simulation::ConstraintSample& c : result.constraint) {
+        std::ostringstream row;
+        putVec3(row, c.X_GM.p());
+        const SimTK::Quaternion q = c.X_GM.R().convertRotationToQuaternion();
+        for (int k = 0; k < 4; ++k) put(row, q[k]);
+        for (int k = 0; k < 6; ++k) put(row, c.limits[k]);
+        for (int k = 0; k < 6; ++k) put(row, c.reaction[k]);
+        char time[32];
+        std::snprintf(time, sizeof time, "%.17g", c.time);
+        out << time << row.str() << '\n';
+    }
+    return out.str();
+}
+
 void writeResultFiles(const std::string& folder, const simulation::SimulationResult& result) {
     io::writeFileAtomically(folder + "/trajectory.csv", formatTrajectoryCsv(result));
     io::writeFileAtomically(folder + "/contacts.csv", formatContactsCsv(result));
     io::writeFileAtomically(folder + "/summary.json", formatSummaryJson(result.summary));
-    if (result.summary.mode == "approx") io::writeFileAtomically(folder + "/events.csv", formatEventsCsv(result));
+    if (result.summary.mode != "approx") return;
+    io::writeFileAtomically(folder + "/events.csv", formatEventsCsv(result));
+    io::writeFileAtomically(folder + "/constraint.csv", formatConstraintCsv(result));
 }
 
 }  // namespace graspsim::results

@@ -52,7 +52,9 @@ Scenario parseScenario(const std::string& yamlText, const std::string& source) {
     }
 }
 
-Scenario loadScenarioFile(const std::string& path) {
+namespace {
+
+std::string readFileText(const std::string& path) {
     std::error_code error;
     if (!std::filesystem::is_regular_file(path, error)) {
         throw InputError(path + ": is not a readable file; give a scenario YAML file or one of the " +
@@ -62,8 +64,12 @@ Scenario loadScenarioFile(const std::string& path) {
     std::ostringstream text;
     text << file.rdbuf();
     if (!file) throw InputError(path + ": cannot be read; give a readable scenario YAML file");
-    return parseScenario(text.str(), path);
+    return text.str();
 }
+
+}  // namespace
+
+Scenario loadScenarioFile(const std::string& path) { return parseScenario(readFileText(path), path); }
 
 std::vector<std::string> getBuiltinScenarioNames() {
     std::vector<std::string> names;
@@ -85,6 +91,15 @@ Scenario loadScenario(const std::string& nameOrPath) {
     const std::vector<std::string> names = getBuiltinScenarioNames();
     if (std::find(names.begin(), names.end(), nameOrPath) != names.end()) return findBuiltinScenario(nameOrPath);
     return loadScenarioFile(nameOrPath);
+}
+
+ScenarioText readScenarioText(const std::string& nameOrPath) {
+    for (std::size_t i = 0; i < kEmbeddedFileCount; ++i) {
+        if (findBuiltinName(kEmbeddedFiles[i]) == nameOrPath) {
+            return {std::string(kEmbeddedFiles[i].text), findBuiltinSource(nameOrPath)};
+        }
+    }
+    return {readFileText(nameOrPath), nameOrPath};
 }
 
 }  // namespace graspsim::scenario

@@ -65,6 +65,7 @@ public:
         } else {
             sample.graspQuality = calcContactGraspQuality(contacts.contacts, X_GO, qualityOptions_);
         }
+        if (auto constraint = findConstraintSample(scene_, s)) result_.constraint.push_back(*constraint);
         result_.summary.maxGraspQuality = std::max(result_.summary.maxGraspQuality, sample.graspQuality);
         result_.trajectory.push_back(std::move(sample));
         for (const auto& c : contacts.contacts) result_.summary.maxPenetration = std::max(result_.summary.maxPenetration, c.depth);

@@ -193,11 +193,19 @@ EndEffectorCost measureEndEffectors(int count, double duration, int realizations
 
 }  // namespace
 
-CostTable measureCostTable(double duration, int realizations) {
+CostTable measureCostTable(double duration, int realizations, const CostProgress& progress) {
     const auto start = std::chrono::steady_clock::now();
+    const auto report = [&](std::size_t done, const std::string& next) { if (progress) progress(done, 6, next); };
     CostTable table;
-    for (const char* name : {"ball-clutch", "phone-pinch"}) table.experiments.push_back(measureExperiment(name, duration, realizations));
-    for (int count = 2; count <= 5; ++count) table.scaling.push_back(measureEndEffectors(count, duration, realizations));
+    for (const char* name : {"ball-clutch", "phone-pinch"}) {
+        report(table.experiments.size(), name);
+        table.experiments.push_back(measureExperiment(name, duration, realizations));
+    }
+    for (int count = 2; count <= 5; ++count) {
+        report(2 + table.scaling.size(), std::to_string(count) + " end-effectors");
+        table.scaling.push_back(measureEndEffectors(count, duration, realizations));
+    }
+    report(6, "done");
     table.wallTime = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return table;
 }

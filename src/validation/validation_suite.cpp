@@ -1,7 +1,7 @@
 #include "graspsim/validation/validation_suite.h"
 
 #include "graspsim/error.h"
-#include "graspsim/results/result_files.h"
+#include "graspsim/results/result_folder.h"
 #include "graspsim/validation/analytic_cases.h"
 #include "graspsim/scenario/scenario_file.h"
 
@@ -18,18 +18,24 @@ bool ValidationResults::passed() const {
 
 namespace {
 
-void writeRunFiles(const std::string& folder, const ValidationRun& run, const simulation::SimulationResult& result) {
+// Each run's folder is a complete result (viewable with graspsim view); its provenance names the
+// run of the suite, as the suite's command line is not known here.
+void writeRunFiles(const std::string& folder, const ValidationRun& run, const scenario::Scenario& scenario,
+                   const simulation::SimulationResult& result) {
     const std::filesystem::path dir = std::filesystem::path(folder) / "runs" / run.id;
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     if (ec) throw InputError(dir.string() + ": cannot be created (" + ec.message() + ")");
-    results::writeResultFiles(dir.string(), result);
+    results::RunProvenance provenance;
+    provenance.run = {{"validation_run", run.id}, {"variant", run.variant}, {"perturbation", run.options.perturbation},
+                      {"duration_s", std::to_string(result.summary.simTime)}};
+    results::writeResultFolder(dir.string(), scenario, result, provenance);
 }
 
 }  // namespace
 
 ValidationResults runValidation(const std::vector<ValidationRun>& plan, const std::string& folder,
-                                const ValidationProgress& progress) {
+                                const ValidationProgress& progress, const simulation::ProgressCallback& runProgress) {
     const auto start = std::chrono::steady_clock::now();
     ValidationResults results;
     // Full-contact results are kept only until the runs compared with them are done.
@@ -38,8 +44,8 @@ ValidationResults runValidation(const std::vector<ValidationRun>& plan, const st
         const ValidationRun& run = plan[k];
         if (progress) progress(k, plan.size(), run);
         const scenario::Scenario s = scenario::findBuiltinScenario(run.scenario);
-        simulation::SimulationResult result = simulation::runGraspSimulation(s, run.options);
-        writeRunFiles(folder, run, result);
+        simulation::SimulationResult result = simulation::runGraspSimulation(s, run.options, runProgress);
+        writeRunFiles(folder, run, s, result);
         RunRecord record;
         record.run = run;
         record.summary = result.summary;

@@ -12,7 +12,11 @@
 ///   and "failure" when the run stopped early; approx runs add engaged, engage_time_s and
 ///   release_time_s (null when none), q_at_engage_n, q_threshold_n and approx_step_us;
 /// - events.csv (approx runs only): time (s), event (engage or release), grasp quality (N), and
-///   the reason in double quotes.
+///   the reason in double quotes;
+/// - constraint.csv (approx runs only): one row per output time while the merged approximation is
+///   engaged (simulation/constraint_sample.h): time (s), the constraint frame M's origin x, y, z (m,
+///   ground) and orientation quaternion w, x, y, z, then per axis rx, ry, rz, x, y, z its limit
+///   (N m, N; "inf" on a locked axis) and its reaction on the object (N m, N, along M's axes).
 /// Each file is written whole to a temporary name and renamed, so a crash never leaves half a file.
 
 #include "graspsim/simulation/grasp_simulation.h"
@@ -31,7 +35,10 @@ std::string formatSummaryJson(const simulation::SimulationSummary& summary);
 /// events.csv's text.
 std::string formatEventsCsv(const simulation::SimulationResult& result);
 
-/// Writes the three files (four in approx mode) into `folder`, which must exist.
+/// constraint.csv's text.
+std::string formatConstraintCsv(const simulation::SimulationResult& result);
+
+/// Writes the three files (five in approx mode) into `folder`, which must exist.
 /// @throws graspsim::InputError naming the file when it cannot be written.
 void writeResultFiles(const std::string& folder, const simulation::SimulationResult& result);
 

@@ -42,4 +42,15 @@ Scenario findBuiltinScenario(const std::string& name);
 /// @throws graspsim::InputError as findBuiltinScenario and loadScenarioFile.
 Scenario loadScenario(const std::string& nameOrPath);
 
+/// A scenario's YAML text, unparsed, and the name messages give it.
+struct ScenarioText {
+    std::string text;    ///< the file's YAML, comments included
+    std::string source;  ///< "models/scenarios/ball-clutch.yaml" for a built-in, else the path
+};
+
+/// The text of the built-in scenario `nameOrPath`, or of the file at that path (not checked:
+/// give it to parseScenario). For tools that edit fields before parsing (study cases).
+/// @throws graspsim::InputError when there is no such built-in and the file cannot be read.
+ScenarioText readScenarioText(const std::string& nameOrPath);
+
 }  // namespace graspsim::scenario

@@ -5,6 +5,7 @@
 #include "graspsim/contact/compliant_contact_force.h"
 #include "graspsim/integration/stepper.h"
 #include "graspsim/scenario/scenario.h"
+#include "graspsim/simulation/constraint_sample.h"
 #include "graspsim/simulation/grasp_switch.h"
 #include "graspsim/simulation/simulation_options.h"
 
@@ -95,6 +96,7 @@ struct SimulationResult {
     std::vector<ContactSample> contacts;
     SimulationSummary summary;
     std::vector<GraspEvent> events;  ///< engage/release switches of the approximation, in time order
+    std::vector<ConstraintSample> constraint;  ///< the merged approximation's constraint at each output time it is engaged
 };
 
 /// Called after each output sample with the simulated time reached (s).

@@ -24,6 +24,7 @@
 ///    the approximation run's own System with its constraint off (ApproxCost). This is the
 ///    thesis's "time to solve the contacts of one step".
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -82,9 +83,14 @@ struct CostTable {
     double wallTime = 0;                   ///< s, the whole measurement
 };
 
+/// Called before each of the table's measurements with how many are done, how many there are, and
+/// what comes next (e.g. "ball-clutch", "3 end-effectors").
+using CostProgress = std::function<void(std::size_t done, std::size_t total, const std::string& next)>;
+
 /// Measures the table. `duration`: simulated s of each run (>= the settle time + 0.5 s so that
-/// the approximation has engaged for a while); `realizations`: dynamics evaluations per timing.
-CostTable measureCostTable(double duration = 2.0, int realizations = 400);
+/// the approximation has engaged for a while); `realizations`: dynamics evaluations per timing;
+/// `progress` (may be empty) is told before each measurement and once at the end.
+CostTable measureCostTable(double duration = 2.0, int realizations = 400, const CostProgress& progress = {});
 
 /// The table as text, with the thesis's Table 5.1 figures beside ours.
 std::string formatCostTable(const CostTable& table);

@@ -7,6 +7,7 @@
 /// events.csv; see result_files.h); DIR/results.csv one row per run; DIR/checks.csv one row per
 /// bound; DIR/report.md the tables for people (validation_report.h).
 
+#include "graspsim/simulation/grasp_simulation.h"
 #include "graspsim/validation/validation_checks.h"
 
 #include <functional>
@@ -28,10 +29,12 @@ struct ValidationResults {
 using ValidationProgress = std::function<void(std::size_t index, std::size_t count, const ValidationRun& run)>;
 
 /// Runs `plan` (from makeValidationPlan()), then the analytic cases (analytic_cases.h), and
-/// writes every run's files under `folder`/runs.
-/// The folder must exist and be writable. A run that stops early is kept (its checks fail).
+/// writes every run's files (a complete result folder each, results/result_folder.h) under
+/// `folder`/runs. The folder must exist and be writable. A run that stops early is kept (its checks fail).
+/// `progress` is told before each run, `runProgress` within it (simulation::ProgressCallback).
 /// @throws graspsim::InputError when a file cannot be written.
 ValidationResults runValidation(const std::vector<ValidationRun>& plan, const std::string& folder,
-                                const ValidationProgress& progress = {});
+                                const ValidationProgress& progress = {},
+                                const simulation::ProgressCallback& runProgress = {});
 
 }  // namespace graspsim::validation

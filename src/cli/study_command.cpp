@@ -1,0 +1,194 @@
+#include "study_command.h"
+
+#include "number_option.h"
+
+#include "graspsim/error.h"
+#include "graspsim/io/atomic_file.h"
+#include "graspsim/scenario/scenario_file.h"
+#include "graspsim/study/case_setup.h"
+#include "graspsim/study/slurm_job.h"
+#include "graspsim/study/study_case.h"
+#include "graspsim/study/study_folder.h"
+#include "graspsim/study/study_plots.h"
+#include "graspsim/study/study_runner.h"
+#include "graspsim/study/study_table.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+namespace graspsim::cli {
+
+namespace fs = std::filesystem;
+
+struct StudyCommand::Options {
+    std::string study;
+    std::string out;
+    std::string jobs = "1";
+    std::string shard;
+    bool retryFailed = false;
+    std::string arraySize;
+    std::vector<std::string> sbatchArguments;
+};
+
+StudyCommand::StudyCommand(CLI::App& app) : options_(std::make_shared<Options>()) {
+    Options& o = *options_;
+    command_ = app.add_subcommand("study", "Parameter sweeps: run a study file's cases locally or on Slurm, and merge their results");
+    command_->require_subcommand(1);
+    run_ = command_->add_subcommand("run", "Run a study's cases (or one shard of them) on local processes; skips finished cases");
+    run_->add_option("study", o.study, "study file (YAML, see models/studies/)")->required();
+    run_->add_option("--out", o.out, "output folder: cases/<n>/, results.csv, plots/")->required();
+    run_->add_option("--jobs", o.jobs, "cases run at once, each a graspsim process (default 1)");
+    run_->add_option("--shard", o.shard, "i/K: run only the cases whose number is i modulo K (0 <= i < K); "
+                                         "merge shards with `graspsim study collect`");
+    run_->add_flag("--retry-failed", o.retryFailed, "run failed and incomplete cases again (default: keep their record)");
+    submit_ = command_->add_subcommand("submit", "Submit a study as a Slurm job array (task i of K runs shard i/K)");
+    submit_->add_option("study", o.study, "study file (YAML)")->required();
+    submit_->add_option("--out", o.out, "output folder, on a file system the nodes share")->required();
+    submit_->add_option("--array-size", o.arraySize, "number of array tasks K (default: the number of cases, at most 100)");
+    submit_->add_option("--sbatch-arg", o.sbatchArguments, "an option for sbatch, e.g. --sbatch-arg=--partition=short (repeatable)");
+    collect_ = command_->add_subcommand("collect", "Merge a study folder's cases into results.csv and plots; list missing and failed cases");
+    collect_->add_option("folder", o.out, "the study's output folder")->required();
+}
+
+bool StudyCommand::parsed() const { return command_->parsed(); }
+
+namespace {
+
+int parseCount(const std::string& text, const std::string& option) {
+    const double value = parseNumber(text, option, "a whole number >= 1");
+    if (!(value >= 1 && value <= 100000 && value == static_cast<int>(value))) {
+        throw InputError(option + ": value " + text + " is not accepted; give a whole number >= 1");
+    }
+    return static_cast<int>(value);
+}
+
+// The binary running now, so that every case runs the same graspsim.
+std::string findExecutable() {
+    std::error_code ec;
+    const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+    if (ec) throw Error("cannot find the graspsim executable (/proc/self/exe: " + ec.message() + ")");
+    return self.string();
+}
+
+std::string formatClock(double seconds) {
+    const long s = static_cast<long>(seconds + 0.5);
+    char text[32];
+    std::snprintf(text, sizeof text, "%ld:%02ld:%02ld", s / 3600, s / 60 % 60, s % 60);
+    return text;
+}
+
+// A progress bar with an ETA on a terminal; nothing otherwise (logs of batch jobs stay clean).
+std::function<void(const study::RunProgress&)> makeProgressBar() {
+    if (!::isatty(STDERR_FILENO)) return {};
+    return [](const study::RunProgress& p) {
+        constexpr int kWidth = 30;
+        const int filled = p.total ? kWidth * p.finished / p.total : kWidth;
+        std::fprintf(stderr, "\r[%s%s] %d/%d cases, %d failed, %s elapsed, ETA %s ", std::string(filled, '#').c_str(),
+                     std::string(kWidth - filled, '.').c_str(), p.finished, p.total, p.failed, formatClock(p.elapsed).c_str(),
+                     p.remaining < 0 ? "-:--:--" : formatClock(p.remaining).c_str());
+        if (p.finished == p.total) std::fprintf(stderr, "\n");
+    };
+}
+
+// The study file, its base scenario and every value checked; nothing written.
+struct LoadedStudy {
+    study::StudySpec spec;
+    scenario::ScenarioText base;
+};
+
+LoadedStudy loadStudy(const std::string& path) {
+    LoadedStudy loaded{study::loadStudyFile(path), {}};
+    loaded.base = scenario::readScenarioText(loaded.spec.base);
+    study::checkStudyValues(loaded.spec, loaded.base);
+    return loaded;
+}
+
+// results.csv and the plots; returns collect's exit code (5 when cases are missing).
+int mergeResults(const study::StudySpec& spec, const std::string& folder) {
+    const study::StudyTable table = study::collectStudyTable(spec, folder);
+    study::writeStudyTable(folder, table);
+    const int finished = table.total - static_cast<int>(table.missing.size());
+    std::cout << "study '" << spec.name << "': " << table.total << " cases, " << finished - static_cast<int>(table.failed.size())
+              << " ok, " << table.failed.size() << " failed, " << table.missing.size() << " missing; table in " << folder
+              << "/results.csv\n";
+    if (!table.failed.empty()) std::cout << "failed (see their error column): " << study::formatCaseList(table.failed) << "\n";
+    if (!table.missing.empty()) {
+        std::cout << "missing: " << study::formatCaseList(table.missing)
+                  << "; run the study again (or resubmit): finished cases are skipped\n";
+    }
+    const study::PlotOutcome plots = study::drawStudyPlots(folder);
+    if (!plots.skipped.empty()) std::cout << plots.skipped << "\n";
+    else std::cout << plots.files.size() << " plot(s) in " << folder << "/plots\n";
+    return table.missing.empty() ? 0 : 5;
+}
+
+}  // namespace
+
+void StudyCommand::checkOptions() const {
+    const Options& o = *options_;
+    if (run_->parsed()) {
+        parseCount(o.jobs, "--jobs");
+        if (!o.shard.empty()) study::parseShard(o.shard);
+    }
+    if (submit_->parsed() && !o.arraySize.empty()) parseCount(o.arraySize, "--array-size");
+}
+
+int StudyCommand::run() const {
+    checkOptions();
+    if (run_->parsed()) return runCases();
+    if (submit_->parsed()) return submit();
+    return collect();
+}
+
+int StudyCommand::runCases() const {
+    const Options& o = *options_;
+    study::RunSettings settings;
+    settings.folder = o.out;
+    settings.jobs = parseCount(o.jobs, "--jobs");
+    if (!o.shard.empty()) settings.shard = study::parseShard(o.shard);
+    settings.retryFailed = o.retryFailed;
+    const LoadedStudy loaded = loadStudy(o.study);
+    study::prepareStudyFolder(o.out, loaded.spec, loaded.base.text);
+    settings.executable = findExecutable();
+    settings.progress = makeProgressBar();
+    const study::RunReport report = study::runStudyCases(loaded.spec, loaded.base, settings);
+    if (settings.shard.count > 1) {
+        std::cout << "shard " << o.shard << ": " << report.total << " cases (" << report.skipped << " already finished, "
+                  << report.ran << " run now), " << report.failed << " failed or incomplete; merge the shards with "
+                  << "`graspsim study collect " << o.out << "`\n";
+        return 0;
+    }
+    return mergeResults(loaded.spec, o.out);
+}
+
+int StudyCommand::submit() const {
+    const Options& o = *options_;
+    const LoadedStudy loaded = loadStudy(o.study);
+    const int cases = static_cast<int>(study::expandCases(loaded.spec).size());
+    const int arraySize = o.arraySize.empty() ? std::min(cases, 100) : std::min(cases, parseCount(o.arraySize, "--array-size"));
+    study::prepareStudyFolder(o.out, loaded.spec, loaded.base.text);
+    study::SlurmJob job;
+    job.name = loaded.spec.name;
+    job.executable = findExecutable();
+    job.studyFile = fs::absolute(o.study).lexically_normal().string();
+    job.folder = fs::absolute(o.out).lexically_normal().string();
+    job.arraySize = arraySize;
+    fs::create_directories(job.folder + "/slurm");
+    const std::string script = job.folder + "/slurm/study.sbatch";
+    io::writeFileAtomically(script, study::formatSbatchScript(job));
+    const std::string id = study::submitSlurmJob(script, o.sbatchArguments);
+    std::cout << "submitted job array " << id << ": " << arraySize << " task(s) for " << cases << " cases (script "
+              << script << ", logs in " << job.folder << "/slurm); when it has run: graspsim study collect " << o.out << "\n";
+    return 0;
+}
+
+int StudyCommand::collect() const {
+    const std::string& folder = options_->out;
+    return mergeResults(study::loadFolderStudy(folder), folder);
+}
+
+}  // namespace graspsim::cli

@@ -1,0 +1,73 @@
+#include "view_command.h"
+
+#include "number_option.h"
+
+#include "graspsim/error.h"
+#include "graspsim/io/atomic_file.h"
+#include "graspsim/viewer/replay_page.h"
+#include "graspsim/viewer/still_picture.h"
+
+#include <cmath>
+#include <iostream>
+
+namespace graspsim::cli {
+
+struct ViewCommand::Options {
+    std::string folder;
+    std::string pngTime;
+    std::string pngFile;
+    std::string size = "1200x800";
+};
+
+ViewCommand::ViewCommand(CLI::App& app) : options_(std::make_shared<Options>()) {
+    Options& o = *options_;
+    command_ = app.add_subcommand("view", "Write DIR/replay.html, a 3-D replay of a simulate result that opens in any browser");
+    command_->add_option("folder", o.folder, "a result folder (simulate --out)")->required();
+    command_->add_option("--png", o.pngTime, "also render the replay at this time (s) as a PNG picture (needs chromium)");
+    command_->add_option("--png-file", o.pngFile, "where to write the picture (default DIR/replay.png)");
+    command_->add_option("--size", o.size, "picture size in pixels, WIDTHxHEIGHT (default 1200x800)");
+}
+
+bool ViewCommand::parsed() const { return command_->parsed(); }
+
+namespace {
+
+viewer::PictureSize parseSize(const std::string& text) {
+    const std::string accepted = "use WIDTHxHEIGHT in pixels, each in [200, 4000], e.g. 1200x800";
+    const std::size_t x = text.find('x');
+    if (x == std::string::npos) throw InputError("--size: value '" + text + "' is not accepted; " + accepted);
+    const double width = parseNumber(text.substr(0, x), "--size", accepted);
+    const double height = parseNumber(text.substr(x + 1), "--size", accepted);
+    const auto fits = [](double v) { return v >= 200 && v <= 4000 && v == std::floor(v); };
+    if (!fits(width) || !fits(height)) throw InputError("--size: value '" + text + "' is not accepted; " + accepted);
+    return {static_cast<int>(width), static_cast<int>(height)};
+}
+
+double parsePictureTime(const std::string& text, const viewer::ResultRecord& record) {
+    const double end = record.trajectory.back().time;
+    const std::string accepted = "the run covers 0 to " + std::to_string(end) + " s";
+    const double t = parseNumber(text, "--png", accepted);
+    if (!(t >= 0 && t <= end)) throw InputError("--png: time " + text + " s is outside the run; " + accepted);
+    return t;
+}
+
+}  // namespace
+
+int ViewCommand::run() const {
+    const Options& o = *options_;
+    const viewer::PictureSize size = parseSize(o.size);
+    // Everything is checked before the first file is written.
+    const viewer::ResultRecord record = viewer::readResultFolder(o.folder);
+    const double time = o.pngTime.empty() ? 0.0 : parsePictureTime(o.pngTime, record);
+    if (!o.pngTime.empty()) viewer::findChromium();
+    const std::string page = o.folder + "/replay.html";
+    io::writeFileAtomically(page, viewer::makeReplayPage(record));
+    std::cout << "replay written to " << page << ": open it in a web browser (no server needed)\n";
+    if (o.pngTime.empty()) return 0;
+    const std::string picture = o.pngFile.empty() ? o.folder + "/replay.png" : o.pngFile;
+    viewer::renderStillPicture(page, time, picture, size);
+    std::cout << "picture at t = " << time << " s written to " << picture << "\n";
+    return 0;
+}
+
+}  // namespace graspsim::cli

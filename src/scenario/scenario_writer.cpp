@@ -1,0 +1,101 @@
+#include "graspsim/scenario/scenario_writer.h"
+
+#include "graspsim/anthropometry/units.h"
+
+#include <cstdio>
+#include <sstream>
+
+namespace graspsim::scenario {
+
+namespace {
+
+// 17 significant digits: every double reads back to itself.
+std::string formatNumber(double value) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.17g", value);
+    return buffer;
+}
+
+std::string formatDegrees(double radians) { return formatNumber(radians / anthropometry::fromDegrees(1.0)); }
+
+std::string formatVec3(const Vec3& v, double scale = 1.0) {
+    return "[" + formatNumber(v[0] * scale) + ", " + formatNumber(v[1] * scale) + ", " + formatNumber(v[2] * scale) + "]";
+}
+
+// YAML double-quoted scalar: names and descriptions may hold ':' or '#'.
+std::string quote(const std::string& text) {
+    std::string quoted = "\"";
+    for (char c : text) {
+        if (c == '"' || c == '\\') quoted += '\\';
+        quoted += c;
+    }
+    return quoted + "\"";
+}
+
+void writeSubjectAndObject(std::ostringstream& out, const Scenario& s) {
+    const anthropometry::Subject& subject = s.bodyOptions.subject;
+    out << "subject:\n  sex: " << anthropometry::toString(subject.sex) << "\n  mass: " << formatNumber(subject.mass)
+        << "\n  stature: " << formatNumber(subject.stature) << "\n  preset: " << model::toString(s.bodyOptions.preset) << "\n\n";
+    const ObjectSpec& o = s.object;
+    out << "object:\n  shape: " << toString(o.shape) << "\n  mass: " << formatNumber(o.mass) << "\n";
+    if (o.shape == ObjectShape::Sphere) out << "  radius: " << formatNumber(o.radius) << "\n";
+    else out << "  size: " << formatVec3(o.size) << "\n";
+    out << "  position: " << formatVec3(o.position) << "\n  orientation: " << formatVec3(o.orientation, 1 / anthropometry::fromDegrees(1.0))
+        << "  # deg\n\n";
+}
+
+void writePoseAndGoals(std::ostringstream& out, const Scenario& s) {
+    out << "grasp_pose:  # deg\n";
+    for (const auto& [joint, angle] : s.graspPose) out << "  " << joint << ": " << formatDegrees(angle) << "\n";
+    out << "\ngoals:  # m, object frame\n";
+    for (const auto& [effector, p_OG] : s.goals) out << "  " << effector << ": " << formatVec3(p_OG) << "\n";
+    out << "\nperturbations:" << (s.perturbations.empty() ? "  # none\n" : "\n");
+    for (const Perturbation& p : s.perturbations) {
+        out << "  " << p.name << ": {force: " << formatVec3(p.force) << ", start: " << formatNumber(p.start)
+            << ", duration: " << formatNumber(p.duration) << "}\n";
+    }
+    out << "\n";
+}
+
+void writeSettings(std::ostringstream& out, const Scenario& s) {
+    const ContactSpec& c = s.contact;
+    out << "contact:\n  stiffness: " << formatNumber(c.stiffness) << "\n  dissipation: " << formatNumber(c.dissipation)
+        << "\n  static_friction: " << formatNumber(c.staticFriction) << "\n  dynamic_friction: " << formatNumber(c.dynamicFriction)
+        << "\n  viscous_friction: " << formatNumber(c.viscousFriction)
+        << "\n  transition_velocity: " << formatNumber(c.transitionVelocity) << "\n\n";
+    const ControllerSpec& k = s.controller;
+    out << "controller:\n  approach_time: " << formatNumber(k.approachTime) << "\n  press_depth: " << formatNumber(k.pressDepth)
+        << "\n  kp: " << formatNumber(k.kp) << "\n  kd: " << formatNumber(k.kd) << "\n  ik_interval: " << formatNumber(k.ikInterval)
+        << "\n\n";
+    const SimulationSpec& m = s.simulation;
+    out << "simulation:\n  duration: " << formatNumber(m.duration) << "\n  output_interval: " << formatNumber(m.outputInterval)
+        << "\n  accuracy: " << formatNumber(m.accuracy) << "\n  settle_time: " << formatNumber(m.settleTime)
+        << "\n  held_tolerance: " << formatNumber(m.heldTolerance) << "\n\n";
+    const ApproximationSpec& a = s.approximation;
+    out << "approximation:\n  relaxed_axes: [";
+    bool first = true;
+    for (int k2 = 0; k2 < 6; ++k2) {
+        if (!a.relaxedAxes[static_cast<std::size_t>(k2)]) continue;
+        out << (first ? "" : ", ") << ApproximationSpec::kAxisNames[k2];
+        first = false;
+    }
+    out << "]\n  q_threshold: " << formatNumber(a.qThreshold) << "\n  q_minimum: " << formatNumber(a.qMinimum) << "\n";
+}
+
+}  // namespace
+
+std::string formatScenarioYaml(const Scenario& scenario, const std::string& header) {
+    std::ostringstream out;
+    std::istringstream lines(header);
+    for (std::string line; std::getline(lines, line);) out << "# " << line << "\n";
+    if (!header.empty()) out << "\n";
+    out << "name: " << quote(scenario.name) << "\n";
+    out << "description: " << quote(scenario.description) << "\n\n";
+    out << "world:\n  gravity: " << formatVec3(scenario.world.gravity) << "\n\n";
+    writeSubjectAndObject(out, scenario);
+    writePoseAndGoals(out, scenario);
+    writeSettings(out, scenario);
+    return out.str();
+}
+
+}  // namespace graspsim::scenario

@@ -1,0 +1,159 @@
+#include "graspsim/study/case_setup.h"
+
+#include "graspsim/error.h"
+#include "graspsim/simulation/simulation_options.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+
+namespace graspsim::study {
+
+namespace {
+
+// A field or option and its YAML text value.
+struct Assignment {
+    std::string name;
+    bool isRunOption = false;
+    std::string value;
+};
+
+std::vector<std::string> splitPath(const std::string& path) {
+    std::vector<std::string> parts;
+    std::size_t start = 0;
+    for (std::size_t dot = path.find('.'); dot != std::string::npos; dot = path.find('.', start)) {
+        parts.push_back(path.substr(start, dot - start));
+        start = dot + 1;
+    }
+    parts.push_back(path.substr(start));
+    return parts;
+}
+
+YAML::Node loadValue(const std::string& path, const std::string& value) {
+    try {
+        return YAML::Load(value);
+    } catch (const YAML::Exception& e) {
+        throw InputError("field '" + path + "' value '" + value + "' is not accepted; it is not a YAML value (" + e.msg + ")");
+    }
+}
+
+// Writes `value` at `path` in the document, adding missing sections; a path through a value that
+// is not a section cannot name a field.
+void writeField(YAML::Node& root, const std::string& path, const std::string& value) {
+    const std::vector<std::string> parts = splitPath(path);
+    YAML::Node node = root;
+    std::string walked;
+    for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
+        walked += (walked.empty() ? "" : ".") + parts[i];
+        YAML::Node child = node[parts[i]];
+        if (!child.IsDefined() || child.IsNull()) {
+            node[parts[i]] = YAML::Node(YAML::NodeType::Map);
+            child = node[parts[i]];
+        }
+        if (!child.IsMap()) {
+            throw InputError("field '" + path + "' is not accepted; '" + walked + "' is a value, not a section with fields");
+        }
+        node.reset(child);  // rebinds; '=' would overwrite the parent's content
+    }
+    node[parts.back()] = loadValue(path, value);
+}
+
+// The scenario reader's message without its "<source>:<line>: " start: the line is the edited
+// text's, which the user never sees.
+std::string stripPlace(const std::string& message, const std::string& source) {
+    if (message.rfind(source + ":", 0) != 0) return message;
+    std::size_t at = source.size() + 1;
+    while (at < message.size() && (std::isdigit(static_cast<unsigned char>(message[at])) || message[at] == ':')) ++at;
+    while (at < message.size() && message[at] == ' ') ++at;
+    return message.substr(at);
+}
+
+std::string checkRunOption(const std::string& name, const std::string& value, const scenario::Scenario& scenario) {
+    const std::string source = "run option '" + name + "'";
+    if (name == "mode") simulation::parseSimulationMode(value, source);
+    if (name == "contact") simulation::parseContactModel(value, source);
+    if (name == "constraint") simulation::parseApproxConstraint(value, source);
+    if (name == "attach") simulation::parseApproxAttach(value, source);
+    if (name == "integrator") simulation::parseIntegratorChoice(value, source);
+    if (name == "perturbation" && value != "none" && !scenario.findPerturbation(value)) {
+        std::string known = "none";
+        for (const auto& p : scenario.perturbations) known += ", " + p.name;
+        throw InputError(source + ": '" + value + "' is not accepted; the scenario has " + known);
+    }
+    return value;
+}
+
+// The base with `assignments` applied, parsed; the options in getRunOptionNames order.
+CaseSetup applyAssignments(const scenario::ScenarioText& base, const std::vector<Assignment>& assignments) {
+    YAML::Node root = YAML::Load(base.text);
+    for (const Assignment& a : assignments) {
+        if (!a.isRunOption) writeField(root, a.name, a.value);
+    }
+    YAML::Emitter out;
+    out << root;
+    CaseSetup setup{std::string(out.c_str()) + "\n", {}};
+    const std::string source = base.source + " (edited)";
+    scenario::Scenario parsed;
+    try {
+        parsed = scenario::parseScenario(setup.scenarioYaml, source);
+    } catch (const InputError& e) {
+        throw InputError(stripPlace(e.what(), source));
+    }
+    for (const std::string& option : getRunOptionNames()) {
+        for (const Assignment& a : assignments) {
+            if (a.isRunOption && a.name == option) setup.options.emplace_back("--" + option, checkRunOption(a.name, a.value, parsed));
+        }
+    }
+    return setup;
+}
+
+std::vector<Assignment> listFixed(const StudySpec& spec) {
+    std::vector<Assignment> assignments;
+    for (const FixedValue& f : spec.fixed) assignments.push_back({f.name, f.isRunOption, f.value});
+    return assignments;
+}
+
+std::string formatEnd(double value) {
+    char text[40];
+    std::snprintf(text, sizeof text, "%.12g", value);
+    return text;
+}
+
+std::string place(const StudySpec& spec, int line) { return spec.source + ":" + std::to_string(line) + ": "; }
+
+}  // namespace
+
+CaseSetup makeCaseSetup(const StudySpec& spec, const scenario::ScenarioText& base, const StudyCase& studyCase) {
+    std::vector<Assignment> assignments = listFixed(spec);
+    for (std::size_t a = 0; a < spec.axes.size(); ++a) {
+        assignments.push_back({spec.axes[a].name, spec.axes[a].isRunOption, studyCase.values[a]});
+    }
+    return applyAssignments(base, assignments);
+}
+
+void checkStudyValues(const StudySpec& spec, const scenario::ScenarioText& base) {
+    const std::vector<Assignment> fixed = listFixed(spec);
+    try {
+        applyAssignments(base, fixed);
+    } catch (const InputError& e) {
+        throw InputError(place(spec, spec.fixed.empty() ? 1 : spec.fixed.front().line) + "base '" + base.source +
+                         "' with the 'set' values: " + e.what());
+    }
+    for (const StudyAxis& axis : spec.axes) {
+        std::vector<std::string> values = axis.values;
+        if (axis.isRange) values = {formatEnd(axis.range.from), formatEnd(axis.range.to)};
+        for (const std::string& value : values) {
+            std::vector<Assignment> assignments = fixed;
+            assignments.push_back({axis.name, axis.isRunOption, value});
+            try {
+                applyAssignments(base, assignments);
+            } catch (const InputError& e) {
+                throw InputError(place(spec, axis.line) + "axis '" + axis.name + "': " + e.what());
+            }
+        }
+    }
+}
+
+}  // namespace graspsim::study

@@ -1,0 +1,165 @@
+#include "graspsim/study/study_runner.h"
+
+#include "graspsim/error.h"
+#include "graspsim/io/atomic_file.h"
+#include "graspsim/study/case_process.h"
+#include "graspsim/study/case_setup.h"
+#include "graspsim/study/study_folder.h"
+
+#include <nlohmann/json.hpp>
+
+#include <unistd.h>
+
+#include <chrono>
+#include <deque>
+#include <filesystem>
+#include <map>
+
+namespace graspsim::study {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// A case whose process is running.
+struct RunningCase {
+    StudyCase studyCase;
+    std::string tmpFolder;
+};
+
+// The last non-empty line of a file, without graspsim's "graspsim: " prefix.
+std::string findLastLine(const std::string& path) {
+    std::string text;
+    try {
+        text = io::readTextFile(path);
+    } catch (const InputError&) {
+        return "";
+    }
+    std::string last, line;
+    for (char c : text + "\n") {
+        if (c != '\n' && c != '\r') { line += c; continue; }
+        if (!line.empty()) last = line;
+        line.clear();
+    }
+    const std::string prefix = "graspsim: ";
+    return last.rfind(prefix, 0) == 0 ? last.substr(prefix.size()) : last;
+}
+
+// The case's status from how its process ended and what it wrote.
+CaseRecord judgeCase(const RunningCase& running, const ProcessEnd& end) {
+    CaseRecord record{running.studyCase.index, CaseStatus::Failed, "", running.studyCase.values};
+    const std::string summaryPath = running.tmpFolder + "/summary.json";
+    const bool hasSummary = fs::is_regular_file(summaryPath);
+    if (end.exitCode == 0 && hasSummary) {
+        record.status = CaseStatus::Ok;
+    } else if (end.exitCode == 3 && hasSummary) {
+        record.status = CaseStatus::Incomplete;
+        record.error = nlohmann::json::parse(io::readTextFile(summaryPath)).value("failure", "stopped early");
+    } else {
+        record.error = findLastLine(running.tmpFolder + "/stderr.txt");
+        if (record.error.empty()) {
+            record.error = end.signal ? "killed by signal " + std::to_string(end.signal) : "exit status " + std::to_string(end.exitCode);
+        }
+    }
+    return record;
+}
+
+class CaseScheduler {
+public:
+    CaseScheduler(const StudySpec& spec, const scenario::ScenarioText& base, const RunSettings& settings)
+        : spec_(spec), base_(base), settings_(settings), start_(std::chrono::steady_clock::now()) {}
+
+    RunReport run() {
+        queueCases();
+        report();
+        while (!pending_.empty() || !running_.empty()) {
+            while (static_cast<int>(running_.size()) < settings_.jobs && !pending_.empty()) {
+                startCase(pending_.front());
+                pending_.pop_front();
+            }
+            if (!running_.empty()) finishCase(waitForAnyChild());
+        }
+        return report_;
+    }
+
+private:
+    void queueCases() {
+        for (const StudyCase& c : selectShard(expandCases(spec_), settings_.shard)) {
+            ++report_.total;
+            if (isCaseFinished(settings_.folder, c.index)) {
+                const bool ok = readCaseRecord(settings_.folder, c.index).status == CaseStatus::Ok;
+                if (ok || !settings_.retryFailed) {
+                    ++report_.skipped;
+                    report_.failed += ok ? 0 : 1;
+                    continue;
+                }
+                fs::remove_all(findCaseFolder(settings_.folder, c.index));
+            }
+            removeCaseTemporaries(settings_.folder, c.index);
+            pending_.push_back(c);
+        }
+    }
+
+    // A case whose parameters the reader refuses is recorded without a process.
+    void startCase(const StudyCase& studyCase) {
+        const std::string tmp = findCaseFolder(settings_.folder, studyCase.index) + ".tmp-" + std::to_string(::getpid());
+        fs::create_directories(tmp);
+        CaseSetup setup;
+        try {
+            setup = makeCaseSetup(spec_, base_, studyCase);
+        } catch (const InputError& e) {
+            record(tmp, {studyCase.index, CaseStatus::Failed, e.what(), studyCase.values});
+            return;
+        }
+        io::writeFileAtomically(tmp + "/scenario.yaml", setup.scenarioYaml);
+        std::vector<std::string> arguments{"simulate", tmp + "/scenario.yaml", "--out", tmp};
+        for (const auto& [option, value] : setup.options) {
+            arguments.push_back(option);
+            arguments.push_back(value);
+        }
+        const pid_t pid = startCaseProcess(settings_.executable, arguments, tmp + "/stdout.txt", tmp + "/stderr.txt");
+        running_[pid] = {studyCase, tmp};
+    }
+
+    void finishCase(const ProcessEnd& end) {
+        const auto it = running_.find(end.pid);
+        if (it == running_.end()) return;  // not one of ours
+        const RunningCase running = it->second;
+        running_.erase(it);
+        record(running.tmpFolder, judgeCase(running, end));
+    }
+
+    void record(const std::string& tmp, const CaseRecord& caseRecord) {
+        commitCase(settings_.folder, tmp, caseRecord);
+        ++report_.ran;
+        if (caseRecord.status != CaseStatus::Ok) ++report_.failed;
+        report();
+    }
+
+    void report() const {
+        if (!settings_.progress) return;
+        RunProgress progress;
+        progress.finished = report_.skipped + report_.ran;
+        progress.total = report_.total;
+        progress.failed = report_.failed;
+        progress.elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+        if (report_.ran > 0) progress.remaining = progress.elapsed / report_.ran * (report_.total - progress.finished);
+        settings_.progress(progress);
+    }
+
+    const StudySpec& spec_;
+    const scenario::ScenarioText& base_;
+    const RunSettings& settings_;
+    const std::chrono::steady_clock::time_point start_;
+    std::deque<StudyCase> pending_;
+    std::map<pid_t, RunningCase> running_;
+    RunReport report_;
+};
+
+}  // namespace
+
+RunReport runStudyCases(const StudySpec& spec, const scenario::ScenarioText& base, const RunSettings& settings) {
+    return CaseScheduler(spec, base, settings).run();
+}
+
+}  // namespace graspsim::study

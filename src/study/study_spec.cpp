@@ -1,0 +1,257 @@
+#include "graspsim/study/study_spec.h"
+
+#include "graspsim/error.h"
+#include "graspsim/scenario/scenario_file.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+namespace graspsim::study {
+
+namespace {
+
+const std::vector<std::string> kTopKeys{"name", "description", "base", "set", "axes", "sampling", "samples", "seed", "measures"};
+
+std::string join(const std::vector<std::string>& names) {
+    std::string text;
+    for (const std::string& n : names) text += (text.empty() ? "" : ", ") + n;
+    return text;
+}
+
+int findLine(const YAML::Node& node) { return node.Mark().is_null() ? 1 : node.Mark().line + 1; }
+
+// Every message starts with the file and line, then names the key: one line, as the scenario reader's.
+[[noreturn]] void reject(const std::string& source, const YAML::Node& node, const std::string& what) {
+    throw InputError(source + ":" + std::to_string(findLine(node)) + ": " + what);
+}
+
+// The value as flow YAML text: "1.75", "[0, -9.5, 0]", "approx".
+std::string formatYaml(const YAML::Node& node) {
+    YAML::Emitter out;
+    out.SetSeqFormat(YAML::Flow);
+    out.SetMapFormat(YAML::Flow);
+    out << node;
+    return out.c_str();
+}
+
+bool isRunOption(const std::string& name) {
+    const auto& options = getRunOptionNames();
+    return std::find(options.begin(), options.end(), name) != options.end();
+}
+
+// A field path is dot-separated names; the scenario reader decides whether the field exists.
+void checkName(const std::string& source, const YAML::Node& key, const std::string& name) {
+    bool ok = !name.empty() && name.front() != '.' && name.back() != '.' && name.find("..") == std::string::npos;
+    for (char c : name) ok = ok && (std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.' || c == '-');
+    if (!ok) {
+        reject(source, key, "axis '" + name + "' is not accepted; give a scenario field by its dotted path "
+                            "(e.g. subject.stature) or a run option (" + join(getRunOptionNames()) + ")");
+    }
+}
+
+std::string readText(const std::string& source, const YAML::Node& node, const std::string& key) {
+    if (!node.IsScalar()) reject(source, node, "'" + key + "' is not accepted; give a text value");
+    return node.Scalar();
+}
+
+double readNumber(const std::string& source, const YAML::Node& node, const std::string& key) {
+    double value = 0;
+    if (!node.IsScalar() || !YAML::convert<double>::decode(node, value) || !std::isfinite(value)) {
+        reject(source, node, "'" + key + "' value '" + formatYaml(node) + "' is not accepted; give a finite number");
+    }
+    return value;
+}
+
+long readInteger(const std::string& source, const YAML::Node& node, const std::string& key, long lower) {
+    long value = 0;
+    if (!node.IsScalar() || !YAML::convert<long>::decode(node, value) || value < lower) {
+        reject(source, node, "'" + key + "' value '" + formatYaml(node) + "' is not accepted; give a whole number >= " +
+                                 std::to_string(lower));
+    }
+    return value;
+}
+
+ValueRange readRange(const std::string& source, const YAML::Node& node, const std::string& name) {
+    for (const auto& entry : node) {
+        const std::string key = entry.first.Scalar();
+        if (key != "from" && key != "to" && key != "steps") {
+            reject(source, entry.first, "axis '" + name + "' key '" + key + "' is not accepted; a range has from, to and steps");
+        }
+    }
+    if (!node["from"] || !node["to"]) reject(source, node, "axis '" + name + "' range needs from and to (and steps on a grid)");
+    ValueRange range{readNumber(source, node["from"], name + ".from"), readNumber(source, node["to"], name + ".to"), 0};
+    if (node["steps"]) range.steps = static_cast<int>(readInteger(source, node["steps"], name + ".steps", 2));
+    if (!(range.from < range.to)) {
+        reject(source, node, "axis '" + name + "' range from " + formatYaml(node["from"]) + " to " + formatYaml(node["to"]) +
+                                 " is not accepted; from must be below to");
+    }
+    return range;
+}
+
+StudyAxis readAxis(const std::string& source, const YAML::Node& key, const YAML::Node& value) {
+    StudyAxis axis;
+    axis.name = key.Scalar();
+    checkName(source, key, axis.name);
+    axis.isRunOption = isRunOption(axis.name);
+    axis.line = findLine(key);
+    if (value.IsSequence()) {
+        for (const auto& item : value) axis.values.push_back(formatYaml(item));
+        if (axis.values.empty()) reject(source, key, "axis '" + axis.name + "' is empty; give a list of values or a range {from, to, steps}");
+    } else if (value.IsMap() && !axis.isRunOption) {
+        axis.isRange = true;
+        axis.range = readRange(source, value, axis.name);
+    } else {
+        reject(source, key, "axis '" + axis.name + "' value '" + formatYaml(value) +
+                                "' is not accepted; give a list of values" + (axis.isRunOption ? "" : " or a range {from, to, steps}"));
+    }
+    return axis;
+}
+
+std::vector<StudyAxis> readAxes(const std::string& source, const YAML::Node& node) {
+    if (!node || !node.IsMap() || node.size() == 0) {
+        reject(source, node ? node : YAML::Node(), "'axes' is missing or empty; give a map of axis: [values] or axis: {from, to, steps}");
+    }
+    std::vector<StudyAxis> axes;
+    std::set<std::string> seen;
+    for (const auto& entry : node) {
+        axes.push_back(readAxis(source, entry.first, entry.second));
+        if (!seen.insert(axes.back().name).second) reject(source, entry.first, "axis '" + axes.back().name + "' is given twice");
+    }
+    return axes;
+}
+
+std::vector<FixedValue> readFixed(const std::string& source, const YAML::Node& node) {
+    std::vector<FixedValue> fixed;
+    if (!node || node.IsNull()) return fixed;
+    if (!node.IsMap()) reject(source, node, "'set' is not accepted; give a map of field: value");
+    for (const auto& entry : node) {
+        const std::string name = entry.first.Scalar();
+        checkName(source, entry.first, name);
+        fixed.push_back({name, isRunOption(name), formatYaml(entry.second), findLine(entry.first)});
+    }
+    return fixed;
+}
+
+std::vector<std::string> readMeasures(const std::string& source, const YAML::Node& node) {
+    const auto& known = getMeasureNames();
+    if (!node || !node.IsSequence() || node.size() == 0) {
+        reject(source, node ? node : YAML::Node(), "'measures' is missing or empty; give a list of summary.json keys: " + join(known));
+    }
+    std::vector<std::string> measures;
+    for (const auto& item : node) {
+        const std::string name = readText(source, item, "measures");
+        if (std::find(known.begin(), known.end(), name) == known.end()) {
+            reject(source, item, "measure '" + name + "' is not accepted; measures are summary.json keys: " + join(known));
+        }
+        measures.push_back(name);
+    }
+    return measures;
+}
+
+// A base that is not a built-in name is a file path, relative to the study file's folder.
+std::string resolveBase(const std::string& source, const std::string& base) {
+    const auto builtins = scenario::getBuiltinScenarioNames();
+    if (std::find(builtins.begin(), builtins.end(), base) != builtins.end()) return base;
+    const std::filesystem::path path(base);
+    if (path.is_absolute()) return base;
+    return (std::filesystem::path(source).parent_path() / path).lexically_normal().string();
+}
+
+void readSampling(const std::string& source, const YAML::Node& root, StudySpec& spec) {
+    if (root["sampling"]) {
+        const std::string sampling = readText(source, root["sampling"], "sampling");
+        if (sampling == "grid") spec.sampling = Sampling::Grid;
+        else if (sampling == "random") spec.sampling = Sampling::Random;
+        else if (sampling == "latin") spec.sampling = Sampling::Latin;
+        else reject(source, root["sampling"], "'sampling' value '" + sampling + "' is not accepted; grid, random or latin");
+    }
+    const bool sampled = spec.sampling != Sampling::Grid;
+    if (sampled != bool(root["samples"])) {
+        reject(source, root["samples"] ? root["samples"] : root,
+               sampled ? "'samples' is missing; random and latin sampling need the number of cases" : "'samples' is not accepted with grid sampling");
+    }
+    if (sampled) spec.samples = static_cast<int>(readInteger(source, root["samples"], "samples", 1));
+    if (root["seed"]) spec.seed = static_cast<std::uint64_t>(readInteger(source, root["seed"], "seed", 0));
+    for (const StudyAxis& axis : spec.axes) {
+        if (!sampled && axis.isRange && axis.range.steps == 0) {
+            throw InputError(source + ":" + std::to_string(axis.line) + ": axis '" + axis.name + "' range needs steps (>= 2) on a grid");
+        }
+    }
+}
+
+}  // namespace
+
+const std::vector<std::string>& getRunOptionNames() {
+    static const std::vector<std::string> names{"mode", "contact", "constraint", "attach", "integrator", "perturbation"};
+    return names;
+}
+
+const std::vector<std::string>& getMeasureNames() {
+    static const std::vector<std::string> names{
+        "held", "object_displacement_m", "max_penetration_m", "max_grasp_quality_n", "max_fingertip_goal_distance_m",
+        "wall_time_s", "sim_time_s", "steps", "mean_step_us", "full_wall_s_per_sim_s", "engaged", "engage_time_s",
+        "release_time_s", "q_at_engage_n", "q_threshold_n", "q_minimum_n", "min_engaged_grasp_quality_n",
+        "max_engaged_penetration_growth_m", "max_release_velocity_jump_m_s", "approx_step_us"};
+    return names;
+}
+
+std::string toString(Sampling sampling) {
+    switch (sampling) {
+        case Sampling::Grid: return "grid";
+        case Sampling::Random: return "random";
+        case Sampling::Latin: return "latin";
+    }
+    return "grid";
+}
+
+StudySpec parseStudy(const std::string& yamlText, const std::string& source) {
+    YAML::Node root;
+    try {
+        root = YAML::Load(yamlText);
+    } catch (const YAML::Exception& e) {
+        throw InputError(source + ":" + std::to_string(e.mark.line + 1) + ": malformed YAML (" + e.msg + ")");
+    }
+    if (!root.IsMap()) throw InputError(source + ": a study file is a YAML map (name, base, axes, measures, ...)");
+    for (const auto& entry : root) {
+        const std::string key = entry.first.Scalar();
+        if (std::find(kTopKeys.begin(), kTopKeys.end(), key) == kTopKeys.end()) {
+            reject(source, entry.first, "key '" + key + "' is not accepted; a study has " + join(kTopKeys));
+        }
+    }
+    StudySpec spec;
+    spec.source = source;
+    spec.text = yamlText;
+    if (!root["name"]) throw InputError(source + ": 'name' is missing; give the study a short name");
+    spec.name = readText(source, root["name"], "name");
+    if (root["description"]) spec.description = readText(source, root["description"], "description");
+    if (!root["base"]) throw InputError(source + ": 'base' is missing; give a built-in scenario (" + join(scenario::getBuiltinScenarioNames()) + ") or a scenario file");
+    spec.base = resolveBase(source, readText(source, root["base"], "base"));
+    spec.fixed = readFixed(source, root["set"]);
+    spec.axes = readAxes(source, root["axes"]);
+    readSampling(source, root, spec);
+    spec.measures = readMeasures(source, root["measures"]);
+    for (const FixedValue& f : spec.fixed) {
+        for (const StudyAxis& a : spec.axes) {
+            if (a.name == f.name) throw InputError(source + ":" + std::to_string(f.line) + ": '" + f.name + "' is both set and an axis; keep one");
+        }
+    }
+    return spec;
+}
+
+StudySpec loadStudyFile(const std::string& path) {
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(path, error)) throw InputError(path + ": is not a readable file; give a study YAML file");
+    std::ifstream file(path, std::ios::binary);
+    std::ostringstream text;
+    text << file.rdbuf();
+    if (!file) throw InputError(path + ": cannot be read; give a readable study YAML file");
+    return parseStudy(text.str(), path);
+}
+
+}  // namespace graspsim::study

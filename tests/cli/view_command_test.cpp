@@ -1,0 +1,69 @@
+// `graspsim view`: writes replay.html into a result folder; bad input (not a result, an older
+// result, a picture time outside the run, a bad size) gets one line, exit code 2, and nothing
+// written. `--version` names the commit and the libraries, as provenance.json does.
+
+#include "cli_process.h"
+
+#include <gtest/gtest.h>
+
+namespace fs = std::filesystem;
+using graspsim::testing::RunResult;
+using graspsim::testing::slurp;
+
+namespace {
+
+class ViewCommand : public graspsim::testing::CliProcess {
+protected:
+    // A 0.05-s full-contact phone run, in dir_/run.
+    fs::path simulateShortRun() {
+        const fs::path out = dir_ / "run";
+        const RunResult r = run("simulate phone-pinch --duration 0.05 --out " + out.string());
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        extraFiles_ = 1;
+        return out;
+    }
+    void expectRejected(const std::string& args, const fs::path& folder, const char* fragment) {
+        const RunResult r = run(args);
+        EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_NE(r.err.find(fragment), std::string::npos) << "missing '" << fragment << "' in: " << r.err;
+        EXPECT_FALSE(fs::exists(folder / "replay.html")) << args;
+        EXPECT_FALSE(fs::exists(folder / "replay.png")) << args;
+    }
+};
+
+TEST_F(ViewCommand, WritesTheReplayIntoTheResultFolder) {
+    const fs::path out = simulateShortRun();
+    for (const char* file : {"scenario.yaml", "model.urdf", "provenance.json"}) EXPECT_TRUE(fs::exists(out / file)) << file;
+    const RunResult r = run("view " + out.string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const std::string page = slurp(out / "replay.html");
+    EXPECT_NE(page.find("GRASPSIM_REPLAY = {"), std::string::npos);
+    EXPECT_NE(r.out.find("replay.html"), std::string::npos) << r.out;
+}
+
+TEST_F(ViewCommand, RefusesFoldersThatAreNotResults) {
+    const fs::path out = simulateShortRun();
+    expectRejected("view " + (dir_ / "missing").string(), dir_ / "missing", "is not a folder");
+    fs::create_directories(dir_ / "other");
+    std::ofstream(dir_ / "other" / "notes.txt") << "hello\n";
+    expectRejected("view " + (dir_ / "other").string(), dir_ / "other", "is not a graspsim result folder");
+    fs::remove(out / "provenance.json");  // as a result written before provenance existed
+    expectRejected("view " + out.string(), out, "older graspsim");
+}
+
+TEST_F(ViewCommand, RefusesAPictureTimeOutsideTheRunOrABadSize) {
+    const fs::path out = simulateShortRun();
+    expectRejected("view " + out.string() + " --png 5", out, "--png: time 5 s is outside the run");
+    expectRejected("view " + out.string() + " --png -0.1", out, "outside the run");
+    expectRejected("view " + out.string() + " --png soon", out, "--png: value 'soon' is not a number");
+    expectRejected("view " + out.string() + " --png 0.01 --size 10x10", out, "--size: value '10x10'");
+}
+
+TEST_F(ViewCommand, VersionNamesCommitAndLibraries) {
+    const RunResult r = run("--version");
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    for (const char* part : {"graspsim 0.", "commit ", "Simbody 3.", "SUNDIALS "}) EXPECT_NE(r.out.find(part), std::string::npos) << r.out;
+}
+
+}  // namespace

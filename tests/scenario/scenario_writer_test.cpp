@@ -1,0 +1,92 @@
+// The resolved scenario a result folder keeps must read back to the scenario that ran: oracle is
+// the reader itself (parseScenario of the written text equals the original, field by field).
+
+#include "graspsim/scenario/scenario_file.h"
+#include "graspsim/scenario/scenario_writer.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace graspsim::scenario {
+namespace {
+
+constexpr double kAngleTolerance = 1e-14;  // rad: round-off of the degree conversion
+
+void expectVec3Eq(const Vec3& a, const Vec3& b, double tolerance = 0) {
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(a[k], b[k], tolerance) << "component " << k;
+}
+
+void expectSameScenario(const Scenario& a, const Scenario& b) {
+    EXPECT_EQ(a.name, b.name);
+    EXPECT_EQ(a.description, b.description);
+    expectVec3Eq(a.world.gravity, b.world.gravity);
+    EXPECT_EQ(a.bodyOptions.subject.sex, b.bodyOptions.subject.sex);
+    EXPECT_EQ(a.bodyOptions.subject.mass, b.bodyOptions.subject.mass);
+    EXPECT_EQ(a.bodyOptions.subject.stature, b.bodyOptions.subject.stature);
+    EXPECT_EQ(a.bodyOptions.preset, b.bodyOptions.preset);
+    EXPECT_EQ(a.object.shape, b.object.shape);
+    EXPECT_EQ(a.object.mass, b.object.mass);
+    EXPECT_EQ(a.object.radius, b.object.radius);
+    expectVec3Eq(a.object.size, b.object.size);
+    expectVec3Eq(a.object.position, b.object.position);
+    expectVec3Eq(a.object.orientation, b.object.orientation, kAngleTolerance);
+    ASSERT_EQ(a.graspPose.size(), b.graspPose.size());
+    for (const auto& [joint, angle] : a.graspPose) EXPECT_NEAR(angle, b.graspPose.at(joint), kAngleTolerance) << joint;
+    ASSERT_EQ(a.goals.size(), b.goals.size());
+    for (const auto& [effector, p] : a.goals) expectVec3Eq(p, b.goals.at(effector));
+    ASSERT_EQ(a.perturbations.size(), b.perturbations.size());
+    for (std::size_t i = 0; i < a.perturbations.size(); ++i) {
+        EXPECT_EQ(a.perturbations[i].name, b.perturbations[i].name);
+        expectVec3Eq(a.perturbations[i].force, b.perturbations[i].force);
+        EXPECT_EQ(a.perturbations[i].start, b.perturbations[i].start);
+        EXPECT_EQ(a.perturbations[i].duration, b.perturbations[i].duration);
+    }
+    EXPECT_EQ(a.contact.stiffness, b.contact.stiffness);
+    EXPECT_EQ(a.contact.dissipation, b.contact.dissipation);
+    EXPECT_EQ(a.contact.staticFriction, b.contact.staticFriction);
+    EXPECT_EQ(a.contact.dynamicFriction, b.contact.dynamicFriction);
+    EXPECT_EQ(a.contact.viscousFriction, b.contact.viscousFriction);
+    EXPECT_EQ(a.contact.transitionVelocity, b.contact.transitionVelocity);
+    EXPECT_EQ(a.controller.approachTime, b.controller.approachTime);
+    EXPECT_EQ(a.controller.pressDepth, b.controller.pressDepth);
+    EXPECT_EQ(a.controller.kp, b.controller.kp);
+    EXPECT_EQ(a.controller.kd, b.controller.kd);
+    EXPECT_EQ(a.controller.ikInterval, b.controller.ikInterval);
+    EXPECT_EQ(a.simulation.duration, b.simulation.duration);
+    EXPECT_EQ(a.simulation.outputInterval, b.simulation.outputInterval);
+    EXPECT_EQ(a.simulation.accuracy, b.simulation.accuracy);
+    EXPECT_EQ(a.simulation.settleTime, b.simulation.settleTime);
+    EXPECT_EQ(a.simulation.heldTolerance, b.simulation.heldTolerance);
+    EXPECT_EQ(a.approximation.relaxedAxes, b.approximation.relaxedAxes);
+    EXPECT_EQ(a.approximation.qThreshold, b.approximation.qThreshold);
+    EXPECT_EQ(a.approximation.qMinimum, b.approximation.qMinimum);
+}
+
+TEST(ScenarioWriter, BuiltinScenariosReadBackUnchanged) {
+    for (const std::string& name : getBuiltinScenarioNames()) {
+        SCOPED_TRACE(name);
+        const Scenario original = findBuiltinScenario(name);
+        expectSameScenario(original, parseScenario(formatScenarioYaml(original, "resolved"), "written.yaml"));
+    }
+}
+
+TEST(ScenarioWriter, DefaultsAndEditedFieldsAreWrittenOut) {
+    Scenario edited = findBuiltinScenario("phone-pinch");
+    edited.description = "a: text # with YAML's \"special\" characters";
+    edited.perturbations.clear();
+    edited.approximation.relaxedAxes = {false, true, false, true, false, false};
+    edited.approximation.qThreshold = 1.25;
+    edited.approximation.qMinimum = 0.5;
+    edited.contact.viscousFriction = 0.1;
+    edited.object.orientation = {0.1, -0.2, 0.3};
+    const std::string text = formatScenarioYaml(edited);
+    // Every key of the format is there, defaults included.
+    for (const char* key : {"viscous_friction:", "transition_velocity:", "held_tolerance:", "ik_interval:", "preset:"}) {
+        EXPECT_NE(text.find(key), std::string::npos) << key;
+    }
+    expectSameScenario(edited, parseScenario(text, "written.yaml"));
+}
+
+}  // namespace
+}  // namespace graspsim::scenario

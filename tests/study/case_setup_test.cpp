@@ -1,0 +1,89 @@
+// A case's scenario: axis values land in the base scenario's fields (read back by the scenario
+// reader), and values the reader refuses are refused with its message, naming the study file's
+// line and axis.
+
+#include "graspsim/error.h"
+#include "graspsim/study/case_setup.h"
+
+#include <gtest/gtest.h>
+
+using namespace graspsim::study;
+namespace scenario = graspsim::scenario;
+
+namespace {
+
+StudySpec makeSpec(const std::string& axes, const std::string& set = "") {
+    return parseStudy("name: t\nbase: ball-clutch\n" + set + "axes:\n" + axes + "measures: [held]\n", "s.yaml");
+}
+
+std::string checkError(const std::string& axes, const std::string& set = "") {
+    const StudySpec spec = makeSpec(axes, set);
+    try {
+        checkStudyValues(spec, scenario::readScenarioText(spec.base));
+    } catch (const graspsim::InputError& e) {
+        EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos);
+        return e.what();
+    }
+    ADD_FAILURE() << "accepted: " << axes;
+    return "";
+}
+
+}  // namespace
+
+TEST(CaseSetup, ValuesLandInTheScenarioFields) {
+    const StudySpec spec = makeSpec("  subject.stature: [1.6]\n  perturbations.f1.force: [[0, -3, 1]]\n  mode: [approx]\n"
+                                    "  contact.static_friction: [0.75]\n",
+                                    "set: {perturbation: f1, simulation.duration: 2.5, integrator: cvode}\n");
+    const scenario::ScenarioText base = scenario::readScenarioText(spec.base);
+    checkStudyValues(spec, base);
+    const CaseSetup setup = makeCaseSetup(spec, base, expandCases(spec).at(0));
+    const scenario::Scenario parsed = scenario::parseScenario(setup.scenarioYaml, "case");
+    EXPECT_EQ(parsed.bodyOptions.subject.stature, 1.6);
+    EXPECT_EQ(parsed.contact.staticFriction, 0.75);
+    EXPECT_EQ(parsed.simulation.duration, 2.5);
+    ASSERT_NE(parsed.findPerturbation("f1"), nullptr);
+    EXPECT_EQ(parsed.findPerturbation("f1")->force[1], -3.0);
+    EXPECT_EQ(parsed.findPerturbation("f1")->force[2], 1.0);
+    // The other fields stay the base's.
+    const scenario::Scenario original = scenario::findBuiltinScenario("ball-clutch");
+    EXPECT_EQ(parsed.object.mass, original.object.mass);
+    EXPECT_EQ(parsed.graspPose, original.graspPose);
+    using Options = std::vector<std::pair<std::string, std::string>>;
+    EXPECT_EQ(setup.options, (Options{{"--mode", "approx"}, {"--integrator", "cvode"}, {"--perturbation", "f1"}}));
+}
+
+TEST(CaseSetup, SectionsMissingFromTheBaseAreAdded) {
+    // A minimal base without an approximation section.
+    const StudySpec spec = makeSpec("  approximation.q_threshold: [2.5]\n");
+    scenario::ScenarioText base = scenario::readScenarioText("ball-clutch");
+    const std::size_t section = base.text.find("\napproximation:");  // the file's last section
+    ASSERT_NE(section, std::string::npos);
+    base.text.resize(section + 1);
+    ASSERT_EQ(scenario::parseScenario(base.text, "cut").approximation.qThreshold, 0.0);
+    const CaseSetup setup = makeCaseSetup(spec, base, expandCases(spec).at(0));
+    EXPECT_EQ(scenario::parseScenario(setup.scenarioYaml, "case").approximation.qThreshold, 2.5);
+}
+
+TEST(CaseSetup, RefusedValuesGetTheReadersMessage) {
+    EXPECT_NE(checkError("  subject.height: [1.7]\n").find("s.yaml:4: axis 'subject.height': field 'subject.height' is not accepted"),
+              std::string::npos);
+    EXPECT_NE(checkError("  subject.mass: [heavy]\n").find("field 'subject.mass' value 'heavy' is not accepted; body mass must be"),
+              std::string::npos);
+    EXPECT_NE(checkError("  subject.mass: [70, 500]\n").find("value '500' is not accepted"), std::string::npos);
+    EXPECT_NE(checkError("  contact.static_friction: {from: -1, to: 1, steps: 3}\n").find("value '-1' is not accepted"), std::string::npos);
+    EXPECT_NE(checkError("  object.mass.value: [1]\n").find("'object.mass' is a value, not a section"), std::string::npos);
+    EXPECT_NE(checkError("  mode: [full, fast]\n").find("run option 'mode'"), std::string::npos);
+    EXPECT_NE(checkError("  perturbation: [f1, f9]\n").find("'f9' is not accepted; the scenario has none, f1, f2"), std::string::npos);
+    EXPECT_NE(checkError("  mode: [full]\n", "set: {subject.sex: other}\n").find("with the 'set' values"), std::string::npos);
+}
+
+// A combination the reader refuses, each value accepted alone, fails only its own case.
+TEST(CaseSetup, CombinationRefusedByTheReaderFailsItsCase) {
+    // Alone, each is accepted against the base's 0.9 / 0.7; 0.75 with 0.8 is not.
+    const StudySpec spec = makeSpec("  contact.static_friction: [0.75, 0.9]\n  contact.dynamic_friction: [0.8]\n");
+    const scenario::ScenarioText base = scenario::readScenarioText(spec.base);
+    EXPECT_NO_THROW(checkStudyValues(spec, base));
+    const std::vector<StudyCase> cases = expandCases(spec);
+    EXPECT_THROW(makeCaseSetup(spec, base, cases[0]), graspsim::InputError);
+    EXPECT_NO_THROW(makeCaseSetup(spec, base, cases[1]));
+}

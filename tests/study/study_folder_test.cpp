@@ -1,0 +1,76 @@
+// The study folder: a folder holding another study (or other files) is refused and left as it
+// was; a case is committed whole (its temporary folder renamed) and read back.
+
+#include "graspsim/error.h"
+#include "graspsim/study/study_folder.h"
+
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+using namespace graspsim::study;
+namespace fs = std::filesystem;
+
+namespace {
+
+class StudyFolder : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() / ("graspsim_study_folder_" + std::to_string(::getpid()) + "_" +
+                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    static StudySpec makeSpec(const std::string& name) {
+        return parseStudy("name: " + name + "\nbase: ball-clutch\naxes: {mode: [full]}\nmeasures: [held]\n", "s.yaml");
+    }
+
+    fs::path dir_;
+};
+
+}  // namespace
+
+TEST_F(StudyFolder, SameStudyIsAcceptedAgainAnotherIsRefused) {
+    prepareStudyFolder(dir_, makeSpec("a"), "base");
+    EXPECT_NO_THROW(prepareStudyFolder(dir_, makeSpec("a"), "base"));
+    const std::string before = std::to_string(fs::last_write_time(dir_ / "study.json").time_since_epoch().count());
+    try {
+        prepareStudyFolder(dir_, makeSpec("b"), "base");
+        ADD_FAILURE() << "another study accepted";
+    } catch (const graspsim::InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("holds the results of another study ('a'"), std::string::npos) << e.what();
+    }
+    // The same study file on a changed base scenario is another study too.
+    EXPECT_THROW(prepareStudyFolder(dir_, makeSpec("a"), "changed base"), graspsim::InputError);
+    EXPECT_EQ(std::to_string(fs::last_write_time(dir_ / "study.json").time_since_epoch().count()), before);
+    EXPECT_EQ(loadFolderStudy(dir_).name, "a");
+}
+
+TEST_F(StudyFolder, FolderWithOtherFilesIsRefused) {
+    fs::create_directories(dir_);
+    std::ofstream(dir_ / "notes.txt") << "mine";
+    EXPECT_THROW(prepareStudyFolder(dir_, makeSpec("a"), "base"), graspsim::InputError);
+    EXPECT_FALSE(fs::exists(dir_ / "study.json"));
+}
+
+TEST_F(StudyFolder, CaseIsCommittedWholeAndTemporariesRemoved) {
+    prepareStudyFolder(dir_, makeSpec("a"), "base");
+    const std::string tmp = findCaseFolder(dir_, 3) + ".tmp-1";
+    fs::create_directories(tmp);
+    fs::create_directories(findCaseFolder(dir_, 3) + ".tmp-2");  // a killed run's leftover
+    EXPECT_FALSE(isCaseFinished(dir_, 3));
+    commitCase(dir_, tmp, {3, CaseStatus::Failed, "bad \"value\", here", {"x", "[1, 2]"}});
+    EXPECT_TRUE(isCaseFinished(dir_, 3));
+    EXPECT_FALSE(fs::exists(tmp));
+    removeCaseTemporaries(dir_, 3);
+    EXPECT_FALSE(fs::exists(findCaseFolder(dir_, 3) + ".tmp-2"));
+    const CaseRecord record = readCaseRecord(dir_, 3);
+    EXPECT_EQ(record.status, CaseStatus::Failed);
+    EXPECT_EQ(record.error, "bad \"value\", here");
+    EXPECT_EQ(record.values, (std::vector<std::string>{"x", "[1, 2]"}));
+    EXPECT_EQ(findCaseFolder(dir_, 3), (dir_ / "cases/0003").string());
+}

@@ -1,0 +1,67 @@
+// Reading study files: the shipped example reads, and every malformed study gets one line naming
+// the file, the line and the key.
+
+#include "graspsim/error.h"
+#include "graspsim/study/study_spec.h"
+
+#include <gtest/gtest.h>
+
+using namespace graspsim::study;
+
+namespace {
+
+std::string errorOf(const std::string& text) {
+    try {
+        parseStudy(text, "s.yaml");
+    } catch (const graspsim::InputError& e) {
+        const std::string message = e.what();
+        EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+        return message;
+    }
+    ADD_FAILURE() << "accepted:\n" << text;
+    return "";
+}
+
+const std::string kHead = "name: t\nbase: ball-clutch\n";
+
+}  // namespace
+
+TEST(StudySpec, ShippedExampleReads) {
+    const StudySpec spec = loadStudyFile(std::string(GRASPSIM_SOURCE_DIR) + "/models/studies/stature-friction.yaml");
+    EXPECT_EQ(spec.name, "stature-friction");
+    EXPECT_EQ(spec.base, "ball-clutch");
+    ASSERT_EQ(spec.axes.size(), 3u);
+    EXPECT_EQ(spec.axes[0].name, "subject.stature");
+    EXPECT_TRUE(spec.axes[1].isRange);
+    EXPECT_EQ(spec.axes[1].range.steps, 3);
+    EXPECT_TRUE(spec.axes[2].isRunOption);
+    EXPECT_EQ(spec.sampling, Sampling::Grid);
+    EXPECT_FALSE(spec.measures.empty());
+}
+
+TEST(StudySpec, RelativeBaseFileIsFoundBesideTheStudy) {
+    const StudySpec spec = parseStudy(kHead.substr(0, 8) + "base: my.yaml\naxes: {mode: [full]}\nmeasures: [held]\n", "dir/s.yaml");
+    EXPECT_EQ(spec.base, "dir/my.yaml");
+}
+
+TEST(StudySpec, MalformedStudiesGetOneLineNamingTheKey) {
+    EXPECT_NE(errorOf(kHead + "axes:\n  subject.mass: []\nmeasures: [held]\n").find("s.yaml:4: axis 'subject.mass' is empty"), std::string::npos);
+    EXPECT_NE(errorOf(kHead + "axes: {}\nmeasures: [held]\n").find("'axes' is missing or empty"), std::string::npos);
+    EXPECT_NE(errorOf(kHead + "axes: {mode: [full]}\nmeasures: [drift]\n").find("measure 'drift' is not accepted"), std::string::npos);
+    EXPECT_NE(errorOf(kHead + "axes: {mode: [full]}\nmeasures: [held]\ncolour: red\n").find("key 'colour' is not accepted"), std::string::npos);
+    EXPECT_NE(errorOf(kHead + "axes: {subject.mass: {from: 80, to: 60, steps: 3}}\nmeasures: [held]\n").find("from must be below to"),
+              std::string::npos);
+    EXPECT_NE(errorOf(kHead + "axes: {subject.mass: {from: 60, to: 80}}\nmeasures: [held]\n").find("range needs steps"), std::string::npos);
+    EXPECT_NE(errorOf(kHead + "axes: {subject.mass: {from: 60, to: 80, steps: 1}}\nmeasures: [held]\n").find("whole number >= 2"),
+              std::string::npos);
+    EXPECT_NE(errorOf(kHead + "axes: {mode: {from: 1, to: 2, steps: 2}}\nmeasures: [held]\n").find("give a list of values"),
+              std::string::npos);
+    EXPECT_NE(errorOf(kHead + "axes: {mode: [full]}\nsampling: latin\nmeasures: [held]\n").find("'samples' is missing"), std::string::npos);
+    EXPECT_NE(errorOf(kHead + "axes: {mode: [full]}\nsampling: sobol\nmeasures: [held]\n").find("'sampling' value 'sobol'"),
+              std::string::npos);
+    EXPECT_NE(errorOf(kHead + "set: {mode: full}\naxes: {mode: [full]}\nmeasures: [held]\n").find("both set and an axis"),
+              std::string::npos);
+    EXPECT_NE(errorOf("base: ball-clutch\naxes: {mode: [full]}\nmeasures: [held]\n").find("'name' is missing"), std::string::npos);
+    EXPECT_NE(errorOf(kHead + "axes: {'subject..mass': [1]}\nmeasures: [held]\n").find("axis 'subject..mass' is not accepted"),
+              std::string::npos);
+}
