@@ -23,9 +23,14 @@ int main(int argc, char** argv) {
         const graspsim::simulation::SimulationSummary& s = result.summary;
         std::cout << scenario.name << ": " << s.simTime << " s simulated, " << s.steps << " steps, "
                   << (s.held ? "held" : "not held") << "\n"
-                  << "  engaged at " << s.engageTime << " s with grasp quality " << s.qAtEngage
-                  << " N (threshold " << s.qThreshold << " N)\n"
-                  << "  deepest contact " << s.maxPenetration * 1e3 << " mm, object moved "
+                  << "  approximation: ";
+        if (s.engaged) {
+            std::cout << "engaged at " << s.engageTime << " s with grasp quality " << s.qAtEngage << " N (threshold "
+                      << s.qThreshold << " N)\n";
+        } else {
+            std::cout << "not engaged during the run\n";
+        }
+        std::cout << "  deepest contact " << s.maxPenetration * 1e3 << " mm, object moved "
                   << s.objectDisplacement * 1e3 << " mm after settling\n";
         return s.complete ? 0 : 3;
     } catch (const graspsim::Error& e) {

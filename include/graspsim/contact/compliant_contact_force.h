@@ -21,7 +21,7 @@
 /// positions and velocities); the potential energy needs Stage::Position; reports need
 /// Stage::Velocity. The element keeps no cache: every evaluation redoes the geometry.
 
-#include <simbody/Simbody.h>
+#include "graspsim/simbody.h"
 
 #include <string>
 #include <vector>

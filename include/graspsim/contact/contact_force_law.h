@@ -32,7 +32,7 @@
 ///     v_tr = min(v_tr1, v_tr2)         (Simbody has one per force element; we take the
 ///                                       stricter of the two surfaces)
 
-#include <simbody/Simbody.h>
+#include "graspsim/simbody.h"
 
 #include "graspsim/contact/contact_material.h"
 

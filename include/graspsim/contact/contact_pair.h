@@ -4,7 +4,7 @@
 /// material; a contact pair is two surfaces that CompliantContactForce checks against each
 /// other.
 
-#include <simbody/Simbody.h>
+#include "graspsim/simbody.h"
 
 #include <string>
 

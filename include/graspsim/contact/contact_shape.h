@@ -14,7 +14,7 @@
 ///    SimTK::XAxis), which turns z_S into +y_G. (Simbody's ContactGeometry::HalfSpace occupies
 ///    x > 0 instead; ours follows the z-axis convention of our capsules.)
 
-#include <simbody/Simbody.h>
+#include "graspsim/simbody.h"
 
 #include <string>
 

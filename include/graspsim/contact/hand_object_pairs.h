@@ -3,7 +3,7 @@
 /// Builds the contact pairs of a grasp: every geometry of the hand's bodies against every
 /// geometry of the grasped object.
 
-#include <simbody/Simbody.h>
+#include "graspsim/simbody.h"
 
 #include <functional>
 #include <string>

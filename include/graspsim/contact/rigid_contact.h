@@ -35,7 +35,7 @@
 /// friction transition speed unchanged (0 unless set), so with mu_s > mu_d any nonzero slip
 /// speed gets mu_d. Debian's Simbody 3.7 is built without NDEBUG, so the stepper and its
 /// impulse solvers print a debug trace to stdout at every step (about 10 kB per step in the tests).
-#include <simbody/Simbody.h>
+#include "graspsim/simbody.h"
 
 #include <string>
 

@@ -20,7 +20,7 @@
 /// The acceleration-level errors (paerr, vaerr) treat P as a material point of B and n, tx, ty as
 /// fixed in A over the instant, like Simbody's own contact constraints; they omit the surface
 /// curvature terms. SemiExplicitEulerTimeStepper works at velocity level and never uses them.
-#include <simbody/Simbody.h>
+#include "graspsim/simbody.h"
 
 #include "graspsim/contact/contact_shape.h"
 #include "graspsim/contact/rigid_contact_geometry.h"

@@ -17,7 +17,7 @@
 /// Supported pairs: sphere or capsule against sphere, capsule, box or half-space (either
 /// order). Box-box and box-half-space pairs have several simultaneous contacts and are not
 /// supported by the rigid model (see rigid_contact.h).
-#include <simbody/Simbody.h>
+#include "graspsim/simbody.h"
 
 #include "graspsim/contact/contact_shape.h"
 

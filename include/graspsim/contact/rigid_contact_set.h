@@ -19,7 +19,7 @@
 /// (forces, N) filled in; a proximal (enabled) contact's normal force is -lambda_n, its friction
 /// force on body b -(lambda_x tx + lambda_y ty) in the contact's friction basis, its penetration
 /// -perr (negative for a proximal contact that is not quite touching).
-#include <simbody/Simbody.h>
+#include "graspsim/simbody.h"
 
 #include <vector>
 

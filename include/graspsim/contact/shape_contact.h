@@ -53,7 +53,7 @@
 /// Symmetry: findContacts(b, X_GB, a, X_GA) returns the same contacts as findContacts(a, X_GA,
 /// b, X_GB) with every normal negated (box-box contacts possibly in another order).
 
-#include <simbody/Simbody.h>
+#include "graspsim/simbody.h"
 
 #include <vector>
 

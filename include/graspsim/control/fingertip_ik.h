@@ -9,7 +9,7 @@
 
 #include "graspsim/system/multibody_model.h"
 
-#include <simbody/Simbody.h>
+#include "graspsim/simbody.h"
 
 #include <memory>
 #include <string>

@@ -16,7 +16,7 @@
 #include "graspsim/control/fingertip_ik.h"
 #include "graspsim/control/joint_pd_controller.h"
 
-#include <simbody/Simbody.h>
+#include "graspsim/simbody.h"
 
 #include <chrono>
 #include <string>

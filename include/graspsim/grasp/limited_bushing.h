@@ -47,7 +47,7 @@
 /// handler (the TimeStepper re-realizes and reinitializes the integrator after it) or before
 /// Integrator::initialize().
 
-#include <simbody/Simbody.h>
+#include "graspsim/simbody.h"
 
 namespace graspsim::grasp {
 

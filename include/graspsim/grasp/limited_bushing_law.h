@@ -7,7 +7,7 @@
 /// D >= 0 and limit L >= 0 (+Infinity for a locked axis); its state is the displacement e from
 /// the anchor, and r is the rate of the relative coordinate (e's rate if the anchor stood still).
 
-#include <simbody/Simbody.h>
+#include "graspsim/simbody.h"
 
 namespace graspsim::grasp {
 

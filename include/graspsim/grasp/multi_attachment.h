@@ -30,7 +30,7 @@
 
 #include "graspsim/grasp/limited_bushing.h"
 
-#include <simbody/Simbody.h>
+#include "graspsim/simbody.h"
 
 #include <vector>
 

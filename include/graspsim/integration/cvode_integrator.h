@@ -29,7 +29,7 @@
 
 #include "graspsim/integration/stepper.h"
 
-#include <simbody/Simbody.h>
+#include "graspsim/simbody.h"
 
 #include <memory>
 #include <string>

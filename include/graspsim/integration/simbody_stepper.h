@@ -8,7 +8,7 @@
 #include "graspsim/integration/stepper.h"
 #include "graspsim/io/filtered_stderr.h"
 
-#include <simbody/Simbody.h>
+#include "graspsim/simbody.h"
 
 #include <memory>
 

@@ -4,7 +4,7 @@
 /// stepTo, getState), so that Simbody's own integrators and the SUNDIALS CVODE reference
 /// (cvode_integrator.h) can be swapped without touching the simulation loop.
 
-#include <simbody/Simbody.h>
+#include "graspsim/simbody.h"
 
 #include <string>
 

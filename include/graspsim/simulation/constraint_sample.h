@@ -4,7 +4,7 @@
 /// its limits and the reaction it carries, so that a reader can see how close to slipping the
 /// engaged grasp is.
 
-#include <simbody/Simbody.h>
+#include "graspsim/simbody.h"
 
 #include <optional>
 

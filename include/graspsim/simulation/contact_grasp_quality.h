@@ -6,7 +6,7 @@
 #include "graspsim/contact/compliant_contact_force.h"
 #include "graspsim/grasp/quality_options.h"
 
-#include <simbody/Simbody.h>
+#include "graspsim/simbody.h"
 
 #include <vector>
 

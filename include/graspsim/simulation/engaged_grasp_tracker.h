@@ -39,7 +39,7 @@
 
 #include "graspsim/contact/compliant_contact_force.h"
 
-#include <simbody/Simbody.h>
+#include "graspsim/simbody.h"
 
 #include <map>
 #include <vector>

@@ -39,7 +39,7 @@
 #include "graspsim/system/implicit_joint_impedance.h"
 #include "graspsim/system/multibody_model.h"
 
-#include <simbody/Simbody.h>
+#include "graspsim/simbody.h"
 
 #include <memory>
 #include <string>

@@ -9,7 +9,7 @@
 #include "graspsim/simulation/grasp_switch.h"
 #include "graspsim/simulation/simulation_options.h"
 
-#include <simbody/Simbody.h>
+#include "graspsim/simbody.h"
 
 #include <functional>
 #include <string>

@@ -66,7 +66,7 @@
 #include "graspsim/simulation/engaged_grasp_tracker.h"
 #include "graspsim/simulation/simulation_options.h"
 
-#include <simbody/Simbody.h>
+#include "graspsim/simbody.h"
 
 #include <memory>
 #include <string>

@@ -42,7 +42,7 @@
 #include "graspsim/scenario/scenario.h"
 #include "graspsim/simulation/simulation_options.h"
 
-#include <simbody/Simbody.h>
+#include "graspsim/simbody.h"
 
 #include <string>
 #include <vector>

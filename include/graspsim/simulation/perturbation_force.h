@@ -3,7 +3,7 @@
 /// A constant external force on a body's centre of mass during a time window: the thesis's
 /// perturbations f1 and f2.
 
-#include <simbody/Simbody.h>
+#include "graspsim/simbody.h"
 
 namespace graspsim::simulation {
 

@@ -19,7 +19,7 @@
 /// multipliers (contact forces), as GraspScene::findContactReports() needs.
 #include "graspsim/simulation/grasp_scene.h"
 
-#include <simbody/Simbody.h>
+#include "graspsim/simbody.h"
 
 namespace graspsim::simulation {
 

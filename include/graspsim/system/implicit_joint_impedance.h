@@ -37,7 +37,7 @@
 ///
 /// Stages: the correction is computed at Stage::Dynamics (needs Velocity); the step size and
 /// the constraint forces are Stage::Dynamics discrete variables.
-#include <simbody/Simbody.h>
+#include "graspsim/simbody.h"
 
 #include <vector>
 

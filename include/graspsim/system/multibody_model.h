@@ -21,7 +21,7 @@
 /// angle +-90 degrees for z-x-y axes), like any Euler-angle joint. Simbody does not throw there:
 /// accelerations come out NaN at the lock and enormous (1e11 rad/s^2) within 1e-9 rad of it.
 
-#include <simbody/Simbody.h>
+#include "graspsim/simbody.h"
 
 #include <map>
 #include <string>

@@ -2,7 +2,7 @@
 /// @file
 /// The passive force elements acting at one joint: spring, damper and limit stop.
 
-#include <simbody/Simbody.h>
+#include "graspsim/simbody.h"
 
 #include "graspsim/model/model_description.h"
 #include "graspsim/system/system_options.h"

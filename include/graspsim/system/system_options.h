@@ -2,7 +2,7 @@
 /// @file
 /// Options for turning a model description into a Simbody system.
 
-#include <simbody/Simbody.h>
+#include "graspsim/simbody.h"
 
 namespace graspsim::system {
 
