@@ -3,6 +3,7 @@
 // a few lines and the parsing can be exercised without a process (tests/fuzz).
 
 #include "bench_command.h"
+#include "capacity_command.h"
 #include "model_command.h"
 #include "simulate_command.h"
 #include "validate_command.h"
@@ -34,6 +35,7 @@ private:
     SimulateCommand simulate_;
     ValidateCommand validate_;
     BenchCommand bench_;
+    CapacityCommand capacity_;
 };
 
 }  // namespace graspsim::cli

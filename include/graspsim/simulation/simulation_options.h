@@ -2,6 +2,8 @@
 /// @file
 /// What a user chooses per simulation run, on top of the scenario.
 
+#include "graspsim/simulation/ramp_load.h"
+
 #include <array>
 #include <optional>
 #include <string>
@@ -85,6 +87,8 @@ struct SimulationOptions {
     /// Integrator accuracy (relative tolerance; CVODE's atol and both integrators' constraint
     /// tolerance follow it); 0 takes the scenario's simulation.accuracy.
     double accuracy = 0;
+    /// A load on the object growing in time (the holding-capacity protocol, ramp_load.h); unset: none.
+    std::optional<LoadRampSpec> loadRamp;
 };
 
 /// Parses "compliant" or "rigid". @throws graspsim::InputError naming `source`, the value and the choices.
