@@ -19,7 +19,7 @@ Json formatMeasurement(const GraspCapacity& c) {
     const std::string unit = c.torque ? "nm" : "n";
     Json j;
     j["direction"] = c.directionName;
-    j["direction_vector"] = {c.direction[0], c.direction[1], c.direction[2]};
+    j["direction_vector"] = {c.direction[0] + 0.0, c.direction[1] + 0.0, c.direction[2] + 0.0};  // no -0
     j["load"] = c.torque ? "torque" : "force";
     j["method"] = c.method;
     j["contact"] = c.contact;
@@ -35,6 +35,10 @@ Json formatMeasurement(const GraspCapacity& c) {
     j["drop_" + unit] = valueOrNull(ramp && f.dropped, f.dropLoad);
     j["slip_onset_time_s"] = valueOrNull(ramp && f.slipped, f.slipOnsetTime);
     j["drop_time_s"] = valueOrNull(ramp && f.dropped, f.dropTime);
+    if (c.mode == "approx") {
+        j["release_" + unit] = valueOrNull(ramp && f.released, f.releaseLoad);
+        j["release_time_s"] = valueOrNull(ramp && f.released, f.releaseTime);
+    }
     if (!ramp) {
         j["bracket_held_" + unit] = c.bisection.held;
         j["bracket_slipped_" + unit] = c.bisection.slipped;
@@ -62,11 +66,11 @@ std::string formatCapacityJson(const std::string& scenario, const std::vector<Gr
 
 std::string formatCapacityCsv(const std::vector<GraspCapacity>& measurements) {
     std::ostringstream out;
-    out << "direction,load,time_s,load_value,slip_m,held\n";
+    out << "direction,load,time_s,load_value,slip_m,held,engaged\n";
     for (const GraspCapacity& c : measurements) {
         for (const CapacitySample& s : c.trace.samples) {
             out << c.directionName << ',' << (c.torque ? "torque" : "force") << ',' << formatNumber(s.time, "%.4f") << ','
-                << formatNumber(s.load, "%.6g") << ',' << formatNumber(s.slip, "%.6g") << ',' << (s.held ? 1 : 0) << '\n';
+                << formatNumber(s.load, "%.6g") << ',' << formatNumber(s.slip, "%.6g") << ',' << (s.held ? 1 : 0) << ',' << s.engaged << '\n';
         }
     }
     return out.str();
@@ -83,6 +87,7 @@ std::string describeCapacity(const GraspCapacity& c) {
     text += f.slipped ? "slips at " + formatNumber(f.slipOnsetLoad, "%.4g") + unit : "no slip up to " +
                         formatNumber(c.trace.samples.empty() ? 0 : c.trace.samples.back().load, "%.4g") + unit;
     if (f.slipped) text += f.dropped ? ", drops at " + formatNumber(f.dropLoad, "%.4g") + unit : ", not dropped within the ramp";
+    if (f.released) text += " (approximation released at " + formatNumber(f.releaseLoad, "%.4g") + unit + ")";
     return text;
 }
 

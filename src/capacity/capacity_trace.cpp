@@ -21,6 +21,11 @@ CapacityFigures findCapacityFigures(const std::vector<CapacitySample>& samples, 
     CapacityFigures figures;
     for (std::size_t k = 0; k < samples.size(); ++k) {
         const CapacitySample& s = samples[k];
+        if (!figures.released && k > 0 && samples[k - 1].engaged == 1 && s.engaged == 0) {
+            figures.released = true;
+            figures.releaseLoad = s.load;
+            figures.releaseTime = s.time;
+        }
         if (!figures.slipped && s.slip > criteria.slip) {
             figures.slipped = true;
             if (k == 0) {

@@ -59,6 +59,7 @@ public:
         CapacitySample s;
         const std::vector<SimTK::Vec3> now = findGoalPointsInPalm();
         for (std::size_t k = 0; k < now.size(); ++k) s.slip = std::max(s.slip, (now[k] - reference_[k]).norm());
+        if (const simulation::GraspSwitch* grasp = scene_.getGraspSwitch()) s.engaged = grasp->isEngaged(getState()) ? 1 : 0;
         s.held = scene_.findMaxFingertipGoalDistance(getState()) <= scene_.getScenario().simulation.heldTolerance;
         return s;
     }

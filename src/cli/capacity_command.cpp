@@ -28,6 +28,8 @@ struct CapacityCommand::Options {
     std::string mode = "full";
     std::string constraint = "bushing";
     std::string attach = "merged";
+    std::string releaseSlide;
+    std::string limitsFriction = "dynamic";
     std::string out;
 };
 
@@ -55,6 +57,10 @@ CapacityCommand::CapacityCommand(CLI::App& app) : options_(std::make_shared<Opti
     command_->add_option("--mode", o.mode, "full (default) or approx");
     command_->add_option("--constraint", o.constraint, "approx: bushing (default) or weld");
     command_->add_option("--attach", o.attach, "approx: merged (default) or multi");
+    command_->add_option("--release-slide", o.releaseSlide,
+                         "approx: release when the object slid this far in the hand, m (default 0.005)");
+    command_->add_option("--limits-friction", o.limitsFriction,
+                         "approx: the friction coefficient of the constraint's limits, dynamic (default) or static");
     command_->add_option("--out", o.out, "output folder; receives capacity.json and capacity.csv (default: none written)");
 }
 
@@ -107,6 +113,11 @@ CapacityCommand::Plan CapacityCommand::makePlan() const {
     plan.simulation.mode = simulation::parseSimulationMode(o.mode, "--mode");
     plan.simulation.approx.constraint = simulation::parseApproxConstraint(o.constraint, "--constraint");
     plan.simulation.approx.attach = simulation::parseApproxAttach(o.attach, "--attach");
+    plan.simulation.approx.releaseSlideDistance = parsePositive(o.releaseSlide, "--release-slide", "the release distance (m)", 0.005);
+    if (o.limitsFriction != "dynamic" && o.limitsFriction != "static") {
+        throw InputError("--limits-friction: value '" + o.limitsFriction + "' is not accepted; use dynamic or static");
+    }
+    plan.simulation.approx.staticFrictionLimits = o.limitsFriction == "static";
     if (o.method != "ramp" && o.method != "bisection") {
         throw InputError("--method: value '" + o.method + "' is not accepted; use ramp or bisection");
     }

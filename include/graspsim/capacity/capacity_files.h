@@ -7,8 +7,10 @@
 ///   slip_onset_n / drop_n (force) or slip_onset_nm / drop_nm (torque), with slip_onset_time_s and
 ///   drop_time_s; null where the object did not slip or drop within the ramp. Bisection entries
 ///   give the slip onset as the bracket's middle, and bracket_held / bracket_slipped, and no drop.
+///   Approx-mode entries add release_n / release_nm and release_time_s: when the approximation
+///   handed the object back to full contact during the load (null if it did not).
 /// - capacity.csv: the ramps' time series: direction, load kind, time (s), load (N or N m), slip
-///   (m), held (1/0).
+///   (m), held (1/0), engaged (1/0 in approx mode, -1 in full mode).
 /// Each file is written whole to a temporary name and renamed.
 
 #include "graspsim/capacity/grasp_capacity.h"

@@ -17,6 +17,8 @@ struct CapacitySample {
     double load = 0;    ///< magnitude of the applied load (N, or N m for a torque)
     double slip = 0;    ///< slip distance since the load began (m)
     bool held = true;   ///< the grasp still holds the object (the scenario's held criterion)
+    /// Whether the grasp approximation is engaged: 1 or 0 in approx mode, -1 where there is none.
+    int engaged = -1;
 };
 
 /// When a run counts as slipping and as dropped.
@@ -39,6 +41,9 @@ struct CapacityFigures {
     bool dropped = false;
     double dropLoad = 0;       ///< N or N m (valid if dropped)
     double dropTime = 0;       ///< s
+    bool released = false;     ///< the approximation released during the load (engaged 1 -> 0)
+    double releaseLoad = 0;    ///< N or N m, at the first sample after the release
+    double releaseTime = 0;    ///< s, that sample's time
 };
 
 /// Reads slip onset and drop off `samples` (time order).

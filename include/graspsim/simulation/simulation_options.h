@@ -60,6 +60,9 @@ struct ApproxOptions {
     /// (m): about the radius of a fingertip pad, beyond which the fingers would have lost the
     /// spots they pressed into.
     double releaseSlideDistance = 0.005;
+    /// Opt-in (issue 17): the friction limits from the scenario's STATIC friction instead of the
+    /// dynamic one (the compliant contact holds until the static coefficient; docs/capacity.md).
+    bool staticFrictionLimits = false;
     /// Bound on the growth of the fingertips' penetration while engaged from the bushing's elastic
     /// deflection (m; issue 4: no visible interpenetration, <= 0.1 mm). On engagement the bushing
     /// is stiffened so that its deflection at the friction limits stays within it (grasp_switch.h).
