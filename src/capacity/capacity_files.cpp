@@ -38,6 +38,7 @@ Json formatMeasurement(const GraspCapacity& c) {
     if (c.mode == "approx") {
         j["release_" + unit] = valueOrNull(ramp && f.released, f.releaseLoad);
         j["release_time_s"] = valueOrNull(ramp && f.released, f.releaseTime);
+        j["release_reason"] = c.trace.releaseReason.empty() ? Json(nullptr) : Json(c.trace.releaseReason);
     }
     if (!ramp) {
         j["bracket_held_" + unit] = c.bisection.held;
@@ -87,7 +88,7 @@ std::string describeCapacity(const GraspCapacity& c) {
     text += f.slipped ? "slips at " + formatNumber(f.slipOnsetLoad, "%.4g") + unit : "no slip up to " +
                         formatNumber(c.trace.samples.empty() ? 0 : c.trace.samples.back().load, "%.4g") + unit;
     if (f.slipped) text += f.dropped ? ", drops at " + formatNumber(f.dropLoad, "%.4g") + unit : ", not dropped within the ramp";
-    if (f.released) text += " (approximation released at " + formatNumber(f.releaseLoad, "%.4g") + unit + ")";
+    if (f.released) text += " (approximation released at " + formatNumber(f.releaseLoad, "%.4g") + unit + (c.trace.releaseReason.empty() ? "" : ": " + c.trace.releaseReason) + ")";
     return text;
 }
 

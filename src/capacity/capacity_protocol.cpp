@@ -55,6 +55,7 @@ CapacityTrace runRamp(const LoadedRunFactory& makeRun, const RampProtocol& p) {
     CapacityTrace trace;
     trace.samples = sampleRun(*run, spec, p.start + p.maxDuration, p.sampleInterval, p.criteria);
     trace.figures = findCapacityFigures(trace.samples, p.criteria);
+    trace.releaseReason = run->findReleaseReason();
     return trace;
 }
 

@@ -64,6 +64,15 @@ public:
         return s;
     }
 
+    std::string findReleaseReason() const override {
+        const simulation::GraspSwitch* grasp = scene_.getGraspSwitch();
+        if (!grasp) return {};
+        for (const simulation::GraspEvent& e : grasp->getEvents()) {
+            if (e.kind == "release") return "t = " + std::to_string(e.time) + " s: " + e.reason;
+        }
+        return {};
+    }
+
 private:
     const SimTK::State& getState() const { return rigid_ ? rigid_->getState() : stepper_->getState(); }
 

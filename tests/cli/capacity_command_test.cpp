@@ -33,3 +33,20 @@ TEST_F(CapacityCommand, BadInputIsOneLineAndWritesNothing) {
     expectRejected("--method guess", "--method");
     expectRejected("--mode half", "--mode");
 }
+
+// A fast ramp on the phone (8 N/s: it drops within 0.6 s of load): the files hold what the last
+// line states, and the time series starts at the load's start with no load and no slip.
+TEST_F(CapacityCommand, RampWritesTheFiguresItPrints) {
+    const std::string out = (dir_ / "cap").string();
+    const RunResult r = run("capacity phone-pinch --rate 8 --max-duration 0.6 --out " + out);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const std::string json = slurp(fs::path(out) / "capacity.json");
+    for (const char* key : {"\"slip_onset_n\"", "\"drop_n\"", "\"mode\": \"full\"", "\"realization\": null", "\"rate\": 8.0"}) {
+        EXPECT_NE(json.find(key), std::string::npos) << key << " in " << json;
+    }
+    const std::string csv = slurp(fs::path(out) / "capacity.csv");
+    EXPECT_EQ(csv.rfind("direction,load,time_s,load_value,slip_m,held,engaged\n-y,force,1.1000,0,0,1,-1\n", 0), 0u) << csv.substr(0, 200);
+    const std::string last = r.out.substr(r.out.rfind('\n', r.out.size() - 2) + 1);
+    EXPECT_EQ(last.rfind("capacity of phone-pinch (compliant, full): -y force (ramp): slips at ", 0), 0u) << last;
+    EXPECT_NE(last.find(", drops at "), std::string::npos) << last;
+}

@@ -12,6 +12,7 @@
 
 #include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace graspsim::capacity {
@@ -27,6 +28,9 @@ public:
     /// Slip since the reference (m) and whether the object is still held, now. The load is filled
     /// in by the protocol.
     virtual CapacitySample sampleNow() = 0;
+    /// Why the grasp approximation let go during the run, with its numbers ("" if it did not or
+    /// there is none).
+    virtual std::string findReleaseReason() const { return {}; }
 };
 
 /// Builds a fresh scene with the given load on its object.
@@ -48,6 +52,7 @@ struct RampProtocol {
 struct CapacityTrace {
     std::vector<CapacitySample> samples;
     CapacityFigures figures;
+    std::string releaseReason;  ///< LoadedRun::findReleaseReason at the end of the ramp
 };
 
 /// Runs the ramp on a scene made by `makeRun`.
