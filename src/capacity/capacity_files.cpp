@@ -67,11 +67,12 @@ std::string formatCapacityJson(const std::string& scenario, const std::vector<Gr
 
 std::string formatCapacityCsv(const std::vector<GraspCapacity>& measurements) {
     std::ostringstream out;
-    out << "direction,load,time_s,load_value,slip_m,held,engaged\n";
+    out << "direction,load,time_s,load_value,slip_m,rotation_rad,held,engaged\n";
     for (const GraspCapacity& c : measurements) {
         for (const CapacitySample& s : c.trace.samples) {
             out << c.directionName << ',' << (c.torque ? "torque" : "force") << ',' << formatNumber(s.time, "%.4f") << ','
-                << formatNumber(s.load, "%.6g") << ',' << formatNumber(s.slip, "%.6g") << ',' << (s.held ? 1 : 0) << ',' << s.engaged << '\n';
+                << formatNumber(s.load, "%.6g") << ',' << formatNumber(s.slip, "%.6g") << ','
+                << formatNumber(s.rotation, "%.6g") << ',' << (s.held ? 1 : 0) << ',' << s.engaged << '\n';
         }
     }
     return out.str();

@@ -53,11 +53,15 @@ public:
                                  std::to_string(getState().getTime()) + " s; use --mode full or lower --q-threshold");
         }
         reference_ = findGoalPointsInPalm();
+        q_PO_reference_ = findObjectInPalm().R().convertRotationToQuaternion().asVec4();
     }
 
     CapacitySample sampleNow() override {
         CapacitySample s;
         const std::vector<SimTK::Vec3> now = findGoalPointsInPalm();
+        const SimTK::Rotation R_PO0{SimTK::Quaternion(q_PO_reference_)};
+        const SimTK::Rotation R_change = ~R_PO0 * findObjectInPalm().R();
+        s.rotation = std::abs(R_change.convertRotationToAngleAxis()[0]);
         for (std::size_t k = 0; k < now.size(); ++k) s.slip = std::max(s.slip, (now[k] - reference_[k]).norm());
         if (const simulation::GraspSwitch* grasp = scene_.getGraspSwitch()) s.engaged = grasp->isEngaged(getState()) ? 1 : 0;
         s.held = scene_.findMaxFingertipGoalDistance(getState()) <= scene_.getScenario().simulation.heldTolerance;
@@ -98,11 +102,15 @@ private:
         stepper_->initialize(released);
     }
 
-    // The goal points (object material points where the fingertips press), in the palm frame P.
-    std::vector<SimTK::Vec3> findGoalPointsInPalm() const {
+    SimTK::Transform findObjectInPalm() const {
         const SimTK::State& s = getState();
         scene_.getSystem().realize(s, SimTK::Stage::Position);
-        const SimTK::Transform X_PO = ~scene_.getPalm().getBodyTransform(s) * scene_.getObject().getBodyTransform(s);
+        return ~scene_.getPalm().getBodyTransform(s) * scene_.getObject().getBodyTransform(s);
+    }
+
+    // The goal points (object material points where the fingertips press), in the palm frame P.
+    std::vector<SimTK::Vec3> findGoalPointsInPalm() const {
+        const SimTK::Transform X_PO = findObjectInPalm();
         std::vector<SimTK::Vec3> points;
         for (const SimTK::Vec3& p_OG : scene_.getSurfaceGoals()) points.push_back(X_PO * p_OG);
         return points;
@@ -112,6 +120,7 @@ private:
     std::unique_ptr<integration::Stepper> stepper_;
     std::unique_ptr<simulation::RigidStepper> rigid_;
     std::vector<SimTK::Vec3> reference_;
+    SimTK::Vec4 q_PO_reference_{1, 0, 0, 0};  // R_PO at the reference, as a quaternion
 };
 
 GraspCapacity makeHeader(const simulation::SimulationOptions& options, const GraspCapacityRequest& request,

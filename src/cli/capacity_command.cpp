@@ -29,6 +29,7 @@ struct CapacityCommand::Options {
     std::string constraint = "bushing";
     std::string attach = "merged";
     std::string releaseSlide;
+    std::string qMinimum;
     std::string limitsFriction = "dynamic";
     std::string out;
 };
@@ -59,6 +60,7 @@ CapacityCommand::CapacityCommand(CLI::App& app) : options_(std::make_shared<Opti
     command_->add_option("--attach", o.attach, "approx: merged (default) or multi");
     command_->add_option("--release-slide", o.releaseSlide,
                          "approx: release when the object slid this far in the hand, m (default 0.005)");
+    command_->add_option("--q-minimum", o.qMinimum, "approx: grasp quality Q_M (N) below which to release (default: 0.5 x Q_Th)");
     command_->add_option("--limits-friction", o.limitsFriction,
                          "approx: the friction coefficient of the constraint's limits, dynamic (default) or static");
     command_->add_option("--out", o.out, "output folder; receives capacity.json and capacity.csv (default: none written)");
@@ -114,6 +116,7 @@ CapacityCommand::Plan CapacityCommand::makePlan() const {
     plan.simulation.approx.constraint = simulation::parseApproxConstraint(o.constraint, "--constraint");
     plan.simulation.approx.attach = simulation::parseApproxAttach(o.attach, "--attach");
     plan.simulation.approx.releaseSlideDistance = parsePositive(o.releaseSlide, "--release-slide", "the release distance (m)", 0.005);
+    plan.simulation.approx.qMinimum = parsePositive(o.qMinimum, "--q-minimum", "the grasp quality (N)", 0);
     if (o.limitsFriction != "dynamic" && o.limitsFriction != "static") {
         throw InputError("--limits-friction: value '" + o.limitsFriction + "' is not accepted; use dynamic or static");
     }

@@ -45,7 +45,7 @@ TEST_F(CapacityCommand, RampWritesTheFiguresItPrints) {
         EXPECT_NE(json.find(key), std::string::npos) << key << " in " << json;
     }
     const std::string csv = slurp(fs::path(out) / "capacity.csv");
-    EXPECT_EQ(csv.rfind("direction,load,time_s,load_value,slip_m,held,engaged\n-y,force,1.1000,0,0,1,-1\n", 0), 0u) << csv.substr(0, 200);
+    EXPECT_EQ(csv.rfind("direction,load,time_s,load_value,slip_m,rotation_rad,held,engaged\n-y,force,1.1000,0,0,", 0), 0u) << csv.substr(0, 200);
     const std::string last = r.out.substr(r.out.rfind('\n', r.out.size() - 2) + 1);
     EXPECT_EQ(last.rfind("capacity of phone-pinch (compliant, full): -y force (ramp): slips at ", 0), 0u) << last;
     EXPECT_NE(last.find(", drops at "), std::string::npos) << last;

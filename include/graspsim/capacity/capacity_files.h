@@ -10,7 +10,7 @@
 ///   Approx-mode entries add release_n / release_nm and release_time_s: when the approximation
 ///   handed the object back to full contact during the load (null if it did not).
 /// - capacity.csv: the ramps' time series: direction, load kind, time (s), load (N or N m), slip
-///   (m), held (1/0), engaged (1/0 in approx mode, -1 in full mode).
+///   (m), rotation relative to the palm (rad), held (1/0), engaged (1/0 in approx mode, -1 in full mode).
 /// Each file is written whole to a temporary name and renamed.
 
 #include "graspsim/capacity/grasp_capacity.h"

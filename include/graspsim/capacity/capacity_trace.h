@@ -16,6 +16,9 @@ struct CapacitySample {
     double time = 0;    ///< s
     double load = 0;    ///< magnitude of the applied load (N, or N m for a torque)
     double slip = 0;    ///< slip distance since the load began (m)
+    /// Rotation of the object relative to the palm since the load began (rad): a pinch lets the
+    /// object pivot about the pinch axis with little slip at the pads; reported, not a criterion.
+    double rotation = 0;
     bool held = true;   ///< the grasp still holds the object (the scenario's held criterion)
     /// Whether the grasp approximation is engaged: 1 or 0 in approx mode, -1 where there is none.
     int engaged = -1;
