@@ -3,6 +3,7 @@
 // a few lines and the parsing can be exercised without a process (tests/fuzz).
 
 #include "bench_command.h"
+#include "capacity_command.h"
 #include "model_command.h"
 #include "simulate_command.h"
 #include "study_command.h"
@@ -39,6 +40,7 @@ private:
     BenchCommand bench_;
     StudyCommand study_;
     ViewCommand view_;
+    CapacityCommand capacity_;
 };
 
 }  // namespace graspsim::cli

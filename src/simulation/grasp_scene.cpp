@@ -90,6 +90,7 @@ GraspScene::GraspScene(const scenario::Scenario& scenario, const SimulationOptio
         perturbation_ = std::make_unique<PerturbationForce>(model_.updForces(), object_, toVec3(p->force), p->start,
                                                             p->duration);
     }
+    if (options.loadRamp) loadRamp_ = std::make_unique<RampLoad>(model_.updForces(), object_, *options.loadRamp);
     model_.realizeTopology();
 }
 

@@ -229,7 +229,8 @@ void GraspSwitch::engage(SimTK::State& state, double quality, const std::vector<
         events_.push_back({state.getTime(), "engage", quality, format("Q >= Q_Th = %.6g N; ", qThreshold_) + limitsText});
         return;
     }
-    const SimTK::Vec6 limits = calcFrictionLimits(reports, scene_.getScenario().contact.dynamicFriction);
+    const scenario::ContactSpec& contact = scene_.getScenario().contact;
+    const SimTK::Vec6 limits = calcFrictionLimits(reports, options_.staticFrictionLimits ? contact.staticFriction : contact.dynamicFriction);
     const SimTK::Vec3 p_GC = findContactCentroid(reports);
     placeConstraintFrames(state, p_GC);
     scene_.getContacts().setPairsEnabled(state, scene_.getContacts().findAllPairIndices(), false);  // (b)

@@ -113,6 +113,8 @@ public:
     double findMaxFingertipGoalDistance(const SimTK::State& state) const;
     /// The perturbation of this run, or nullptr.
     const PerturbationForce* getPerturbation() const { return perturbation_.get(); }
+    /// The load of SimulationOptions::loadRamp, or nullptr.
+    const RampLoad* getLoadRamp() const { return loadRamp_.get(); }
 
     /// The state at t = 0: grasp pose, object at its initial pose and held, IK targets set.
     SimTK::State makeInitialState();
@@ -154,6 +156,7 @@ private:
     std::vector<SimTK::MobilizedBodyIndex> fingerMobilizers_;
     control::IkTiming ikTiming_;
     std::unique_ptr<PerturbationForce> perturbation_;
+    std::unique_ptr<RampLoad> loadRamp_;
     std::vector<std::string> goalEndEffectors_;
     std::vector<SimTK::Vec3> surfaceGoals_;
 };

@@ -2,6 +2,8 @@
 /// @file
 /// What a user chooses per simulation run, on top of the scenario.
 
+#include "graspsim/simulation/ramp_load.h"
+
 #include <array>
 #include <optional>
 #include <string>
@@ -58,6 +60,9 @@ struct ApproxOptions {
     /// (m): about the radius of a fingertip pad, beyond which the fingers would have lost the
     /// spots they pressed into.
     double releaseSlideDistance = 0.005;
+    /// Opt-in (issue 17): the friction limits from the scenario's STATIC friction instead of the
+    /// dynamic one (the compliant contact holds until the static coefficient; docs/capacity.md).
+    bool staticFrictionLimits = false;
     /// Bound on the growth of the fingertips' penetration while engaged from the bushing's elastic
     /// deflection (m; issue 4: no visible interpenetration, <= 0.1 mm). On engagement the bushing
     /// is stiffened so that its deflection at the friction limits stays within it (grasp_switch.h).
@@ -85,6 +90,8 @@ struct SimulationOptions {
     /// Integrator accuracy (relative tolerance; CVODE's atol and both integrators' constraint
     /// tolerance follow it); 0 takes the scenario's simulation.accuracy.
     double accuracy = 0;
+    /// A load on the object growing in time (the holding-capacity protocol, ramp_load.h); unset: none.
+    std::optional<LoadRampSpec> loadRamp;
 };
 
 /// Parses "compliant" or "rigid". @throws graspsim::InputError naming `source`, the value and the choices.

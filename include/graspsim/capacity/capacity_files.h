@@ -1,0 +1,32 @@
+#pragma once
+/// @file
+/// The files of `graspsim capacity --out DIR`:
+/// - capacity.json: scenario, then one entry per measurement: direction (name and unit vector in
+///   G), load ("force" or "torque"), method, contact, mode, realization (null in full mode),
+///   load_start_s, rate (N/s or N m/s, ramp), slip_threshold_m, drop_threshold_m, and either
+///   slip_onset_n / drop_n (force) or slip_onset_nm / drop_nm (torque), with slip_onset_time_s and
+///   drop_time_s; null where the object did not slip or drop within the ramp. Bisection entries
+///   give the slip onset as the bracket's middle, and bracket_held / bracket_slipped, and no drop.
+///   Approx-mode entries add release_n / release_nm and release_time_s: when the approximation
+///   handed the object back to full contact during the load (null if it did not).
+/// - capacity.csv: the ramps' time series: direction, load kind, time (s), load (N or N m), slip
+///   (m), rotation relative to the palm (rad), held (1/0), engaged (1/0 in approx mode, -1 in full mode).
+/// Each file is written whole to a temporary name and renamed.
+
+#include "graspsim/capacity/grasp_capacity.h"
+
+#include <string>
+#include <vector>
+
+namespace graspsim::capacity {
+
+std::string formatCapacityJson(const std::string& scenario, const std::vector<GraspCapacity>& measurements);
+std::string formatCapacityCsv(const std::vector<GraspCapacity>& measurements);
+/// The one-line statement of a measurement's figures, e.g. "-y force (ramp): slips at 1.2 N, drops at 1.5 N".
+std::string describeCapacity(const GraspCapacity& c);
+
+/// Writes capacity.json and capacity.csv into `folder`, which must exist.
+/// @throws graspsim::InputError naming the file when it cannot be written.
+void writeCapacityFiles(const std::string& folder, const std::string& scenario, const std::vector<GraspCapacity>& measurements);
+
+}  // namespace graspsim::capacity

@@ -1,0 +1,73 @@
+#pragma once
+/// @file
+/// The holding capacity of a grasp scenario: how large a load on the object the grasp holds
+/// before the object slips, and before it drops (issue 17).
+///
+/// The scene is the simulation's (simulation::GraspScene, any contact model and mode) with a
+/// simulation::RampLoad on the object. The load starts kLoadStartDelay after the scenario's
+/// settle_time, so the grasp has settled and, in approx mode, the approximation has engaged (it
+/// engages at the first check from settle_time on; the run refuses to load a grasp it has not).
+/// Slip: the largest displacement, relative to the palm, of the object's material points at the
+/// grasp goals (where the fingertips press) since the load began; held: every goal fingertip
+/// within the scenario's held_tolerance of its goal on the object.
+
+#include "graspsim/capacity/capacity_protocol.h"
+#include "graspsim/scenario/scenario.h"
+#include "graspsim/simulation/simulation_options.h"
+
+#include <string>
+
+namespace graspsim::capacity {
+
+/// Delay of the load's start after the scenario's settle_time (s).
+constexpr double kLoadStartDelay = 0.1;
+
+/// What to measure.
+struct GraspCapacityRequest {
+    SimTK::UnitVec3 direction{0, -1, 0};  ///< in G
+    std::string directionName = "-y";     ///< for reports: an axis (x, -y, ...) or the vector as given
+    bool torque = false;                  ///< a torque about the object's centre of mass instead of a force
+    double rate = 0;                      ///< N/s or N m/s; 0: findDefaultRate
+    double maxRampDuration = 4;           ///< s
+    double sampleInterval = 0.005;        ///< s
+    SlipCriteria criteria;
+};
+
+/// The default ramp rate: twice the object's weight per second for a force (the thesis objects'
+/// capacities, 1 to 8 weights, are then reached within 0.5-4 s), and for a torque that times the
+/// farthest goal's distance from the centre of mass (the lever the fingers hold it with).
+double findDefaultRate(const scenario::Scenario& scenario, bool torque);
+
+/// When the load starts (s): settle_time + kLoadStartDelay.
+double findLoadStart(const scenario::Scenario& scenario);
+
+/// A factory of loaded grasp runs (GraspScene + its stepper) for runRamp / runBisection.
+/// In approx mode a run throws graspsim::NumericalError if the approximation is not engaged when the
+/// load starts.
+LoadedRunFactory makeGraspRuns(const scenario::Scenario& scenario, const simulation::SimulationOptions& options);
+
+/// One capacity measurement and its context (a row of capacity.json).
+struct GraspCapacity {
+    std::string directionName;
+    SimTK::UnitVec3 direction;
+    bool torque = false;
+    std::string method;       ///< "ramp" or "bisection"
+    std::string contact, mode, realization;  ///< realization: "" in full mode, else e.g. "bushing merged"
+    double start = 0;         ///< load start (s)
+    double rate = 0;          ///< N/s or N m/s (ramp)
+    SlipCriteria criteria;
+    CapacityTrace trace;      ///< ramp: the time series and figures
+    BisectionResult bisection;  ///< bisection: the bracket
+    double wallTime = 0;      ///< s, for all the runs of this measurement
+};
+
+/// Measures along one direction with the ramp.
+GraspCapacity measureGraspCapacityRamp(const scenario::Scenario& scenario, const simulation::SimulationOptions& options,
+                                       const GraspCapacityRequest& request);
+
+/// Measures along one direction by bisection over constant loads held `hold` s, bracketed from
+/// [0, `guess`].
+GraspCapacity measureGraspCapacityBisection(const scenario::Scenario& scenario, const simulation::SimulationOptions& options,
+                                            const GraspCapacityRequest& request, double guess, double hold);
+
+}  // namespace graspsim::capacity

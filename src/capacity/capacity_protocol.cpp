@@ -1,0 +1,84 @@
+#include "graspsim/capacity/capacity_protocol.h"
+
+#include "graspsim/error.h"
+
+#include <cmath>
+#include <string>
+
+namespace graspsim::capacity {
+
+namespace {
+
+// Sample times from `start` to `end` every `dt`, the last one exactly `end`.
+std::vector<double> makeTimes(double start, double end, double dt) {
+    std::vector<double> times;
+    const long n = static_cast<long>(std::ceil((end - start) / dt - 1e-9));
+    for (long k = 1; k < n; ++k) times.push_back(start + k * dt);
+    times.push_back(end);
+    return times;
+}
+
+// Advances `run` to the load's start, then samples it until it drops or `end`.
+std::vector<CapacitySample> sampleRun(LoadedRun& run, const simulation::LoadRampSpec& load, double end, double dt,
+                                      const SlipCriteria& criteria) {
+    run.advanceTo(load.start);
+    run.captureReference();
+    std::vector<CapacitySample> samples;
+    CapacitySample first = run.sampleNow();
+    first.time = load.start;
+    samples.push_back(first);
+    for (double t : makeTimes(load.start, end, dt)) {
+        run.advanceTo(t);
+        CapacitySample s = run.sampleNow();
+        s.time = t;
+        s.load = load.initial + load.rate * (t - load.start);
+        samples.push_back(s);
+        if (isDropped(s, criteria)) break;
+    }
+    samples.front().load = load.initial;
+    return samples;
+}
+
+// Whether a constant `load` slips within the hold.
+bool slipsUnder(const LoadedRunFactory& makeRun, const BisectionProtocol& p, double load) {
+    const simulation::LoadRampSpec spec{p.direction, p.torque, p.start, load, 0.0};
+    const std::unique_ptr<LoadedRun> run = makeRun(spec);
+    const std::vector<CapacitySample> samples = sampleRun(*run, spec, p.start + p.hold, p.sampleInterval, p.criteria);
+    return findCapacityFigures(samples, p.criteria).slipped;
+}
+
+}  // namespace
+
+CapacityTrace runRamp(const LoadedRunFactory& makeRun, const RampProtocol& p) {
+    const simulation::LoadRampSpec spec{p.direction, p.torque, p.start, 0.0, p.rate};
+    const std::unique_ptr<LoadedRun> run = makeRun(spec);
+    CapacityTrace trace;
+    trace.samples = sampleRun(*run, spec, p.start + p.maxDuration, p.sampleInterval, p.criteria);
+    trace.figures = findCapacityFigures(trace.samples, p.criteria);
+    trace.releaseReason = run->findReleaseReason();
+    return trace;
+}
+
+BisectionResult runBisection(const LoadedRunFactory& makeRun, const BisectionProtocol& p) {
+    BisectionResult result;
+    result.held = p.low;
+    result.slipped = p.high;
+    for (int k = 0;; ++k) {
+        ++result.runs;
+        if (slipsUnder(makeRun, p, result.slipped)) break;
+        if (k == 6) {
+            throw NumericalError("capacity bisection: no load up to " + std::to_string(result.slipped) + " slips within " +
+                                 std::to_string(p.hold) + " s");
+        }
+        result.held = result.slipped;
+        result.slipped *= 2;
+    }
+    while (result.slipped - result.held > p.tolerance * result.slipped) {
+        const double middle = 0.5 * (result.held + result.slipped);
+        ++result.runs;
+        (slipsUnder(makeRun, p, middle) ? result.slipped : result.held) = middle;
+    }
+    return result;
+}
+
+}  // namespace graspsim::capacity

@@ -1,0 +1,207 @@
+#include "graspsim/capacity/grasp_capacity.h"
+
+#include "graspsim/error.h"
+#include "graspsim/integration/simbody_stepper.h"
+#include "graspsim/integration/cvode_integrator.h"
+#include "graspsim/simulation/grasp_scene.h"
+#include "graspsim/simulation/grasp_switch.h"
+#include "graspsim/simulation/rigid_stepping.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace graspsim::capacity {
+
+namespace {
+
+constexpr double kGravity = 9.81;  // m/s^2, for the default rate only
+
+// The scene and its stepper: CPodes or CVODE for compliant contact, the rigid stepper for rigid.
+class GraspRun : public LoadedRun {
+public:
+    GraspRun(const scenario::Scenario& scenario, simulation::SimulationOptions options) : scene_(scenario, options) {
+        if (options.contact == simulation::ContactModel::Rigid) {
+            rigid_ = std::make_unique<simulation::RigidStepper>(scene_);
+            rigid_->initialize(scene_.makeInitialState());
+            return;
+        }
+        const double accuracy = options.accuracy > 0 ? options.accuracy : scenario.simulation.accuracy;
+        if (options.integrator == simulation::IntegratorChoice::Cvode) {
+            integration::CvodeOptions cvode;
+            cvode.relativeTolerance = accuracy;
+            stepper_ = std::make_unique<integration::CvodeIntegrator>(scene_.getSystem(), cvode);
+        } else {
+            stepper_ = std::make_unique<integration::SimbodyCpodesStepper>(scene_.getSystem(), accuracy);
+        }
+        stepper_->initialize(scene_.makeInitialState());
+    }
+
+    void advanceTo(double t) override {
+        const double release = scene_.getReleaseTime();
+        if (scene_.isObjectHeld(getState()) && t >= release) {
+            stepTo(release);
+            releaseObject();
+        }
+        stepTo(t);
+    }
+
+    void captureReference() override {
+        const simulation::GraspSwitch* grasp = scene_.getGraspSwitch();
+        if (grasp && !grasp->isEngaged(getState())) {
+            throw NumericalError("capacity: the approximation is not engaged at the load's start, t = " +
+                                 std::to_string(getState().getTime()) + " s; use --mode full or lower --q-threshold");
+        }
+        reference_ = findGoalPointsInPalm();
+        q_PO_reference_ = findObjectInPalm().R().convertRotationToQuaternion().asVec4();
+    }
+
+    CapacitySample sampleNow() override {
+        CapacitySample s;
+        const std::vector<SimTK::Vec3> now = findGoalPointsInPalm();
+        const SimTK::Rotation R_PO0{SimTK::Quaternion(q_PO_reference_)};
+        const SimTK::Rotation R_change = ~R_PO0 * findObjectInPalm().R();
+        s.rotation = std::abs(R_change.convertRotationToAngleAxis()[0]);
+        for (std::size_t k = 0; k < now.size(); ++k) s.slip = std::max(s.slip, (now[k] - reference_[k]).norm());
+        if (const simulation::GraspSwitch* grasp = scene_.getGraspSwitch()) s.engaged = grasp->isEngaged(getState()) ? 1 : 0;
+        s.held = scene_.findMaxFingertipGoalDistance(getState()) <= scene_.getScenario().simulation.heldTolerance;
+        return s;
+    }
+
+    std::string findReleaseReason() const override {
+        const simulation::GraspSwitch* grasp = scene_.getGraspSwitch();
+        if (!grasp) return {};
+        for (const simulation::GraspEvent& e : grasp->getEvents()) {
+            if (e.kind == "release") return "t = " + std::to_string(e.time) + " s: " + e.reason;
+        }
+        return {};
+    }
+
+private:
+    const SimTK::State& getState() const { return rigid_ ? rigid_->getState() : stepper_->getState(); }
+
+    void stepTo(double t) {
+        if (rigid_) {
+            rigid_->stepTo(t);
+        } else {
+            stepper_->stepTo(t);
+        }
+        const SimTK::State& s = getState();
+        for (int k = 0; k < s.getNQ(); ++k) {
+            if (!std::isfinite(s.getQ()[k])) throw NumericalError("capacity: non-finite state at t = " + std::to_string(s.getTime()) + " s");
+        }
+    }
+
+    void releaseObject() {
+        if (rigid_) {
+            rigid_->releaseObject();
+            return;
+        }
+        SimTK::State released = stepper_->getState();
+        scene_.releaseObject(released);
+        stepper_->initialize(released);
+    }
+
+    SimTK::Transform findObjectInPalm() const {
+        const SimTK::State& s = getState();
+        scene_.getSystem().realize(s, SimTK::Stage::Position);
+        return ~scene_.getPalm().getBodyTransform(s) * scene_.getObject().getBodyTransform(s);
+    }
+
+    // The goal points (object material points where the fingertips press), in the palm frame P.
+    std::vector<SimTK::Vec3> findGoalPointsInPalm() const {
+        const SimTK::Transform X_PO = findObjectInPalm();
+        std::vector<SimTK::Vec3> points;
+        for (const SimTK::Vec3& p_OG : scene_.getSurfaceGoals()) points.push_back(X_PO * p_OG);
+        return points;
+    }
+
+    simulation::GraspScene scene_;
+    std::unique_ptr<integration::Stepper> stepper_;
+    std::unique_ptr<simulation::RigidStepper> rigid_;
+    std::vector<SimTK::Vec3> reference_;
+    SimTK::Vec4 q_PO_reference_{1, 0, 0, 0};  // R_PO at the reference, as a quaternion
+};
+
+GraspCapacity makeHeader(const simulation::SimulationOptions& options, const GraspCapacityRequest& request,
+                         const scenario::Scenario& scenario, const char* method) {
+    GraspCapacity c;
+    c.directionName = request.directionName;
+    c.direction = request.direction;
+    c.torque = request.torque;
+    c.method = method;
+    c.contact = simulation::toString(options.contact);
+    c.mode = simulation::toString(options.mode);
+    if (options.mode == simulation::SimulationMode::Approx) {
+        c.realization = simulation::toString(options.approx.constraint) + " " + simulation::toString(options.approx.attach);
+    }
+    c.start = findLoadStart(scenario);
+    c.criteria = request.criteria;
+    return c;
+}
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+double findDefaultRate(const scenario::Scenario& scenario, bool torque) {
+    const double force = 2 * scenario.object.mass * kGravity;
+    if (!torque) return force;
+    double lever = 0;
+    for (const auto& goal : scenario.goals) {
+        const model::Vec3& p = goal.second;
+        lever = std::max(lever, std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]));
+    }
+    return force * lever;
+}
+
+double findLoadStart(const scenario::Scenario& scenario) { return scenario.simulation.settleTime + kLoadStartDelay; }
+
+LoadedRunFactory makeGraspRuns(const scenario::Scenario& scenario, const simulation::SimulationOptions& options) {
+    return [&scenario, options](const simulation::LoadRampSpec& load) -> std::unique_ptr<LoadedRun> {
+        simulation::SimulationOptions loaded = options;
+        loaded.perturbation = "none";
+        loaded.loadRamp = load;
+        return std::make_unique<GraspRun>(scenario, loaded);
+    };
+}
+
+GraspCapacity measureGraspCapacityRamp(const scenario::Scenario& scenario, const simulation::SimulationOptions& options,
+                                       const GraspCapacityRequest& request) {
+    const auto clock = std::chrono::steady_clock::now();
+    GraspCapacity c = makeHeader(options, request, scenario, "ramp");
+    c.rate = request.rate > 0 ? request.rate : findDefaultRate(scenario, request.torque);
+    RampProtocol protocol;
+    protocol.direction = request.direction;
+    protocol.torque = request.torque;
+    protocol.start = c.start;
+    protocol.rate = c.rate;
+    protocol.maxDuration = request.maxRampDuration;
+    protocol.sampleInterval = request.sampleInterval;
+    protocol.criteria = request.criteria;
+    c.trace = runRamp(makeGraspRuns(scenario, options), protocol);
+    c.wallTime = secondsSince(clock);
+    return c;
+}
+
+GraspCapacity measureGraspCapacityBisection(const scenario::Scenario& scenario, const simulation::SimulationOptions& options,
+                                            const GraspCapacityRequest& request, double guess, double hold) {
+    const auto clock = std::chrono::steady_clock::now();
+    GraspCapacity c = makeHeader(options, request, scenario, "bisection");
+    BisectionProtocol protocol;
+    protocol.direction = request.direction;
+    protocol.torque = request.torque;
+    protocol.start = c.start;
+    protocol.hold = hold;
+    protocol.high = guess;
+    protocol.tolerance = 0.02;
+    protocol.sampleInterval = request.sampleInterval;
+    protocol.criteria = request.criteria;
+    c.bisection = runBisection(makeGraspRuns(scenario, options), protocol);
+    c.wallTime = secondsSince(clock);
+    return c;
+}
+
+}  // namespace graspsim::capacity

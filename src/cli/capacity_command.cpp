@@ -1,0 +1,169 @@
+#include "capacity_command.h"
+
+#include "number_option.h"
+
+#include "graspsim/capacity/capacity_files.h"
+#include "graspsim/capacity/load_direction.h"
+#include "graspsim/error.h"
+#include "graspsim/scenario/scenario_file.h"
+#include "graspsim/simulation/multi_attachment_switch.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+namespace graspsim::cli {
+
+struct CapacityCommand::Options {
+    std::string scenario;
+    std::string direction = "-y";
+    bool torque = false;
+    std::string rate;
+    std::string method = "ramp";
+    std::string maxDuration = "4";
+    std::string hold = "1";
+    std::string guess;
+    std::string contact = "compliant";
+    std::string mode = "full";
+    std::string constraint = "bushing";
+    std::string attach = "merged";
+    std::string releaseSlide;
+    std::string qMinimum;
+    std::string limitsFriction = "dynamic";
+    std::string out;
+};
+
+// The checked options: what to measure along which directions.
+struct CapacityCommand::Plan {
+    simulation::SimulationOptions simulation;
+    std::vector<capacity::GraspCapacityRequest> requests;
+    bool bisection = false;
+    double hold = 1, guess = 0;
+};
+
+CapacityCommand::CapacityCommand(CLI::App& app) : options_(std::make_shared<Options>()) {
+    Options& o = *options_;
+    command_ = app.add_subcommand("capacity", "Measure how large a load on the object the grasp holds before it slips and drops");
+    command_->add_option("scenario", o.scenario, "built-in scenario (ball-clutch, phone-pinch) or a scenario file")->required();
+    command_->add_option("--direction", o.direction,
+                         "x, y, z, -x, -y, -z (default -y), a vector such as 0,-1,0 (G), or all: the six axes and torques about x, y, z");
+    command_->add_flag("--torque", o.torque, "a torque about the object's centre of mass instead of a force");
+    command_->add_option("--rate", o.rate, "ramp rate, N/s (N m/s with --torque), > 0 (default: 2 object weights per second)");
+    command_->add_option("--method", o.method, "ramp (default) or bisection (constant loads, --hold s each)");
+    command_->add_option("--max-duration", o.maxDuration, "ramp: longest ramp, s (default 4)");
+    command_->add_option("--hold", o.hold, "bisection: how long each constant load is held, s (default 1)");
+    command_->add_option("--guess", o.guess, "bisection: first load to try, N or N m (default: rate x 1 s)");
+    command_->add_option("--contact", o.contact, "compliant (default) or rigid");
+    command_->add_option("--mode", o.mode, "full (default) or approx");
+    command_->add_option("--constraint", o.constraint, "approx: bushing (default) or weld");
+    command_->add_option("--attach", o.attach, "approx: merged (default) or multi");
+    command_->add_option("--release-slide", o.releaseSlide,
+                         "approx: release when the object slid this far in the hand, m (default 0.005)");
+    command_->add_option("--q-minimum", o.qMinimum, "approx: grasp quality Q_M (N) below which to release (default: 0.5 x Q_Th)");
+    command_->add_option("--limits-friction", o.limitsFriction,
+                         "approx: the friction coefficient of the constraint's limits, dynamic (default) or static");
+    command_->add_option("--out", o.out, "output folder; receives capacity.json and capacity.csv (default: none written)");
+}
+
+bool CapacityCommand::parsed() const { return command_->parsed(); }
+
+namespace {
+
+// A number > 0; empty gives `fallback`.
+double parsePositive(const std::string& text, const std::string& flag, const std::string& what, double fallback) {
+    if (text.empty()) return fallback;
+    const std::string accepted = what + " must be a number > 0";
+    const double value = parseNumber(text, flag, accepted);
+    if (!(value > 0) || !std::isfinite(value)) throw InputError(flag + ": value " + text + " is not accepted; " + accepted);
+    return value;
+}
+
+std::vector<capacity::GraspCapacityRequest> makeRequests(const std::string& direction, bool torque) {
+    std::vector<capacity::GraspCapacityRequest> requests;
+    const auto add = [&](const capacity::LoadDirection& d, bool isTorque) {
+        capacity::GraspCapacityRequest r;
+        r.direction = d.direction;
+        r.directionName = d.name;
+        r.torque = isTorque;
+        requests.push_back(r);
+    };
+    if (direction != "all") {
+        add(capacity::parseLoadDirection(direction, "--direction"), torque);
+        return requests;
+    }
+    const std::vector<capacity::LoadDirection> axes = capacity::findAxisDirections();
+    for (const capacity::LoadDirection& d : axes) add(d, false);
+    for (const capacity::LoadDirection& d : axes) if (d.name[0] != '-') add(d, true);
+    return requests;
+}
+
+void prepareFolder(const std::string& folder) {
+    std::error_code ec;
+    std::filesystem::create_directories(folder, ec);
+    if (ec || !std::filesystem::is_directory(folder)) {
+        throw InputError("--out: folder '" + folder + "' cannot be created or written (" + ec.message() + ")");
+    }
+}
+
+}  // namespace
+
+CapacityCommand::Plan CapacityCommand::makePlan() const {
+    const Options& o = *options_;
+    Plan plan;
+    plan.simulation.contact = simulation::parseContactModel(o.contact, "--contact");
+    plan.simulation.mode = simulation::parseSimulationMode(o.mode, "--mode");
+    plan.simulation.approx.constraint = simulation::parseApproxConstraint(o.constraint, "--constraint");
+    plan.simulation.approx.attach = simulation::parseApproxAttach(o.attach, "--attach");
+    plan.simulation.approx.releaseSlideDistance = parsePositive(o.releaseSlide, "--release-slide", "the release distance (m)", 0.005);
+    plan.simulation.approx.qMinimum = parsePositive(o.qMinimum, "--q-minimum", "the grasp quality (N)", 0);
+    if (o.limitsFriction != "dynamic" && o.limitsFriction != "static") {
+        throw InputError("--limits-friction: value '" + o.limitsFriction + "' is not accepted; use dynamic or static");
+    }
+    plan.simulation.approx.staticFrictionLimits = o.limitsFriction == "static";
+    if (o.method != "ramp" && o.method != "bisection") {
+        throw InputError("--method: value '" + o.method + "' is not accepted; use ramp or bisection");
+    }
+    plan.bisection = o.method == "bisection";
+    const double rate = parsePositive(o.rate, "--rate", "the rate", 0);
+    const double maxDuration = parsePositive(o.maxDuration, "--max-duration", "the ramp's duration (s)", 4);
+    plan.hold = parsePositive(o.hold, "--hold", "the hold (s)", 1);
+    plan.guess = parsePositive(o.guess, "--guess", "the first load", 0);
+    plan.requests = makeRequests(o.direction, o.torque);
+    for (capacity::GraspCapacityRequest& r : plan.requests) {
+        r.rate = rate;
+        r.maxRampDuration = maxDuration;
+    }
+    return plan;
+}
+
+void CapacityCommand::checkOptions() const { makePlan(); }
+
+int CapacityCommand::run() const {
+    const Options& o = *options_;
+    const Plan plan = makePlan();
+    const scenario::Scenario scenario = scenario::loadScenario(o.scenario);
+    simulation::checkApproxAttach(scenario, plan.simulation);
+    if (!o.out.empty()) prepareFolder(o.out);
+    std::vector<capacity::GraspCapacity> measurements;
+    for (const capacity::GraspCapacityRequest& r : plan.requests) {
+        if (plan.bisection) {
+            const double rate = r.rate > 0 ? r.rate : capacity::findDefaultRate(scenario, r.torque);
+            const double guess = plan.guess > 0 ? plan.guess : rate;
+            measurements.push_back(capacity::measureGraspCapacityBisection(scenario, plan.simulation, r, guess, plan.hold));
+        } else {
+            measurements.push_back(capacity::measureGraspCapacityRamp(scenario, plan.simulation, r));
+        }
+        std::cout << scenario.name << " " << capacity::describeCapacity(measurements.back()) << " ["
+                  << measurements.back().wallTime << " s wall]\n";
+    }
+    if (!o.out.empty()) capacity::writeCapacityFiles(o.out, scenario.name, measurements);
+    const capacity::GraspCapacity& first = measurements.front();
+    std::string last = "capacity of " + scenario.name + " (" + first.contact + ", " + first.mode +
+                       (first.realization.empty() ? "" : ", " + first.realization) + "): ";
+    for (std::size_t k = 0; k < measurements.size(); ++k) last += (k ? "; " : "") + capacity::describeCapacity(measurements[k]);
+    std::cout << last << (o.out.empty() ? "" : "; files in " + o.out) << "\n";
+    return 0;
+}
+
+}  // namespace graspsim::cli

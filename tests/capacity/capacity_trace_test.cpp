@@ -1,0 +1,45 @@
+#include "graspsim/capacity/capacity_trace.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using graspsim::capacity::CapacitySample;
+using graspsim::capacity::findCapacityFigures;
+using graspsim::capacity::SlipCriteria;
+
+// Slip growing as (t - 1)^2 for t > 1 under a load 10 t: onset where (t - 1)^2 = 2 mm, drop where
+// it reaches 20 mm. Between samples the slip is interpolated linearly, so with 1 ms samples the
+// crossing times are exact to the chord's error (< 1e-4 s here).
+TEST(CapacityTrace, SlipOnsetAndDropAreTheThresholdCrossings) {
+    std::vector<CapacitySample> samples;
+    for (int k = 0; k <= 2000; ++k) {
+        const double t = 1e-3 * k;
+        samples.push_back({t, 10 * t, t > 1 ? (t - 1) * (t - 1) : 0.0, true});
+    }
+    const auto f = findCapacityFigures(samples, SlipCriteria{});
+    ASSERT_TRUE(f.slipped);
+    ASSERT_TRUE(f.dropped);
+    EXPECT_NEAR(f.slipOnsetTime, 1 + std::sqrt(0.002), 1e-4);
+    EXPECT_NEAR(f.slipOnsetLoad, 10 * (1 + std::sqrt(0.002)), 1e-3);
+    EXPECT_NEAR(f.dropTime, 1 + std::sqrt(0.02), 1e-4);
+    EXPECT_NEAR(f.dropLoad, 10 * (1 + std::sqrt(0.02)), 1e-3);
+}
+
+TEST(CapacityTrace, NoSlipBelowTheThreshold) {
+    const std::vector<CapacitySample> samples{{0, 0, 0, true}, {1, 5, 0.0019, true}};
+    const auto f = findCapacityFigures(samples, SlipCriteria{});
+    EXPECT_FALSE(f.slipped);
+    EXPECT_FALSE(f.dropped);
+}
+
+// A grasp that lets go (held false) drops there, and counts as slipped at that load if it had not.
+TEST(CapacityTrace, LosingTheGraspIsADrop) {
+    const std::vector<CapacitySample> samples{{0, 0, 0, true}, {1, 5, 0.001, true}, {2, 10, 0.0015, false}};
+    const auto f = findCapacityFigures(samples, SlipCriteria{});
+    ASSERT_TRUE(f.dropped);
+    EXPECT_EQ(f.dropLoad, 10);
+    EXPECT_EQ(f.dropTime, 2);
+    ASSERT_TRUE(f.slipped);
+    EXPECT_EQ(f.slipOnsetLoad, 10);
+}

@@ -1,0 +1,52 @@
+#include "cli_process.h"
+
+using graspsim::testing::CliProcess;
+using graspsim::testing::RunResult;
+using graspsim::testing::slurp;
+namespace fs = std::filesystem;
+
+namespace {
+
+class CapacityCommand : public CliProcess {
+protected:
+    // Bad input: one line naming the flag, exit 2, and no output folder created.
+    void expectRejected(const std::string& args, const char* flag) {
+        const std::string out = (dir_ / "cap").string();
+        const RunResult r = run("capacity phone-pinch " + args + " --out " + out);
+        EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_NE(r.err.find(flag), std::string::npos) << r.err;
+        EXPECT_FALSE(fs::exists(out)) << args;
+    }
+};
+
+}  // namespace
+
+TEST_F(CapacityCommand, BadInputIsOneLineAndWritesNothing) {
+    expectRejected("--direction 0,0,0", "--direction");
+    expectRejected("--direction nan,1,0", "--direction");
+    expectRejected("--direction up", "--direction");
+    expectRejected("--direction 1,2", "--direction");
+    expectRejected("--rate 0", "--rate");
+    expectRejected("--rate=-3", "--rate");
+    expectRejected("--rate inf", "--rate");
+    expectRejected("--method guess", "--method");
+    expectRejected("--mode half", "--mode");
+}
+
+// A fast ramp on the phone (8 N/s: it drops within 0.6 s of load): the files hold what the last
+// line states, and the time series starts at the load's start with no load and no slip.
+TEST_F(CapacityCommand, RampWritesTheFiguresItPrints) {
+    const std::string out = (dir_ / "cap").string();
+    const RunResult r = run("capacity phone-pinch --rate 8 --max-duration 0.6 --out " + out);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const std::string json = slurp(fs::path(out) / "capacity.json");
+    for (const char* key : {"\"slip_onset_n\"", "\"drop_n\"", "\"mode\": \"full\"", "\"realization\": null", "\"rate\": 8.0"}) {
+        EXPECT_NE(json.find(key), std::string::npos) << key << " in " << json;
+    }
+    const std::string csv = slurp(fs::path(out) / "capacity.csv");
+    EXPECT_EQ(csv.rfind("direction,load,time_s,load_value,slip_m,rotation_rad,held,engaged\n-y,force,1.1000,0,0,", 0), 0u) << csv.substr(0, 200);
+    const std::string last = r.out.substr(r.out.rfind('\n', r.out.size() - 2) + 1);
+    EXPECT_EQ(last.rfind("capacity of phone-pinch (compliant, full): -y force (ramp): slips at ", 0), 0u) << last;
+    EXPECT_NE(last.find(", drops at "), std::string::npos) << last;
+}
