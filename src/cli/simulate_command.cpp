@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 
@@ -142,6 +143,17 @@ void SimulateCommand::checkOptions() const { parseOptions(); }
 
 namespace {
 
+// A number as it reads back, or "scenario" for 0: the
+// scenario's own value, which scenario.yaml records.
+std::string formatOverride(double value) {
+    if (value <= 0) return "scenario";
+    // The shortest of 15 or 17 significant digits that reads back to the same double.
+    char text[32];
+    std::snprintf(text, sizeof text, "%.15g", value);
+    if (std::strtod(text, nullptr) != value) std::snprintf(text, sizeof text, "%.17g", value);
+    return text;
+}
+
 // The per-run choices of provenance.json, as the options were given (defaults written out).
 results::RunProvenance makeRunProvenance(const std::vector<std::string>& commandLine,
                                          const simulation::SimulationOptions& options) {
@@ -151,13 +163,13 @@ results::RunProvenance makeRunProvenance(const std::vector<std::string>& command
     run.run["mode"] = simulation::toString(options.mode);
     run.run["perturbation"] = options.perturbation;
     run.run["integrator"] = simulation::toString(options.integrator);
-    run.run["duration_s"] = options.duration > 0 ? std::to_string(options.duration) : "scenario";
-    run.run["accuracy"] = options.accuracy > 0 ? std::to_string(options.accuracy) : "scenario";
+    run.run["duration_s"] = formatOverride(options.duration);
+    run.run["accuracy"] = formatOverride(options.accuracy);
     if (options.mode == simulation::SimulationMode::Approx) {
         run.run["constraint"] = simulation::toString(options.approx.constraint);
         run.run["attach"] = simulation::toString(options.approx.attach);
-        run.run["q_threshold_n"] = options.approx.qThreshold > 0 ? std::to_string(options.approx.qThreshold) : "scenario";
-        run.run["q_minimum_n"] = options.approx.qMinimum > 0 ? std::to_string(options.approx.qMinimum) : "scenario";
+        run.run["q_threshold_n"] = formatOverride(options.approx.qThreshold);
+        run.run["q_minimum_n"] = formatOverride(options.approx.qMinimum);
     }
     return run;
 }

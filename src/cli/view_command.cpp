@@ -8,6 +8,7 @@
 #include "graspsim/viewer/still_picture.h"
 
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 
 namespace graspsim::cli {
@@ -45,7 +46,9 @@ viewer::PictureSize parseSize(const std::string& text) {
 
 double parsePictureTime(const std::string& text, const viewer::ResultRecord& record) {
     const double end = record.trajectory.back().time;
-    const std::string accepted = "the run covers 0 to " + std::to_string(end) + " s";
+    char endText[32];
+    std::snprintf(endText, sizeof endText, "%g", end);
+    const std::string accepted = "the run covers 0 to " + std::string(endText) + " s";
     const double t = parseNumber(text, "--png", accepted);
     if (!(t >= 0 && t <= end)) throw InputError("--png: time " + text + " s is outside the run; " + accepted);
     return t;

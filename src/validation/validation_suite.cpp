@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <map>
 
@@ -18,6 +20,14 @@ bool ValidationResults::passed() const {
 
 namespace {
 
+std::string formatNumber(double value) {
+    // The shortest of 15 or 17 significant digits that reads back to the same double.
+    char text[32];
+    std::snprintf(text, sizeof text, "%.15g", value);
+    if (std::strtod(text, nullptr) != value) std::snprintf(text, sizeof text, "%.17g", value);
+    return text;
+}
+
 // Each run's folder is a complete result (viewable with graspsim view); its provenance names the
 // run of the suite, as the suite's command line is not known here.
 void writeRunFiles(const std::string& folder, const ValidationRun& run, const scenario::Scenario& scenario,
@@ -28,7 +38,7 @@ void writeRunFiles(const std::string& folder, const ValidationRun& run, const sc
     if (ec) throw InputError(dir.string() + ": cannot be created (" + ec.message() + ")");
     results::RunProvenance provenance;
     provenance.run = {{"validation_run", run.id}, {"variant", run.variant}, {"perturbation", run.options.perturbation},
-                      {"duration_s", std::to_string(result.summary.simTime)}};
+                      {"sim_time_s", formatNumber(result.summary.simTime)}};
     results::writeResultFolder(dir.string(), scenario, result, provenance);
 }
 

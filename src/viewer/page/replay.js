@@ -191,7 +191,10 @@
     });
     var engaged = isEngagedAt(t), sample = data.constraintSamples[frame];
     FINGERS.forEach(function (name) {
-      fingerRows[name].textContent = engaged && data.mode === "approx" ? "locked to the palm"
+      // Merged: the fingers are locked to the palm; multi: each attached finger is part of the
+      // approximation's element (no single constraint to show).
+      fingerRows[name].textContent = engaged && sample ? "locked to the palm"
+        : engaged ? "held by the approximation"
         : perFinger[name] ? "contact, " + perFinger[name].toFixed(2) + " N" : "free";
     });
     reactionArrow.visible = constraintAxes.visible = !!sample;
