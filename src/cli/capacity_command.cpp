@@ -171,6 +171,12 @@ int CapacityCommand::run() const {
                        (first.realization.empty() ? "" : ", " + first.realization) + "): ";
     for (std::size_t k = 0; k < measurements.size(); ++k) last += (k ? "; " : "") + capacity::describeCapacity(measurements[k]);
     std::cout << last << (o.out.empty() ? "" : "; files in " + o.out) << "\n";
+    for (const capacity::GraspCapacity& c : measurements) {
+        if (!c.trace.failure.empty()) {
+            std::cerr << "graspsim: a capacity run stopped early (" << c.directionName << "): " << c.trace.failure << "\n";
+            return 3;
+        }
+    }
     return 0;
 }
 
