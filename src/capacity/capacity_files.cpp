@@ -45,6 +45,7 @@ Json formatMeasurement(const GraspCapacity& c) {
         j["bracket_slipped_" + unit] = c.bisection.slipped;
         j["runs"] = c.bisection.runs;
     }
+    if (!c.trace.failure.empty()) j["failure"] = c.trace.failure;
     j["wall_time_s"] = c.wallTime;
     return j;
 }
@@ -89,6 +90,7 @@ std::string describeCapacity(const GraspCapacity& c) {
     text += f.slipped ? "slips at " + formatNumber(f.slipOnsetLoad, "%.4g") + unit : "no slip up to " +
                         formatNumber(c.trace.samples.empty() ? 0 : c.trace.samples.back().load, "%.4g") + unit;
     if (f.slipped) text += f.dropped ? ", drops at " + formatNumber(f.dropLoad, "%.4g") + unit : ", not dropped within the ramp";
+    if (!c.trace.failure.empty()) text += " [run stopped early: " + c.trace.failure + "]";
     if (f.released) text += " (approximation released at " + formatNumber(f.releaseLoad, "%.4g") + unit + (c.trace.releaseReason.empty() ? "" : ": " + c.trace.releaseReason) + ")";
     return text;
 }

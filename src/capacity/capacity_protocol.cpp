@@ -19,13 +19,13 @@ std::vector<double> makeTimes(double start, double end, double dt) {
 }
 
 // Advances `run` to the load's start, then samples it until it drops or `end`.
-std::vector<CapacitySample> sampleRun(LoadedRun& run, const simulation::LoadRampSpec& load, double end, double dt,
-                                      const SlipCriteria& criteria) {
+void sampleRun(LoadedRun& run, const simulation::LoadRampSpec& load, double end, double dt, const SlipCriteria& criteria,
+               std::vector<CapacitySample>& samples) {
     run.advanceTo(load.start);
     run.captureReference();
-    std::vector<CapacitySample> samples;
     CapacitySample first = run.sampleNow();
     first.time = load.start;
+    first.load = load.initial;
     samples.push_back(first);
     for (double t : makeTimes(load.start, end, dt)) {
         run.advanceTo(t);
@@ -35,15 +35,14 @@ std::vector<CapacitySample> sampleRun(LoadedRun& run, const simulation::LoadRamp
         samples.push_back(s);
         if (isDropped(s, criteria)) break;
     }
-    samples.front().load = load.initial;
-    return samples;
 }
 
 // Whether a constant `load` slips within the hold.
 bool slipsUnder(const LoadedRunFactory& makeRun, const BisectionProtocol& p, double load) {
     const simulation::LoadRampSpec spec{p.direction, p.torque, p.start, load, 0.0};
     const std::unique_ptr<LoadedRun> run = makeRun(spec);
-    const std::vector<CapacitySample> samples = sampleRun(*run, spec, p.start + p.hold, p.sampleInterval, p.criteria);
+    std::vector<CapacitySample> samples;
+    sampleRun(*run, spec, p.start + p.hold, p.sampleInterval, p.criteria, samples);
     return findCapacityFigures(samples, p.criteria).slipped;
 }
 
@@ -53,7 +52,13 @@ CapacityTrace runRamp(const LoadedRunFactory& makeRun, const RampProtocol& p) {
     const simulation::LoadRampSpec spec{p.direction, p.torque, p.start, 0.0, p.rate};
     const std::unique_ptr<LoadedRun> run = makeRun(spec);
     CapacityTrace trace;
-    trace.samples = sampleRun(*run, spec, p.start + p.maxDuration, p.sampleInterval, p.criteria);
+    try {
+        sampleRun(*run, spec, p.start + p.maxDuration, p.sampleInterval, p.criteria, trace.samples);
+    } catch (const NumericalError& e) {
+        trace.failure = foldToOneLine(e.what());
+    } catch (const SimTK::Exception::Base& e) {  // an integrator that cannot step
+        trace.failure = "Simbody: " + foldToOneLine(e.getMessageText());
+    }
     trace.figures = findCapacityFigures(trace.samples, p.criteria);
     trace.releaseReason = run->findReleaseReason();
     return trace;

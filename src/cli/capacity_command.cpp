@@ -39,6 +39,9 @@ struct CapacityCommand::Plan {
     simulation::SimulationOptions simulation;
     std::vector<capacity::GraspCapacityRequest> requests;
     bool bisection = false;
+    /// With --direction all, --rate is the forces' rate; the torques' is scaled from it by the
+    /// default rates' ratio (a lever, m).
+    bool torqueRateFromForceRate = false;
     double hold = 1, guess = 0;
 };
 
@@ -49,7 +52,8 @@ CapacityCommand::CapacityCommand(CLI::App& app) : options_(std::make_shared<Opti
     command_->add_option("--direction", o.direction,
                          "x, y, z, -x, -y, -z (default -y), a vector such as 0,-1,0 (G), or all: the six axes and torques about x, y, z");
     command_->add_flag("--torque", o.torque, "a torque about the object's centre of mass instead of a force");
-    command_->add_option("--rate", o.rate, "ramp rate, N/s (N m/s with --torque), > 0 (default: 2 object weights per second)");
+    command_->add_option("--rate", o.rate, "ramp rate, N/s (N m/s with --torque), > 0 (default: 2 object weights per second; with --direction all "
+                         "the forces' rate, the torques' scaled by the farthest goal's distance)");
     command_->add_option("--method", o.method, "ramp (default) or bisection (constant loads, --hold s each)");
     command_->add_option("--max-duration", o.maxDuration, "ramp: longest ramp, s (default 4)");
     command_->add_option("--hold", o.hold, "bisection: how long each constant load is held, s (default 1)");
@@ -134,6 +138,7 @@ CapacityCommand::Plan CapacityCommand::makePlan() const {
         r.rate = rate;
         r.maxRampDuration = maxDuration;
     }
+    plan.torqueRateFromForceRate = o.direction == "all";
     return plan;
 }
 
@@ -146,7 +151,10 @@ int CapacityCommand::run() const {
     simulation::checkApproxAttach(scenario, plan.simulation);
     if (!o.out.empty()) prepareFolder(o.out);
     std::vector<capacity::GraspCapacity> measurements;
-    for (const capacity::GraspCapacityRequest& r : plan.requests) {
+    for (capacity::GraspCapacityRequest r : plan.requests) {
+        if (r.torque && r.rate > 0 && plan.torqueRateFromForceRate) {
+            r.rate *= capacity::findDefaultRate(scenario, true) / capacity::findDefaultRate(scenario, false);
+        }
         if (plan.bisection) {
             const double rate = r.rate > 0 ? r.rate : capacity::findDefaultRate(scenario, r.torque);
             const double guess = plan.guess > 0 ? plan.guess : rate;
@@ -163,6 +171,12 @@ int CapacityCommand::run() const {
                        (first.realization.empty() ? "" : ", " + first.realization) + "): ";
     for (std::size_t k = 0; k < measurements.size(); ++k) last += (k ? "; " : "") + capacity::describeCapacity(measurements[k]);
     std::cout << last << (o.out.empty() ? "" : "; files in " + o.out) << "\n";
+    for (const capacity::GraspCapacity& c : measurements) {
+        if (!c.trace.failure.empty()) {
+            std::cerr << "graspsim: a capacity run stopped early (" << c.directionName << "): " << c.trace.failure << "\n";
+            return 3;
+        }
+    }
     return 0;
 }
 

@@ -13,7 +13,8 @@ public:
     bool parsed() const;
     // Checks the option values that need no scenario; throws InputError.
     void checkOptions() const;
-    // Measures and writes capacity.json and capacity.csv; returns the exit code (0).
+    // Measures and writes capacity.json and capacity.csv; returns the exit code (0, or 3 when a
+    // run stopped early on a numerical failure: its figures are those up to the failure).
     int run() const;
 
 private:

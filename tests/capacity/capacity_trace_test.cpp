@@ -8,6 +8,19 @@ using graspsim::capacity::CapacitySample;
 using graspsim::capacity::findCapacityFigures;
 using graspsim::capacity::SlipCriteria;
 
+namespace {
+
+CapacitySample makeSample(double time, double load, double slip, bool held = true) {
+    CapacitySample s;
+    s.time = time;
+    s.load = load;
+    s.slip = slip;
+    s.held = held;
+    return s;
+}
+
+}  // namespace
+
 // Slip growing as (t - 1)^2 for t > 1 under a load 10 t: onset where (t - 1)^2 = 2 mm, drop where
 // it reaches 20 mm. Between samples the slip is interpolated linearly, so with 1 ms samples the
 // crossing times are exact to the chord's error (< 1e-4 s here).
@@ -15,7 +28,7 @@ TEST(CapacityTrace, SlipOnsetAndDropAreTheThresholdCrossings) {
     std::vector<CapacitySample> samples;
     for (int k = 0; k <= 2000; ++k) {
         const double t = 1e-3 * k;
-        samples.push_back({t, 10 * t, t > 1 ? (t - 1) * (t - 1) : 0.0, true});
+        samples.push_back(makeSample(t, 10 * t, t > 1 ? (t - 1) * (t - 1) : 0.0));
     }
     const auto f = findCapacityFigures(samples, SlipCriteria{});
     ASSERT_TRUE(f.slipped);
@@ -27,7 +40,7 @@ TEST(CapacityTrace, SlipOnsetAndDropAreTheThresholdCrossings) {
 }
 
 TEST(CapacityTrace, NoSlipBelowTheThreshold) {
-    const std::vector<CapacitySample> samples{{0, 0, 0, true}, {1, 5, 0.0019, true}};
+    const std::vector<CapacitySample> samples{makeSample(0, 0, 0), makeSample(1, 5, 0.0019)};
     const auto f = findCapacityFigures(samples, SlipCriteria{});
     EXPECT_FALSE(f.slipped);
     EXPECT_FALSE(f.dropped);
@@ -35,11 +48,27 @@ TEST(CapacityTrace, NoSlipBelowTheThreshold) {
 
 // A grasp that lets go (held false) drops there, and counts as slipped at that load if it had not.
 TEST(CapacityTrace, LosingTheGraspIsADrop) {
-    const std::vector<CapacitySample> samples{{0, 0, 0, true}, {1, 5, 0.001, true}, {2, 10, 0.0015, false}};
+    const std::vector<CapacitySample> samples{makeSample(0, 0, 0), makeSample(1, 5, 0.001), makeSample(2, 10, 0.0015, false)};
     const auto f = findCapacityFigures(samples, SlipCriteria{});
     ASSERT_TRUE(f.dropped);
     EXPECT_EQ(f.dropLoad, 10);
     EXPECT_EQ(f.dropTime, 2);
     ASSERT_TRUE(f.slipped);
     EXPECT_EQ(f.slipOnsetLoad, 10);
+}
+
+// The approximation's release is the first sample where it is no longer engaged.
+TEST(CapacityTrace, TheReleaseIsTheFirstSampleNoLongerEngaged) {
+    std::vector<CapacitySample> samples{makeSample(0, 0, 0), makeSample(1, 5, 0.001), makeSample(2, 10, 0.001),
+                                        makeSample(3, 15, 0.001)};
+    samples[0].engaged = samples[1].engaged = 1;
+    samples[2].engaged = 0;
+    samples[3].engaged = 1;  // engaged again: not a second first release
+    const auto f = findCapacityFigures(samples, SlipCriteria{});
+    ASSERT_TRUE(f.released);
+    EXPECT_EQ(f.releaseLoad, 10);
+    EXPECT_EQ(f.releaseTime, 2);
+    samples[2].engaged = -1;  // full mode: no approximation, nothing released
+    samples[0].engaged = samples[1].engaged = samples[3].engaged = -1;
+    EXPECT_FALSE(findCapacityFigures(samples, SlipCriteria{}).released);
 }

@@ -53,6 +53,9 @@ struct CapacityTrace {
     std::vector<CapacitySample> samples;
     CapacityFigures figures;
     std::string releaseReason;  ///< LoadedRun::findReleaseReason at the end of the ramp
+    /// Why the run stopped early ("" if it did not): a numerical failure of the scene's integrator.
+    /// The samples before it are kept and the figures read from them.
+    std::string failure;
 };
 
 /// Runs the ramp on a scene made by `makeRun`.

@@ -41,7 +41,8 @@ double findDefaultRate(const scenario::Scenario& scenario, bool torque);
 /// When the load starts (s): settle_time + kLoadStartDelay.
 double findLoadStart(const scenario::Scenario& scenario);
 
-/// A factory of loaded grasp runs (GraspScene + its stepper) for runRamp / runBisection.
+/// A factory of loaded grasp runs (GraspScene + its stepper) for runRamp / runBisection. It refers
+/// to `scenario`, which must outlive it.
 /// In approx mode a run throws graspsim::NumericalError if the approximation is not engaged when the
 /// load starts.
 LoadedRunFactory makeGraspRuns(const scenario::Scenario& scenario, const simulation::SimulationOptions& options);
