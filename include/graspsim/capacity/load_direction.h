@@ -3,7 +3,7 @@
 /// The direction of a capacity load as a user writes it: an axis of G (x, y, z, -x, -y, -z) or a
 /// vector of three numbers ("0,-1,0" or "0 -1 0"), normalized.
 
-#include <simbody/Simbody.h>
+#include "graspsim/simbody.h"
 
 #include <string>
 #include <vector>

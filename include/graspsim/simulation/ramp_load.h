@@ -3,7 +3,7 @@
 /// A load on a body that grows linearly in time: the holding-capacity protocol's pull
 /// (capacity/grasp_capacity.h), and with a zero rate its constant-load cross-check.
 
-#include <simbody/Simbody.h>
+#include "graspsim/simbody.h"
 
 namespace graspsim::simulation {
 
