@@ -146,11 +146,11 @@ int SimulateCommand::run() const {
     const simulation::SimulationResult result = simulation::runGraspSimulation(scenario, options, makeProgress());
     results::writeResultFiles(o.out, result);
     const simulation::SimulationSummary& s = result.summary;
-    std::cout << scenario.name << " (" << s.contact << ", " << s.mode << ", perturbation " << s.perturbation
+    std::cout << scenario.name << " (" << simulation::toString(s.contact) << ", " << simulation::toString(s.mode) << ", perturbation " << s.perturbation
               << "): " << s.simTime << " s simulated in " << s.wallTime << " s, " << s.steps << " steps, held "
               << (s.held ? "yes" : "no") << ", object moved " << s.objectDisplacement * 1000 << " mm after settling; "
               << "results in " << o.out << "\n";
-    if (s.mode == "approx") {
+    if (s.mode == simulation::SimulationMode::Approx) {
         std::cout << "approximation (" << simulation::toString(options.approx.constraint) << ", "
                   << simulation::toString(options.approx.attach) << "): " << (s.engaged ? "engaged at t = " + std::to_string(s.engageTime) + " s" : "never engaged")
                   << ", " << result.events.size() << " switch event(s) in events.csv\n";

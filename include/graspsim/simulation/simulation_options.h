@@ -59,7 +59,8 @@ struct ApproxOptions {
     /// spots they pressed into.
     double releaseSlideDistance = 0.005;
     /// Bound on the growth of the fingertips' penetration while engaged from the bushing's elastic
-    /// deflection (m; issue 4: no visible interpenetration, <= 0.1 mm). On engagement the bushing
+    /// deflection (m; the thesis's conclusion names fingertips sinking into the object as the
+    /// approximation's visible flaw: 0.1 mm is not visible). On engagement the bushing
     /// is stiffened so that its deflection at the friction limits stays within it (grasp_switch.h).
     double maxEngagedPenetration = 1e-4;
     /// The constraint realization. Default bushing (the first one built; results measured so far
