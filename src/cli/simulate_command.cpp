@@ -6,7 +6,6 @@
 #include "graspsim/results/result_files.h"
 #include "graspsim/scenario/scenario_file.h"
 #include "graspsim/simulation/grasp_simulation.h"
-#include "graspsim/simulation/multi_attachment_switch.h"
 
 #include <unistd.h>
 

@@ -3,7 +3,6 @@
 #include "graspsim/error.h"
 #include "graspsim/model/body_model.h"
 #include "graspsim/simulation/grasp_switch.h"
-#include "graspsim/simulation/multi_attachment_switch.h"
 
 #include <algorithm>
 #include <cmath>

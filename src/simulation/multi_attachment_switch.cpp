@@ -65,22 +65,6 @@ grasp::FingerLoad calcFingerLoad(const std::vector<const contact::ContactReport*
 
 }  // namespace
 
-void checkApproxAttach(const scenario::Scenario& scenario, const SimulationOptions& options) {
-    if (options.mode != SimulationMode::Approx || options.approx.attach != ApproxAttach::Multi) return;
-    if (options.approx.constraint != ApproxConstraint::Bushing) {
-        throw InputError("--attach: 'multi' is not available with --constraint " + toString(options.approx.constraint) +
-                         " (its parts are friction-limited bushings); use --constraint bushing or --attach merged");
-    }
-    const model::ModelDescription d = model::buildBodyModel(scenario.bodyOptions);
-    for (const auto& [endEffector, goal] : scenario.goals) {
-        const model::EndEffector* e = d.findEndEffector(endEffector);
-        const model::Body* body = e ? d.findBody(e->body) : nullptr;
-        if (body && !body->geometry.empty()) continue;
-        throw InputError("--attach: 'multi' is not accepted for scenario '" + scenario.name + "': goal end-effector '" +
-                         endEffector + "' is on a body without contact geometry; use --attach merged");
-    }
-}
-
 MultiAttachmentSwitch::MultiAttachmentSwitch(const GraspScene& scene, double slideLimit, double penetrationBound)
     : scene_(scene), slideLimit_(slideLimit), penetrationBound_(penetrationBound) {
     const model::ModelDescription& d = scene.getModel().getDescription();

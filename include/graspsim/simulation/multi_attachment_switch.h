@@ -52,11 +52,6 @@ namespace graspsim::simulation {
 class GraspScene;
 struct GraspEvent;
 
-/// Whether the scene of `scenario` supports `options.approx.attach` in approx mode: multi needs
-/// the bushing realization, and every goal end-effector on a body with contact geometry.
-/// Call before anything is written. @throws graspsim::InputError naming --attach otherwise.
-void checkApproxAttach(const scenario::Scenario& scenario, const SimulationOptions& options);
-
 /// The multi variant's engage / detach / release steps (see the file comment). Used by GraspSwitch.
 class MultiAttachmentSwitch {
 public:

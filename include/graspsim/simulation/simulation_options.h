@@ -6,6 +6,10 @@
 #include <optional>
 #include <string>
 
+namespace graspsim::scenario {
+struct Scenario;
+}
+
 namespace graspsim::simulation {
 
 /// How finger-object contact is modelled.
@@ -103,5 +107,10 @@ std::string toString(SimulationMode mode);
 /// Parses "merged" or "multi". @throws graspsim::InputError naming `source`, the value and the choices.
 ApproxAttach parseApproxAttach(const std::string& text, const std::string& source);
 std::string toString(ApproxAttach attach);
+
+/// Whether the scene of `scenario` supports `options.approx.attach` in approx mode: multi needs
+/// the bushing realization, and every goal end-effector on a body with contact geometry.
+/// Call before anything is written. @throws graspsim::InputError naming --attach otherwise.
+void checkApproxAttach(const scenario::Scenario& scenario, const SimulationOptions& options);
 
 }  // namespace graspsim::simulation
