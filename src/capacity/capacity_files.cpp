@@ -22,8 +22,8 @@ Json formatMeasurement(const GraspCapacity& c) {
     j["direction_vector"] = {c.direction[0] + 0.0, c.direction[1] + 0.0, c.direction[2] + 0.0};  // no -0
     j["load"] = c.torque ? "torque" : "force";
     j["method"] = c.method;
-    j["contact"] = c.contact;
-    j["mode"] = c.mode;
+    j["contact"] = simulation::toString(c.contact);
+    j["mode"] = simulation::toString(c.mode);
     j["realization"] = c.realization.empty() ? Json(nullptr) : Json(c.realization);
     j["load_start_s"] = c.start;
     const bool ramp = c.method == "ramp";
@@ -35,7 +35,7 @@ Json formatMeasurement(const GraspCapacity& c) {
     j["drop_" + unit] = valueOrNull(ramp && f.dropped, f.dropLoad);
     j["slip_onset_time_s"] = valueOrNull(ramp && f.slipped, f.slipOnsetTime);
     j["drop_time_s"] = valueOrNull(ramp && f.dropped, f.dropTime);
-    if (c.mode == "approx") {
+    if (c.mode == simulation::SimulationMode::Approx) {
         j["release_" + unit] = valueOrNull(ramp && f.released, f.releaseLoad);
         j["release_time_s"] = valueOrNull(ramp && f.released, f.releaseTime);
         j["release_reason"] = c.trace.releaseReason.empty() ? Json(nullptr) : Json(c.trace.releaseReason);

@@ -72,7 +72,7 @@ public:
         const simulation::GraspSwitch* grasp = scene_.getGraspSwitch();
         if (!grasp) return {};
         for (const simulation::GraspEvent& e : grasp->getEvents()) {
-            if (e.kind == "release") return "t = " + std::to_string(e.time) + " s: " + e.reason;
+            if (e.kind == simulation::GraspEventKind::Release) return "t = " + std::to_string(e.time) + " s: " + e.reason;
         }
         return {};
     }
@@ -130,8 +130,8 @@ GraspCapacity makeHeader(const simulation::SimulationOptions& options, const Gra
     c.direction = request.direction;
     c.torque = request.torque;
     c.method = method;
-    c.contact = simulation::toString(options.contact);
-    c.mode = simulation::toString(options.mode);
+    c.contact = options.contact;
+    c.mode = options.mode;
     if (options.mode == simulation::SimulationMode::Approx) {
         c.realization = simulation::toString(options.approx.constraint) + " " + simulation::toString(options.approx.attach);
     }

@@ -167,7 +167,7 @@ int CapacityCommand::run() const {
     }
     if (!o.out.empty()) capacity::writeCapacityFiles(o.out, scenario.name, measurements);
     const capacity::GraspCapacity& first = measurements.front();
-    std::string last = "capacity of " + scenario.name + " (" + first.contact + ", " + first.mode +
+    std::string last = "capacity of " + scenario.name + " (" + simulation::toString(first.contact) + ", " + simulation::toString(first.mode) +
                        (first.realization.empty() ? "" : ", " + first.realization) + "): ";
     for (std::size_t k = 0; k < measurements.size(); ++k) last += (k ? "; " : "") + capacity::describeCapacity(measurements[k]);
     std::cout << last << (o.out.empty() ? "" : "; files in " + o.out) << "\n";

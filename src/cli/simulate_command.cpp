@@ -8,7 +8,6 @@
 #include "graspsim/results/result_folder.h"
 #include "graspsim/scenario/scenario_file.h"
 #include "graspsim/simulation/grasp_simulation.h"
-#include "graspsim/simulation/multi_attachment_switch.h"
 #include "graspsim/viewer/replay_page.h"
 
 #include <cmath>
@@ -191,11 +190,11 @@ int SimulateCommand::run(const std::vector<std::string>& commandLine) const {
     opensim::writeOpenSimResultFiles(o.out, result);
     const simulation::SimulationSummary& s = result.summary;
     if (o.view) std::cout << "replay written to " << viewer::writeReplayPage(o.out) << ": open it in a web browser\n";
-    std::cout << scenario.name << " (" << s.contact << ", " << s.mode << ", perturbation " << s.perturbation
+    std::cout << scenario.name << " (" << simulation::toString(s.contact) << ", " << simulation::toString(s.mode) << ", perturbation " << s.perturbation
               << "): " << s.simTime << " s simulated in " << s.wallTime << " s, " << s.steps << " steps, held "
               << (s.held ? "yes" : "no") << ", object moved " << s.objectDisplacement * 1000 << " mm after settling; "
               << "results in " << o.out << "\n";
-    if (s.mode == "approx") {
+    if (s.mode == simulation::SimulationMode::Approx) {
         std::cout << "approximation (" << simulation::toString(options.approx.constraint) << ", "
                   << simulation::toString(options.approx.attach) << "): " << (s.engaged ? "engaged at t = " + std::to_string(s.engageTime) + " s" : "never engaged")
                   << ", " << result.events.size() << " switch event(s) in events.csv\n";

@@ -75,6 +75,7 @@ public:
           damping_(damping) {}
 
     const SimTK::Vec6& getStiffness() const { return stiffness_; }
+    const SimTK::MobilizedBody& getBodyO() const { return bodyO_; }
     const SimTK::Vec6& getDamping() const { return damping_; }
     double getSlipOnsetWidth() const { return onsetWidth_; }
     void setSlipOnsetWidth(double width) { onsetWidth_ = width; }
@@ -439,6 +440,40 @@ SimTK::SpatialVec LimitedBushing::findWrench(const SimTK::State& state) const {
 }
 bool LimitedBushing::isSliding(const SimTK::State& state, BushingAxis axis) const {
     return asBushingImpl(getImplementation()).isSliding(state, toIndex(axis));
+}
+
+// Order matters: enable (Instance), anchor at the current pose, then stiffness and limits, which
+// move the anchor if the (zero) displacement were over them.
+void LimitedBushing::engage(SimTK::State& state, const AttachmentEngagement& engagement) const {
+    const SimTK::MobilizedBody& bodyO = asBushingImpl(getImplementation()).getBodyO();
+    const SimTK::System& system = bodyO.getMatterSubsystem().getSystem();
+    setFrames(state, engagement.X_HF, engagement.X_OM);
+    setEnabled(state, true);
+    system.realize(state, SimTK::Stage::Position);
+    resetAnchor(state);
+    const SimTK::MassProperties mp = bodyO.getBody().getDefaultRigidBodyMassProperties();
+    const SimTK::Vec3 I = mp.calcCentralInertia().getMoments();
+    const SimTK::Vec6 stiffness =
+        calcStiffnessForBound(getStiffness(), engagement.limits, engagement.leverArm, engagement.penetrationBound);
+    SimTK::Vec6 damping;
+    for (int k = 0; k < 3; ++k) {
+        damping[k] = 2 * std::sqrt(stiffness[k] * I[k]);
+        damping[k + 3] = 2 * std::sqrt(stiffness[k + 3] * mp.getMass());
+    }
+    setStiffness(state, stiffness, damping);
+    setLimits(state, engagement.limits);
+    for (int k = 0; k < 6; ++k) setAxisLocked(state, static_cast<BushingAxis>(k), engagement.lockedAxes[k]);
+    system.realize(state, SimTK::Stage::Position);
+}
+
+SimTK::SpatialVec LimitedBushing::findReactionOnObject(const SimTK::State& state) const {
+    const SimTK::MobilizedBody& bodyO = asBushingImpl(getImplementation()).getBodyO();
+    return shiftToObjectOrigin(findWrench(state), bodyO.getBodyTransform(state).R(), getFrameOnO(state).p());
+}
+
+std::optional<SingleConstraintState> LimitedBushing::findSingleConstraintState(const SimTK::State& state) const {
+    if (!isEngaged(state)) return std::nullopt;
+    return SingleConstraintState{getFrameOnO(state), findEffectiveLimits(state), findGeneralizedForce(state), findWrench(state)};
 }
 
 }  // namespace graspsim::grasp

@@ -347,6 +347,18 @@ const SimTK::Transform& LimitedWeld::findEngagedTransform(const SimTK::State& st
 
 SimTK::Transform LimitedWeld::findTransform(const SimTK::State& state) const { return elements_->findX_FM(state); }
 
+void LimitedWeld::engage(SimTK::State& state, const AttachmentEngagement& engagement) const {
+    setFrames(state, engagement.X_HF, engagement.X_OM);
+    setLimits(state, engagement.limits);
+    for (int k = 0; k < 6; ++k) setAxisLocked(state, static_cast<WeldAxis>(k), engagement.lockedAxes[k]);
+    setEnabled(state, true);  // last: axes over their limits start sliding at once
+    system_.realize(state, SimTK::Stage::Position);
+}
+
+SimTK::SpatialVec LimitedWeld::findReactionOnObject(const SimTK::State& state) const {
+    return shiftToObjectOrigin(findWrench(state), bodyO_.getBodyTransform(state).R(), getFrameOnO(state).p());
+}
+
 // The constraint's multiplier, or what it would be (minus the reaction) while the lock holds.
 double LimitedWeld::findMultiplier(const SimTK::State& state, int axis) const {
     if (isHeldByLock(state)) return -elements_->findLockReaction(state)[axis];
@@ -423,6 +435,11 @@ void LimitedWeld::releaseOverloadedAxes(SimTK::State& state) const {
     const bool allStuck = std::all_of(direction.begin(), direction.end(), [](int d) { return d == 0; });
     if (lockable_ && allStuck && !isHeldByLock(state)) holdByLock(state);
     system_.realize(state, SimTK::Stage::Acceleration);
+}
+
+std::optional<SingleConstraintState> LimitedWeld::findSingleConstraintState(const SimTK::State& state) const {
+    if (!isEngaged(state)) return std::nullopt;
+    return SingleConstraintState{getFrameOnO(state), findEffectiveLimits(state), findGeneralizedForce(state), findWrench(state)};
 }
 
 }  // namespace graspsim::grasp

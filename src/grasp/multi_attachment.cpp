@@ -1,6 +1,9 @@
 #include "graspsim/grasp/multi_attachment.h"
 
 #include "graspsim/error.h"
+#include "graspsim/grasp/limited_bushing_law.h"
+
+#include <cmath>
 
 #include <string>
 
@@ -105,6 +108,48 @@ double MultiAttachment::findPressingForce(const SimTK::State& state, int i) cons
 
 double MultiAttachment::findSlide(const SimTK::State& state, int i) const {
     return (getPart(i).findAnchorTransform(state).p() - p_FA_attached_[static_cast<std::size_t>(i)]).norm();
+}
+
+void MultiAttachment::engage(SimTK::State& state, const AttachmentEngagement& engagement) const {
+    if (engagement.fingers.size() != parts_.size()) {
+        throw InputError("multi attachment: " + std::to_string(engagement.fingers.size()) + " finger loads for " +
+                         std::to_string(getNumParts()) + " parts (one per part is needed)");
+    }
+    for (int i = 0; i < getNumParts(); ++i) {
+        const FingerLoad& load = engagement.fingers[static_cast<std::size_t>(i)];
+        stiffenPart(state, i, load, engagement.mu, engagement.penetrationBound);
+        attach(state, i, load, engagement.mu);
+    }
+}
+
+// As the palm bushing's (LimitedBushing::engage): the elastic displacement under the part's largest
+// expected load stays within penetrationBound / (2 sqrt 3) per axis. The loads: its friction limits
+// on the tangent and rotation axes, and on the locked normal axis its pressing force at attachment.
+void MultiAttachment::stiffenPart(SimTK::State& state, int i, const FingerLoad& load, double mu,
+                                  double penetrationBound) const {
+    const LimitedBushing& part = getPart(i);
+    const double tangent = mu * load.normalForce, moment = mu * load.armRadius * load.normalForce;
+    const SimTK::Vec6 loads(moment, moment, moment, tangent, tangent, load.normalForce);  // z: the object's normal
+    const SimTK::Vec6 stiffness = calcStiffnessForBound(part.getStiffness(), loads, load.armRadius, penetrationBound);
+    SimTK::Vec6 damping = part.getDamping();
+    for (int k = 0; k < 6; ++k) damping[k] *= std::sqrt(stiffness[k] / part.getStiffness()[k]);
+    part.setStiffness(state, stiffness, damping);
+}
+
+SimTK::SpatialVec MultiAttachment::findReactionOnObject(const SimTK::State& state) const {
+    const SimTK::Rotation& R_GO = object_.getBodyTransform(state).R();
+    SimTK::SpatialVec W(SimTK::Vec3(0), SimTK::Vec3(0));
+    for (const LimitedBushing& part : parts_) {
+        if (part.isEnabled(state)) W += shiftToObjectOrigin(part.findWrench(state), R_GO, part.getFrameOnO(state).p());
+    }
+    return W;
+}
+
+bool MultiAttachment::isSliding(const SimTK::State& state, BushingAxis axis) const {
+    for (const LimitedBushing& part : parts_) {
+        if (part.isSliding(state, axis)) return true;
+    }
+    return false;
 }
 
 }  // namespace graspsim::grasp

@@ -86,8 +86,8 @@ nlohmann::ordered_json formatIntegratorStatistics(const integration::Integration
 std::string formatSummaryJson(const simulation::SimulationSummary& s) {
     nlohmann::ordered_json j;
     j["scenario"] = s.scenario;
-    j["contact"] = s.contact;
-    j["mode"] = s.mode;
+    j["contact"] = simulation::toString(s.contact);
+    j["mode"] = simulation::toString(s.mode);
     j["perturbation"] = s.perturbation;
     j["complete"] = s.complete;
     if (!s.complete) j["failure"] = s.failure;
@@ -109,8 +109,8 @@ std::string formatSummaryJson(const simulation::SimulationSummary& s) {
     j["full_wall_s_per_sim_s"] = s.fullWallPerSimSecond;
     j["integrator"] = s.integrator;
     j["integrator_statistics"] = formatIntegratorStatistics(s.integratorStatistics);
-    if (s.mode != "approx") return j.dump(2) + "\n";
-    j["constraint"] = s.constraint;
+    if (s.mode != simulation::SimulationMode::Approx) return j.dump(2) + "\n";
+    j["constraint"] = simulation::toString(s.constraint);
     j["engaged"] = s.engaged;
     j["engage_time_s"] = s.engaged ? nlohmann::ordered_json(s.engageTime) : nlohmann::ordered_json(nullptr);
     j["release_time_s"] = s.releaseTime >= 0 ? nlohmann::ordered_json(s.releaseTime) : nlohmann::ordered_json(nullptr);
@@ -138,7 +138,7 @@ std::string formatEventsCsv(const simulation::SimulationResult& result) {
         char time[32];
         std::snprintf(time, sizeof time, "%.17g", e.time);
         // The reason is free text with commas: quote it (RFC 4180; it contains no quotes).
-        out << time << ',' << e.kind << row.str() << ",\"" << e.reason << "\"\n";
+        out << time << ',' << simulation::toString(e.kind) << row.str() << ",\"" << e.reason << "\"\n";
     }
     return out.str();
 }
@@ -168,7 +168,7 @@ void writeResultFiles(const std::string& folder, const simulation::SimulationRes
     io::writeFileAtomically(folder + "/trajectory.csv", formatTrajectoryCsv(result));
     io::writeFileAtomically(folder + "/contacts.csv", formatContactsCsv(result));
     io::writeFileAtomically(folder + "/summary.json", formatSummaryJson(result.summary));
-    if (result.summary.mode != "approx") return;
+    if (result.summary.mode != simulation::SimulationMode::Approx) return;
     io::writeFileAtomically(folder + "/events.csv", formatEventsCsv(result));
     io::writeFileAtomically(folder + "/constraint.csv", formatConstraintCsv(result));
 }

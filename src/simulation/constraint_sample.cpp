@@ -5,26 +5,17 @@
 namespace graspsim::simulation {
 
 std::optional<ConstraintSample> findConstraintSample(const GraspScene& scene, const SimTK::State& state) {
-    if (!scene.getGraspSwitch() || scene.getMultiAttachment()) return std::nullopt;
-    const grasp::LimitedWeld* weld = scene.getWeld();
-    const grasp::LimitedBushing& bushing = scene.getBushing();
-    const bool engaged = weld ? weld->isEnabled(state) : (!bushing.isEmptyHandle() && bushing.isEnabled(state));
-    if (!engaged) return std::nullopt;
-    scene.getSystem().realize(state, SimTK::Stage::Acceleration);
+    const grasp::GraspAttachment* attachment = scene.getAttachment();
+    if (!scene.getGraspSwitch() || !attachment || !attachment->isEngaged(state)) return std::nullopt;
+    scene.getSystem().realize(state, attachment->getReactionStage());
+    const std::optional<grasp::SingleConstraintState> c = attachment->findSingleConstraintState(state);
+    if (!c) return std::nullopt;
     ConstraintSample sample;
     sample.time = state.getTime();
-    const SimTK::Transform& X_GO = scene.getObject().getBodyTransform(state);
-    if (weld) {
-        sample.X_GM = X_GO * weld->getFrameOnO(state);
-        sample.limits = weld->findEffectiveLimits(state);
-        sample.reaction = weld->findGeneralizedForce(state);
-        sample.wrench_G = weld->findWrench(state);
-    } else {
-        sample.X_GM = X_GO * bushing.getFrameOnO(state);
-        sample.limits = bushing.findEffectiveLimits(state);
-        sample.reaction = bushing.findGeneralizedForce(state);
-        sample.wrench_G = bushing.findWrench(state);
-    }
+    sample.X_GM = scene.getObject().getBodyTransform(state) * c->X_OM;
+    sample.limits = c->limits;
+    sample.reaction = c->reaction;
+    sample.wrench_G = c->wrench_G;
     return sample;
 }
 

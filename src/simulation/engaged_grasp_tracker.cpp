@@ -42,23 +42,13 @@ void EngagedGraspTracker::capture(const SimTK::State& state, const std::vector<c
 }
 
 // The constraint's wrench on the object with its moment taken about O's origin (the centre of
-// mass), where the grasp quality takes moments.
+// mass), where the grasp quality takes moments. A weld's reaction is a Lagrange multiplier
+// (Acceleration), a bushing's a force of the state (Velocity): realizing only what the attachment
+// needs spares a forward-dynamics solve per check.
 SimTK::SpatialVec EngagedGraspTracker::findConstraintWrench(const SimTK::State& state) const {
-    // The weld's reaction is a Lagrange multiplier (Acceleration); the bushing's is a force of
-    // the state (Velocity), and a forward-dynamics solve per check would be wasted.
-    scene_.getSystem().realize(state, scene_.getWeld() ? SimTK::Stage::Acceleration : SimTK::Stage::Velocity);
-    const SimTK::Transform& X_GO = scene_.getObject().getBodyTransform(state);
-    SimTK::SpatialVec W_M;
-    SimTK::Vec3 p_OM;
-    if (const grasp::LimitedWeld* weld = scene_.getWeld()) {
-        W_M = weld->findWrench(state);
-        p_OM = weld->getFrameOnO(state).p();
-    } else {
-        W_M = scene_.getBushing().findWrench(state);
-        p_OM = scene_.getBushing().getFrameOnO(state).p();
-    }
-    const SimTK::Vec3 p_OM_G = X_GO.R() * p_OM;
-    return SimTK::SpatialVec(W_M[0] + p_OM_G % W_M[1], W_M[1]);
+    const grasp::GraspAttachment& attachment = *scene_.getAttachment();
+    scene_.getSystem().realize(state, attachment.getReactionStage());
+    return attachment.findReactionOnObject(state);
 }
 
 double EngagedGraspTracker::calcQuality(const SimTK::State& state) const {

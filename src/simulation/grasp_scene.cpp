@@ -3,7 +3,6 @@
 #include "graspsim/error.h"
 #include "graspsim/model/body_model.h"
 #include "graspsim/simulation/grasp_switch.h"
-#include "graspsim/simulation/multi_attachment_switch.h"
 
 #include <algorithm>
 #include <cmath>
@@ -174,12 +173,14 @@ void GraspScene::addBushing() {
     }
     bushing_ = grasp::LimitedBushing(model_.updForces(), getPalm(), SimTK::Transform(), object_, SimTK::Transform(),
                                      stiffness, damping);
+    attachment_ = &bushing_;
 }
 
 // Rigid: no stiffness to choose; the limits are set by the switch on engagement.
 void GraspScene::addWeld() {
     weld_ = std::make_unique<grasp::LimitedWeld>(model_.updSystem(), model_.updMatter(), model_.updForces(), getPalm(),
                                                  SimTK::Transform(), object_, SimTK::Transform());
+    attachment_ = weld_.get();
 }
 
 // One part per goal, at the goal on the surface, normal outward, x along gravity's tangent part (the
@@ -190,9 +191,9 @@ void GraspScene::addMultiAttachment() {
     const SimTK::Rotation R_OG = ~toTransform(scenario_.object.findPose()).R();
     const SimTK::Vec3 g_O = R_OG * toVec3(scenario_.world.gravity);
     std::vector<grasp::AttachmentSite> sites;
-    for (const auto& [endEffector, p_OG] : scenario_.goals) {
-        const model::Vec3 n = scenario_.object.findOutwardNormal(p_OG);
-        sites.push_back({model_.getMobilizedBody(d.findEndEffector(endEffector)->body), toVec3(p_OG),
+    for (const auto& [endEffector, p_OT] : scenario_.goals) {
+        const model::Vec3 n = scenario_.object.findOutwardNormal(p_OT);
+        sites.push_back({model_.getMobilizedBody(d.findEndEffector(endEffector)->body), toVec3(p_OT),
                          SimTK::UnitVec3(toVec3(n)), g_O});
     }
     const SimTK::MassProperties mp = object_.getBody().getDefaultRigidBodyMassProperties();
@@ -206,6 +207,7 @@ void GraspScene::addMultiAttachment() {
         damping[k + 3] = 2 * mp.getMass() * w / parts;
     }
     multi_ = std::make_unique<grasp::MultiAttachment>(model_.updForces(), object_, sites, stiffness, damping);
+    attachment_ = multi_.get();
 }
 
 const SimTK::MobilizedBody& GraspScene::getPalm() const { return model_.getMobilizedBody(kPalm); }
@@ -227,10 +229,10 @@ void GraspScene::addController(const SimulationOptions& options) {
     pd_ = std::make_unique<control::JointPdController>(model_, joints, armBodies);
 
     std::vector<std::string> ikJoints;
-    for (const auto& [endEffector, p_OG] : scenario_.goals) {
+    for (const auto& [endEffector, p_OT] : scenario_.goals) {
         for (const std::string& j : findFingerJoints(d, endEffector)) ikJoints.push_back(j);
         goalEndEffectors_.push_back(endEffector);
-        surfaceGoals_.push_back(toVec3(p_OG));
+        surfaceGoals_.push_back(toVec3(p_OT));
     }
     model_.realizeTopology();  // Simbody's Assembler (inside the IK) needs a realized topology
     ik_ = std::make_unique<control::FingertipIk>(model_, goalEndEffectors_, ikJoints);
@@ -258,19 +260,18 @@ SimTK::State GraspScene::makeInitialState() {
     }
     pd_->setTargets(state, targets);
     placeObject(state);
-    if (!bushing_.isEmptyHandle()) bushing_.setEnabled(state, false);
-    if (multi_) multi_->detachAll(state);  // contact holds the object until the switch engages
+    if (attachment_) attachment_->release(state);  // contact holds the object until the switch engages
     model_.getSystem().realize(state, SimTK::Stage::Position);
-    // The goals: the scenario's points on the object, pressed in along the inward normal, as they
+    // The goals T: the scenario's points on the object, pressed in along the inward normal, as they
     // sit in the palm frame now that hand and object are in place.
-    const SimTK::Transform X_PG = ~model_.getMobilizedBody(kPalm).getBodyTransform(state);
+    const SimTK::Transform X_HG = ~model_.getMobilizedBody(kPalm).getBodyTransform(state);
     const SimTK::Transform& X_GO = object_.getBodyTransform(state);
     std::vector<control::FingertipGoal> goals;
     for (std::size_t k = 0; k < goalEndEffectors_.size(); ++k) {
         const SimTK::Vec3& onSurface = surfaceGoals_[k];
         const model::Vec3 n_O = scenario_.object.findOutwardNormal({onSurface[0], onSurface[1], onSurface[2]});
-        const SimTK::Vec3 p_OG = onSurface - scenario_.controller.pressDepth * toVec3(n_O);
-        goals.push_back({goalEndEffectors_[k], X_PG * (X_GO * p_OG)});
+        const SimTK::Vec3 p_OT = onSurface - scenario_.controller.pressDepth * toVec3(n_O);
+        goals.push_back({goalEndEffectors_[k], X_HG * (X_GO * p_OT)});
     }
     controller_->setGoals(goals);
     controller_->updateTargets(state);

@@ -89,8 +89,17 @@ void checkFinite(const SimTK::State& s, const std::string& lastEvent) {
     throw NumericalError("non-finite state at t = " + std::to_string(s.getTime()) + " s (last event: " + lastEvent + ")");
 }
 
-// Wall time and integrator steps per phase of the run, split at output samples: 0 object held,
-// 1 full contact (from the release to the first engagement), 2 the first engagement, 3 after it.
+// The phases of a run the timer tells apart, in the order a run goes through them.
+enum class RunPhase {
+    Held,             // the object held at its initial pose
+    FullContact,      // from its release to the first engagement
+    FirstEngagement,  // the approximation's first engagement
+    AfterEngagement   // after its first release
+};
+constexpr int kRunPhases = 4;
+constexpr int toIndex(RunPhase phase) { return static_cast<int>(phase); }
+
+// Wall time and integrator steps per phase of the run, split at output samples.
 class PhaseTimer {
 public:
     explicit PhaseTimer(const GraspScene& scene) : scene_(scene) {}
@@ -98,9 +107,9 @@ public:
     void mark(const SimTK::State& s, long steps) {
         const double now = std::chrono::duration<double>(Clock::now().time_since_epoch()).count();
         const long taken = steps - lastSteps_;
-        seconds_[phase_] += now - lastWall_;
-        simSeconds_[phase_] += s.getTime() - lastTime_;
-        steps_[phase_] += taken;
+        seconds_[toIndex(phase_)] += now - lastWall_;
+        simSeconds_[toIndex(phase_)] += s.getTime() - lastTime_;
+        steps_[toIndex(phase_)] += taken;
         lastTime_ = s.getTime();
         totalSteps_ += taken;
         lastWall_ = now;
@@ -113,29 +122,35 @@ public:
         phase_ = std::max(phase_, findPhase(s));
     }
     long getTotalSteps() const { return totalSteps_; }
-    double findUsPerStep(int phase) const { return steps_[phase] > 0 ? 1e6 * seconds_[phase] / steps_[phase] : 0; }
+    double findUsPerStep(RunPhase phase) const {
+        const int k = toIndex(phase);
+        return steps_[k] > 0 ? 1e6 * seconds_[k] / steps_[k] : 0;
+    }
     /// Wall-clock seconds per simulated second of `phase`.
-    double findWallPerSimSecond(int phase) const { return simSeconds_[phase] > 0 ? seconds_[phase] / simSeconds_[phase] : 0; }
-    long getSteps(int phase) const { return steps_[phase]; }
+    double findWallPerSimSecond(RunPhase phase) const {
+        const int k = toIndex(phase);
+        return simSeconds_[k] > 0 ? seconds_[k] / simSeconds_[k] : 0;
+    }
+    long getSteps(RunPhase phase) const { return steps_[toIndex(phase)]; }
 
 private:
-    int findPhase(const SimTK::State& s) const {
-        if (scene_.isObjectHeld(s)) return 0;
+    RunPhase findPhase(const SimTK::State& s) const {
+        if (scene_.isObjectHeld(s)) return RunPhase::Held;
         const GraspSwitch* grasp = scene_.getGraspSwitch();
-        if (!grasp || grasp->getEvents().empty()) return 1;
+        if (!grasp || grasp->getEvents().empty()) return RunPhase::FullContact;
         const auto& events = grasp->getEvents();
-        const bool released = std::any_of(events.begin(), events.end(), [](const GraspEvent& e) { return e.kind == "release"; });
-        return grasp->isEngaged(s) && !released ? 2 : 3;  // detach events (multi) keep the first engagement
+        const bool released = std::any_of(events.begin(), events.end(), [](const GraspEvent& e) { return e.kind == GraspEventKind::Release; });
+        return grasp->isEngaged(s) && !released ? RunPhase::FirstEngagement : RunPhase::AfterEngagement;  // detach events (multi) keep the first engagement
     }
 
     const GraspScene& scene_;
-    int phase_ = 0;
+    RunPhase phase_ = RunPhase::Held;
     double lastWall_ = std::chrono::duration<double>(Clock::now().time_since_epoch()).count();
     long lastSteps_ = 0, totalSteps_ = 0;
     double lastTime_ = 0;
-    double seconds_[4] = {0, 0, 0, 0};
-    double simSeconds_[4] = {0, 0, 0, 0};
-    long steps_[4] = {0, 0, 0, 0};
+    double seconds_[kRunPhases] = {0, 0, 0, 0};
+    double simSeconds_[kRunPhases] = {0, 0, 0, 0};
+    long steps_[kRunPhases] = {0, 0, 0, 0};
 };
 
 // Releasing the object is an Instance-stage change: each kind of stepper restarts its own way.
@@ -185,11 +200,11 @@ std::unique_ptr<integration::Stepper> makeStepper(const SimTK::System& system, c
 SimulationSummary makeSummaryHeader(const scenario::Scenario& scenario, const SimulationOptions& options, double duration) {
     SimulationSummary summary;
     summary.scenario = scenario.name;
-    summary.contact = toString(options.contact);
-    summary.mode = toString(options.mode);
+    summary.contact = options.contact;
+    summary.mode = options.mode;
     summary.perturbation = options.perturbation;
     summary.settleTime = std::min(scenario.simulation.settleTime, duration);
-    if (options.mode == SimulationMode::Approx) summary.constraint = toString(options.approx.constraint);
+    if (options.mode == SimulationMode::Approx) summary.constraint = options.approx.constraint;
     return summary;
 }
 
@@ -206,12 +221,12 @@ void summarizeCost(const GraspScene& scene, const PhaseTimer& timer, double ikSe
 
 void summarizeSwitch(const GraspScene& scene, const PhaseTimer& timer, SimulationResult& result) {
     SimulationSummary& summary = result.summary;
-    summary.fullStepUs = timer.findUsPerStep(1);
-    summary.approxStepUs = timer.findUsPerStep(2);
-    summary.fullWallPerSimSecond = timer.findWallPerSimSecond(1);
-    summary.approxWallPerSimSecond = timer.findWallPerSimSecond(2);
-    summary.fullSteps = timer.getSteps(1);
-    summary.approxSteps = timer.getSteps(2);
+    summary.fullStepUs = timer.findUsPerStep(RunPhase::FullContact);
+    summary.approxStepUs = timer.findUsPerStep(RunPhase::FirstEngagement);
+    summary.fullWallPerSimSecond = timer.findWallPerSimSecond(RunPhase::FullContact);
+    summary.approxWallPerSimSecond = timer.findWallPerSimSecond(RunPhase::FirstEngagement);
+    summary.fullSteps = timer.getSteps(RunPhase::FullContact);
+    summary.approxSteps = timer.getSteps(RunPhase::FirstEngagement);
     const GraspSwitch* grasp = scene.getGraspSwitch();
     if (!grasp) return;
     result.events = grasp->getEvents();
@@ -226,7 +241,7 @@ void summarizeSwitch(const GraspScene& scene, const PhaseTimer& timer, Simulatio
     summary.engaged = true;
     summary.engageTime = result.events.front().time;
     summary.qAtEngage = result.events.front().quality;
-    const auto release = std::find_if(result.events.begin(), result.events.end(), [](const GraspEvent& e) { return e.kind == "release"; });
+    const auto release = std::find_if(result.events.begin(), result.events.end(), [](const GraspEvent& e) { return e.kind == GraspEventKind::Release; });
     if (release != result.events.end()) summary.releaseTime = release->time;
 }
 

@@ -54,27 +54,6 @@ double findLeverArm(const std::vector<contact::ContactReport>& reports, const Si
     return arm;
 }
 
-// The bushing's stiffness at engagement, so that its elastic deflection cannot push a fingertip
-// more than `budget` deeper (quasi-statically). A fingertip at r from M's origin (|r| <= arm) moves
-// by e_p + e_r x r, so it sinks by at most |e_p| + arm |e_r|. While the bushing holds (or slides
-// at its limits) every axis has |e_k| <= L_k / K_k: grasp::calcStiffnessForBound with the limits
-// as loads, never below the scene's default (kBushingFrequency). Damping is critical on every axis,
-// 2 sqrt(K m) with the object's mass or central moment of inertia, as the default's.
-// A locked axis (infinite limit) is stiffened from its friction limit all the same: its load is of
-// that order, but the bound is not guaranteed there.
-std::pair<SimTK::Vec6, SimTK::Vec6> calcEngagedStiffness(const grasp::LimitedBushing& bushing,
-                                                        const SimTK::MassProperties& mp, const SimTK::Vec6& limits,
-                                                        double arm, double budget) {
-    const SimTK::Vec3 I = mp.calcCentralInertia().getMoments();
-    const SimTK::Vec6 stiffness = grasp::calcStiffnessForBound(bushing.getStiffness(), limits, arm, budget);
-    SimTK::Vec6 damping;
-    for (int k = 0; k < 3; ++k) {
-        damping[k] = 2 * std::sqrt(stiffness[k] * I[k]);
-        damping[k + 3] = 2 * std::sqrt(stiffness[k + 3] * mp.getMass());
-    }
-    return {stiffness, damping};
-}
-
 // The run's options over the scenario's approximation section: a value given to the run wins.
 ApproxOptions resolveOptions(const ApproxOptions& given, const scenario::ApproximationSpec& scenario) {
     ApproxOptions options = given;
@@ -84,12 +63,27 @@ ApproxOptions resolveOptions(const ApproxOptions& given, const scenario::Approxi
     return options;
 }
 
+const grasp::GraspAttachment& findAttachment(const GraspScene& scene) {
+    if (!scene.getAttachment()) throw Error("grasp switch: the scene has no attachment (not an approx-mode scene)");
+    return *scene.getAttachment();
+}
+
 }  // namespace
+
+std::string toString(GraspEventKind kind) {
+    switch (kind) {
+    case GraspEventKind::Engage: return "engage";
+    case GraspEventKind::Release: return "release";
+    case GraspEventKind::Detach: return "detach";
+    }
+    throw Error("grasp event: unknown kind " + std::to_string(static_cast<int>(kind)));
+}
 
 GraspSwitch::GraspSwitch(const GraspScene& scene, const control::GraspController& controller,
                          const ApproxOptions& options, double interval)
     : SimTK::PeriodicEventHandler(interval), scene_(scene), controller_(controller),
-      options_(resolveOptions(options, scene.getScenario().approximation)), tracker_(scene) {
+      attachment_(findAttachment(scene)), options_(resolveOptions(options, scene.getScenario().approximation)),
+      tracker_(scene) {
     if (!(options_.qThreshold >= 0) || !(options_.qMinimum >= 0)) {
         throw InputError("approx: the quality thresholds Q_Th and Q_M must be >= 0 (0 = automatic)");
     }
@@ -131,11 +125,7 @@ private:
 
 SimTK::TriggeredEventHandler* GraspSwitch::makeDetachWitness() const { return multi_ ? new DetachWitness(*this) : nullptr; }
 
-bool GraspSwitch::isEngaged(const SimTK::State& state) const {
-    if (multi_) return multi_->isEngaged(state);
-    if (const grasp::LimitedWeld* weld = scene_.getWeld()) return weld->isEnabled(state);
-    return scene_.getBushing().isEnabled(state);
-}
+bool GraspSwitch::isEngaged(const SimTK::State& state) const { return attachment_.isEngaged(state); }
 
 void GraspSwitch::handleEvent(SimTK::State& state, SimTK::Real accuracy, bool& shouldTerminate) const {
     shouldTerminate = false;
@@ -217,7 +207,7 @@ void GraspSwitch::checkEngage(SimTK::State& state) const {
     if (!isSticking(reports)) return;
     // Not at the instant of a release (a witness may release at a check's time): the contacts just
     // restored still carry the pre-release state, and would re-engage what just failed.
-    if (!events_.empty() && events_.back().kind == "release" && !(state.getTime() > events_.back().time)) return;
+    if (!events_.empty() && events_.back().kind == GraspEventKind::Release && !(state.getTime() > events_.back().time)) return;
     if (q > 0 && q >= qThreshold_) engage(state, q, reports);
 }
 
@@ -226,57 +216,33 @@ void GraspSwitch::engage(SimTK::State& state, double quality, const std::vector<
     tracker_.capture(state, reports);  // penetration, for both attachments; Q tracking is merged's
     if (multi_) {
         const std::string limitsText = multi_->engage(state, reports);
-        events_.push_back({state.getTime(), "engage", quality, format("Q >= Q_Th = %.6g N; ", qThreshold_) + limitsText});
+        events_.push_back({state.getTime(), GraspEventKind::Engage, quality, format("Q >= Q_Th = %.6g N; ", qThreshold_) + limitsText});
         return;
     }
+    grasp::AttachmentEngagement engagement;
     const scenario::ContactSpec& contact = scene_.getScenario().contact;
-    const SimTK::Vec6 limits = calcFrictionLimits(reports, options_.staticFrictionLimits ? contact.staticFriction : contact.dynamicFriction);
+    engagement.limits = calcFrictionLimits(reports, options_.staticFrictionLimits ? contact.staticFriction : contact.dynamicFriction);
     const SimTK::Vec3 p_GC = findContactCentroid(reports);
-    placeConstraintFrames(state, p_GC);
+    placeConstraintFrames(state, p_GC, engagement);
+    engagement.leverArm = findLeverArm(reports, p_GC);
+    engagement.penetrationBound = options_.maxEngagedPenetration;
+    for (int k = 0; k < 6; ++k) engagement.lockedAxes[k] = !(*options_.relaxedAxes)[k];
     scene_.getContacts().setPairsEnabled(state, scene_.getContacts().findAllPairIndices(), false);  // (b)
     setFingersMerged(state, true);                                                        // (c)
-    enableConstraint(state, limits, findLeverArm(reports, p_GC));                         // (d)
+    attachment_.engage(state, engagement);                                                // (d)
     X_HO_engaged_ = ~scene_.getPalm().getBodyTransform(state) * scene_.getObject().getBodyTransform(state);
-    events_.push_back({state.getTime(), "engage", quality,
-                       format("Q >= Q_Th = %.6g N; limits %.6g N", qThreshold_, limits[3]) +
-                           format(", %.6g N m", limits[0])});  // (e)
+    events_.push_back({state.getTime(), GraspEventKind::Engage, quality,
+                       format("Q >= Q_Th = %.6g N; limits %.6g N", qThreshold_, engagement.limits[3]) +
+                           format(", %.6g N m", engagement.limits[0])});  // (e)
 }
 
 // F on the palm and M on the object coincide at the contact centroid, with O's orientation.
-void GraspSwitch::placeConstraintFrames(SimTK::State& state, const SimTK::Vec3& p_GC) const {
+void GraspSwitch::placeConstraintFrames(const SimTK::State& state, const SimTK::Vec3& p_GC,
+                                        grasp::AttachmentEngagement& engagement) const {
     const SimTK::Transform& X_GO = scene_.getObject().getBodyTransform(state);
     const SimTK::Transform& X_GH = scene_.getPalm().getBodyTransform(state);
-    const SimTK::Transform X_OM(~X_GO * p_GC);  // O's orientation
-    const SimTK::Transform X_HF = ~X_GH * X_GO * X_OM;
-    if (const grasp::LimitedWeld* weld = scene_.getWeld()) {
-        weld->setFrames(state, X_HF, X_OM);
-    } else {
-        scene_.getBushing().setFrames(state, X_HF, X_OM);
-    }
-}
-
-// At the current relative pose, so nothing jumps: the bushing's anchor is reset there; the weld
-// holds the pose it is enabled at (stopping only the palm-object relative velocity, if any).
-void GraspSwitch::enableConstraint(SimTK::State& state, const SimTK::Vec6& limits, double leverArm) const {
-    const SimTK::MultibodySystem& system = scene_.getSystem();
-    if (const grasp::LimitedWeld* weld = scene_.getWeld()) {
-        weld->setLimits(state, limits);
-        for (int k = 0; k < 6; ++k) weld->setAxisLocked(state, static_cast<grasp::WeldAxis>(k), !(*options_.relaxedAxes)[k]);
-        weld->setEnabled(state, true);  // last: axes over their limits start sliding at once
-        system.realize(state, SimTK::Stage::Position);
-        return;
-    }
-    const grasp::LimitedBushing& bushing = scene_.getBushing();
-    bushing.setEnabled(state, true);
-    system.realize(state, SimTK::Stage::Position);
-    bushing.resetAnchor(state);
-    const auto [stiffness, damping] =
-        calcEngagedStiffness(bushing, scene_.getObject().getBody().getDefaultRigidBodyMassProperties(), limits,
-                             leverArm, options_.maxEngagedPenetration);
-    bushing.setStiffness(state, stiffness, damping);
-    bushing.setLimits(state, limits);
-    for (int k = 0; k < 6; ++k) bushing.setAxisLocked(state, static_cast<grasp::BushingAxis>(k), !(*options_.relaxedAxes)[k]);
-    system.realize(state, SimTK::Stage::Position);
+    engagement.X_OM = SimTK::Transform(~X_GO * p_GC);  // O's orientation
+    engagement.X_HF = ~X_GH * X_GO * engagement.X_OM;
 }
 
 void GraspSwitch::checkRelease(SimTK::State& state) const {
@@ -315,19 +281,10 @@ void GraspSwitch::release(SimTK::State& state, double quality, const std::string
     const SimTK::MultibodySystem& system = scene_.getSystem();
     system.realize(state, SimTK::Stage::Velocity);
     const SimTK::Vec3 v_before = scene_.getObject().getBodyOriginVelocity(state);
-    if (multi_) {
-        multi_->release(state);
-        events_.push_back({state.getTime(), "release", quality, reason, findVelocityJump(state, v_before)});
-        return;
-    }
-    if (const grasp::LimitedWeld* weld = scene_.getWeld()) {
-        weld->setEnabled(state, false);
-    } else {
-        scene_.getBushing().setEnabled(state, false);
-    }
-    setFingersMerged(state, false);
+    attachment_.release(state);
+    if (!multi_) setFingersMerged(state, false);  // multi never merges them
     scene_.getContacts().setPairsEnabled(state, scene_.getContacts().findAllPairIndices(), true);
-    events_.push_back({state.getTime(), "release", quality, reason, findVelocityJump(state, v_before)});
+    events_.push_back({state.getTime(), GraspEventKind::Release, quality, reason, findVelocityJump(state, v_before)});
 }
 
 // The object's velocity as the integrator will restart from it: realized after the switch and

@@ -65,22 +65,6 @@ grasp::FingerLoad calcFingerLoad(const std::vector<const contact::ContactReport*
 
 }  // namespace
 
-void checkApproxAttach(const scenario::Scenario& scenario, const SimulationOptions& options) {
-    if (options.mode != SimulationMode::Approx || options.approx.attach != ApproxAttach::Multi) return;
-    if (options.approx.constraint != ApproxConstraint::Bushing) {
-        throw InputError("--attach: 'multi' is not available with --constraint " + toString(options.approx.constraint) +
-                         " (its parts are friction-limited bushings); use --constraint bushing or --attach merged");
-    }
-    const model::ModelDescription d = model::buildBodyModel(scenario.bodyOptions);
-    for (const auto& [endEffector, goal] : scenario.goals) {
-        const model::EndEffector* e = d.findEndEffector(endEffector);
-        const model::Body* body = e ? d.findBody(e->body) : nullptr;
-        if (body && !body->geometry.empty()) continue;
-        throw InputError("--attach: 'multi' is not accepted for scenario '" + scenario.name + "': goal end-effector '" +
-                         endEffector + "' is on a body without contact geometry; use --attach merged");
-    }
-}
-
 MultiAttachmentSwitch::MultiAttachmentSwitch(const GraspScene& scene, double slideLimit, double penetrationBound)
     : scene_(scene), slideLimit_(slideLimit), penetrationBound_(penetrationBound) {
     const model::ModelDescription& d = scene.getModel().getDescription();
@@ -112,10 +96,6 @@ bool MultiAttachmentSwitch::isSticking(const std::vector<contact::ContactReport>
     return true;
 }
 
-bool MultiAttachmentSwitch::isEngaged(const SimTK::State& state) const {
-    return scene_.getMultiAttachment()->countAttached(state) > 0;
-}
-
 std::string MultiAttachmentSwitch::engage(SimTK::State& state, const std::vector<contact::ContactReport>& reports) const {
     std::vector<std::vector<const contact::ContactReport*>> perFinger(fingerBodies_.size());
     for (const contact::ContactReport& c : reports) {
@@ -126,31 +106,19 @@ std::string MultiAttachmentSwitch::engage(SimTK::State& state, const std::vector
     std::vector<int> replaced;
     for (const std::vector<int>& pairs : fingerPairs_) replaced.insert(replaced.end(), pairs.begin(), pairs.end());
     scene_.getContacts().setPairsEnabled(state, replaced, false);
-    const double mu = scene_.getScenario().contact.dynamicFriction;
+    grasp::AttachmentEngagement engagement;
+    engagement.mu = scene_.getScenario().contact.dynamicFriction;
+    engagement.penetrationBound = penetrationBound_;
     std::string text = "multi: tangent limits";
     const auto& g = scene_.getScenario().world.gravity;
     for (std::size_t i = 0; i < perFinger.size(); ++i) {
         grasp::FingerLoad load = calcFingerLoad(perFinger[i]);
         load.tangentHint_G = SimTK::Vec3(g[0], g[1], g[2]);  // the main load: exact along it
-        stiffenPart(state, static_cast<int>(i), load, mu);
-        scene_.getMultiAttachment()->attach(state, static_cast<int>(i), load, mu);
-        text += " " + scene_.getGoalEndEffectors()[i] + format(" %.4g N", mu * load.normalForce);
+        engagement.fingers.push_back(load);
+        text += " " + scene_.getGoalEndEffectors()[i] + format(" %.4g N", engagement.mu * load.normalForce);
     }
+    scene_.getMultiAttachment()->engage(state, engagement);
     return text;
-}
-
-// As the merged bushing (grasp_switch.cpp, calcEngagedStiffness): the elastic displacement under
-// the part's largest expected load stays within penetrationBound / (2 sqrt 3) per axis. The loads:
-// its friction limits on the tangent and rotation axes, and on the locked normal axis its
-// pressing force at attachment. Damping scales with sqrt(K), keeping the default damping ratio.
-void MultiAttachmentSwitch::stiffenPart(SimTK::State& state, int finger, const grasp::FingerLoad& load, double mu) const {
-    const grasp::LimitedBushing& part = scene_.getMultiAttachment()->getPart(finger);
-    const double tangent = mu * load.normalForce, moment = mu * load.armRadius * load.normalForce;
-    const SimTK::Vec6 loads(moment, moment, moment, tangent, tangent, load.normalForce);  // z: the object's normal
-    const SimTK::Vec6 stiffness = grasp::calcStiffnessForBound(part.getStiffness(), loads, load.armRadius, penetrationBound_);
-    SimTK::Vec6 damping = part.getDamping();
-    for (int k = 0; k < 6; ++k) damping[k] *= std::sqrt(stiffness[k] / part.getStiffness()[k]);
-    part.setStiffness(state, stiffness, damping);
 }
 
 std::string MultiAttachmentSwitch::update(SimTK::State& state, double quality, std::vector<GraspEvent>& events) const {
@@ -165,7 +133,7 @@ std::string MultiAttachmentSwitch::update(SimTK::State& state, double quality, s
     for (const auto& [i, reason] : leaving) {
         multi.detach(state, i);
         scene_.getContacts().setPairsEnabled(state, fingerPairs_[static_cast<std::size_t>(i)], true);
-        events.push_back({state.getTime(), "detach", quality, scene_.getGoalEndEffectors()[static_cast<std::size_t>(i)] + ": " + reason});
+        events.push_back({state.getTime(), GraspEventKind::Detach, quality, scene_.getGoalEndEffectors()[static_cast<std::size_t>(i)] + ": " + reason});
     }
     const int attached = multi.countAttached(state);
     if (attached >= kMinAttachedFingers) return {};

@@ -1,6 +1,8 @@
 #include "graspsim/simulation/simulation_options.h"
 
 #include "graspsim/error.h"
+#include "graspsim/model/body_model.h"
+#include "graspsim/scenario/scenario.h"
 
 namespace graspsim::simulation {
 
@@ -42,5 +44,21 @@ ApproxAttach parseApproxAttach(const std::string& text, const std::string& sourc
 
 std::string toString(ApproxAttach attach) { return attach == ApproxAttach::Merged ? "merged" : "multi"; }
 std::string toString(SimulationMode mode) { return mode == SimulationMode::Full ? "full" : "approx"; }
+
+void checkApproxAttach(const scenario::Scenario& scenario, const SimulationOptions& options) {
+    if (options.mode != SimulationMode::Approx || options.approx.attach != ApproxAttach::Multi) return;
+    if (options.approx.constraint != ApproxConstraint::Bushing) {
+        throw InputError("--attach: 'multi' is not available with --constraint " + toString(options.approx.constraint) +
+                         " (its parts are friction-limited bushings); use --constraint bushing or --attach merged");
+    }
+    const model::ModelDescription d = model::buildBodyModel(scenario.bodyOptions);
+    for (const auto& [endEffector, goal] : scenario.goals) {
+        const model::EndEffector* e = d.findEndEffector(endEffector);
+        const model::Body* body = e ? d.findBody(e->body) : nullptr;
+        if (body && !body->geometry.empty()) continue;
+        throw InputError("--attach: 'multi' is not accepted for scenario '" + scenario.name + "': goal end-effector '" +
+                         endEffector + "' is on a body without contact geometry; use --attach merged");
+    }
+}
 
 }  // namespace graspsim::simulation

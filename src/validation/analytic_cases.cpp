@@ -155,15 +155,15 @@ std::vector<ValidationCheck> runAnalyticCases() {
         // approached from rest; 0.1 % for the integrator's error); rigid: PGS's own creep, 1e-5 m.
         const double creep = rigid ? 1e-5 : kSqueezeTransition * 0.8 * duration * 1.001;
         add("two-finger friction, " + model + ": displacement at F = 0.8 x 2 mu N", std::abs(held.displacement) * 1e3, "<=",
-            creep * 1e3, "mm", "issue 3, must show 2 (sticks below 2 mu N)");
+            creep * 1e3, "mm", "Coulomb friction of two contacts: sticks below 2 mu N (thesis eq. 4.1)");
         const SqueezeOutcome slid = runSqueeze(rigid, 1.5 * limit, duration);
         const double expected = 0.5 * limit / kSqueezeBoxMass;
         add("two-finger friction, " + model + ": acceleration's relative error vs (F - 2 mu N) / m at F = 1.5 x 2 mu N",
-            std::abs(slid.acceleration / expected - 1) * 100, "<=", 5, "%", "issue 3, must show 2 (slides above)");
+            std::abs(slid.acceleration / expected - 1) * 100, "<=", 5, "%", "closed form a = (F - 2 mu N) / m; 5 % for the regularized friction's transition");
     }
     const PendulumOutcome p = runPendulum(SimTK::Pi / 3, 1e-8);
     add("pendulum (60 deg) period vs 4 sqrt(L/g) K(sin(theta0/2)), relative error", std::abs(p.measured / p.exact - 1) * 100, "<=",
-        1e-3, "%", "issue 5, analytic cases");
+        1e-3, "%", "closed form (elliptic integral); at accuracy 1e-8 the integrator stays far below 1e-3 %");
     return checks;
 }
 

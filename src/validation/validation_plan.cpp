@@ -75,7 +75,7 @@ std::vector<ValidationRun> makeValidationPlan(const PlanOptions& options) {
     std::vector<ValidationRun> runs;
     for (const std::string& experiment : experiments) {
         const scenario::Scenario s = scenario::findBuiltinScenario(experiment);
-        // Quick: 2 s after settling, the window of the 2-mm/2-degree bound.
+        // Quick: 2 s after settling, the window of the approximation's 2-mm/2-degree bound.
         const double duration = options.quick ? s.simulation.settleTime + 2.0 : s.simulation.duration;
         for (const std::string& perturbation : findPerturbations(s, options.quick)) {
             const std::string stem = experiment + "_" + perturbation + "_";

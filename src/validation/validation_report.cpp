@@ -71,7 +71,7 @@ std::string formatResultsCsv(const ValidationResults& results) {
            "approx_wall_per_sim_s\n";
     for (const RunRecord& r : results.runs) {
         const simulation::SimulationSummary& s = r.summary;
-        csv << r.run.id << "," << r.run.scenario << "," << s.perturbation << "," << s.contact << "," << r.run.variant << ","
+        csv << r.run.id << "," << r.run.scenario << "," << s.perturbation << "," << simulation::toString(s.contact) << "," << r.run.variant << ","
             << (s.complete ? 1 : 0) << "," << (s.held ? 1 : 0) << "," << (r.hasReference ? (r.referenceHeld ? "1" : "0") : "")
             << "," << num(s.objectDisplacement) << "," << (r.hasReference ? num(r.referenceDisplacement) : "") << ","
             << num(r.slipOnset) << "," << (r.hasReference ? num(r.referenceSlipOnset) : "") << "," << num(s.engageTime) << ","

@@ -148,8 +148,8 @@ Json makeEngagedIntervals(const ResultRecord& record) {
     Json intervals = Json::array();
     double start = -1;
     for (const EventRow& e : record.events) {
-        if (e.kind == "engage" && start < 0) start = e.time;
-        if (e.kind == "release" && start >= 0) {
+        if (e.kind == simulation::GraspEventKind::Engage && start < 0) start = e.time;
+        if (e.kind == simulation::GraspEventKind::Release && start >= 0) {
             intervals.push_back({start, e.time});
             start = -1;
         }
@@ -163,7 +163,7 @@ Json makeEngagedIntervals(const ResultRecord& record) {
 std::string formatReplayJson(const ResultRecord& record) {
     Json j;
     j["scenario"] = record.scenario.name;
-    j["mode"] = record.mode;
+    j["mode"] = simulation::toString(record.mode);
     j["contact"] = record.contactModel;
     j["perturbation"] = record.perturbation;
     j["constraint"] = record.realization;
@@ -183,7 +183,7 @@ std::string formatReplayJson(const ResultRecord& record) {
     j["constraintSamples"] = makeConstraint(record);
     j["engaged"] = makeEngagedIntervals(record);
     Json events = Json::array();
-    for (const EventRow& e : record.events) events.push_back({{"t", e.time}, {"kind", e.kind}, {"reason", e.reason}});
+    for (const EventRow& e : record.events) events.push_back({{"t", e.time}, {"kind", simulation::toString(e.kind)}, {"reason", e.reason}});
     j["events"] = events;
     std::string text = j.dump();
     // Inside <script>, "</" could close the element: JSON allows "<\/" for the same text.

@@ -104,11 +104,18 @@ std::vector<ContactRow> readContacts(const std::string& path) {
     return rows;
 }
 
+simulation::GraspEventKind parseEventKind(const std::string& text, const std::string& path) {
+    for (auto kind : {simulation::GraspEventKind::Engage, simulation::GraspEventKind::Release, simulation::GraspEventKind::Detach}) {
+        if (simulation::toString(kind) == text) return kind;
+    }
+    throw InputError(path + ": event '" + text + "' is not engage, release or detach");
+}
+
 std::vector<EventRow> readEvents(const std::string& path) {
     const CsvTable table = readCsvTable(path, readText(path));
     table.requireColumns({"time_s", "event", "grasp_quality_n", "velocity_jump_m_s", "reason"});
     std::vector<EventRow> rows;
-    for (std::size_t r = 0; r < table.rows.size(); ++r) rows.push_back({table.getNumber(r, 0), table.rows[r][1], table.rows[r][4]});
+    for (std::size_t r = 0; r < table.rows.size(); ++r) rows.push_back({table.getNumber(r, 0), parseEventKind(table.rows[r][1], path), table.rows[r][4]});
     return rows;
 }
 
@@ -135,7 +142,7 @@ void readSummary(ResultRecord& record) {
     record.summaryJson = readText(path);
     const nlohmann::json summary = parseJson(path, record.summaryJson);
     try {
-        record.mode = summary.at("mode").get<std::string>();
+        record.mode = simulation::parseSimulationMode(summary.at("mode").get<std::string>(), path + " mode");
         record.contactModel = summary.at("contact").get<std::string>();
         record.perturbation = summary.at("perturbation").get<std::string>();
         record.simTime = summary.at("sim_time_s").get<double>();
@@ -157,7 +164,7 @@ ResultRecord readResultFolder(const std::string& folder) {
     readSummary(record);
     record.trajectory = readTrajectory(folder + "/trajectory.csv", record.model);
     record.contacts = readContacts(folder + "/contacts.csv");
-    if (record.mode == "approx") {
+    if (record.mode == simulation::SimulationMode::Approx) {
         for (const char* file : {"events.csv", "constraint.csv"}) {
             if (!std::filesystem::exists(folder + "/" + file)) {
                 throw InputError("'" + folder + "' is an incomplete approx result: " + file + " is missing");

@@ -1,5 +1,5 @@
 // The quick validation suite end to end (ctest label `validation`): full contact and the
-// approximation of ball-clutch, their comparison against the issues' bounds, and the files.
+// approximation of ball-clutch, their comparison against the validation bounds, and the files.
 
 #include "cli_process.h"
 

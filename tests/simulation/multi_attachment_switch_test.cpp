@@ -115,11 +115,11 @@ TEST(MultiAttachmentSwitch, ADetachedFingerCarriesNothingAndReturnsToContactWhil
                                                       {}, observe);
     ASSERT_TRUE(multi.summary.complete) << multi.summary.failure;
     ASSERT_GE(multi.events.size(), 2u);
-    EXPECT_EQ(multi.events.front().kind, "engage");
+    EXPECT_EQ(multi.events.front().kind, simulation::GraspEventKind::Engage);
     int detached = 0;
     for (const simulation::GraspEvent& e : multi.events) {
-        EXPECT_NE(e.kind, "release") << e.reason;  // the others keep holding
-        if (e.kind != "detach") continue;
+        EXPECT_NE(e.kind, simulation::GraspEventKind::Release) << e.reason;  // the others keep holding
+        if (e.kind != simulation::GraspEventKind::Detach) continue;
         ++detached;
         const std::string name = e.reason.substr(0, e.reason.find(':'));
         SCOPED_TRACE(name);
@@ -142,13 +142,13 @@ TEST(MultiAttachmentSwitch, ADetachedFingerCarriesNothingAndReturnsToContactWhil
 // The "stopped pressing" detach is localized by a witness, not left to the next check: under the
 // phone-pinch pull f1 the index finger unloads, and it is detached where its part's normal force
 // crosses zero (oracle: the force at the detach is 0 to the localization tolerance; a 10-ms check
-// found -0.58 N, with the fingertip 0.26 mm deeper in the phone by then). The penetration bound
-// of issue 4 then holds.
+// found -0.58 N, with the fingertip 0.26 mm deeper in the phone by then). The 0.1-mm penetration
+// bound (ApproxOptions::maxEngagedPenetration) then holds.
 TEST(MultiAttachmentSwitch, DetachesAFingerWhereItsPressingForceCrossesZero) {
     const scenario::Scenario s = scenario::findBuiltinScenario("phone-pinch");
     const auto r = simulation::runGraspSimulation(s, makeOptions(simulation::SimulationMode::Approx, 1.6, "f1"));
     ASSERT_TRUE(r.summary.complete) << r.summary.failure;
-    const auto detach = std::find_if(r.events.begin(), r.events.end(), [](const auto& e) { return e.kind == "detach"; });
+    const auto detach = std::find_if(r.events.begin(), r.events.end(), [](const auto& e) { return e.kind == simulation::GraspEventKind::Detach; });
     ASSERT_NE(detach, r.events.end());
     const std::size_t at = detach->reason.find("normal force ");
     ASSERT_NE(at, std::string::npos) << detach->reason;

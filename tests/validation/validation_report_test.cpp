@@ -14,8 +14,8 @@ TEST(ValidationReport, RowsPerRunAndCheckAndFailuresMarked) {
     results.runs[0].run.id = "a_full";
     results.runs[1].run.id = "a_approx";
     results.runs[1].hasReference = true;
-    results.checks.push_back({"a_full", "drift after settling", 0.3, 5, "mm", "<=", true, "issue 3"});
-    results.checks.push_back({"a_approx", "position error", 2.5, 2, "mm", "<=", false, "issue 4"});
+    results.checks.push_back({"a_full", "drift after settling", 0.3, 5, "mm", "<=", true, "a held object stays put"});
+    results.checks.push_back({"a_approx", "position error", 2.5, 2, "mm", "<=", false, "thesis 5.1"});
     EXPECT_FALSE(results.passed());
     const auto lines = [](const std::string& s) { return std::count(s.begin(), s.end(), '\n'); };
     EXPECT_EQ(lines(validation::formatResultsCsv(results)), 3);

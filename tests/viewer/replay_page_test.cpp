@@ -95,7 +95,7 @@ simulation::SimulationResult* ReplayPage::result_ = nullptr;
 TEST_F(ReplayPage, ResultFolderReadsBackTheRun) {
     const ResultRecord record = readResultFolder(folder_->string());
     ASSERT_EQ(record.trajectory.size(), result_->trajectory.size());
-    EXPECT_EQ(record.mode, "approx");
+    EXPECT_EQ(record.mode, simulation::SimulationMode::Approx);
     EXPECT_EQ(record.scenario.controller.approachTime, scenario_->controller.approachTime);
     for (std::size_t i = 0; i < record.trajectory.size(); ++i) {
         EXPECT_EQ(record.trajectory[i].time, result_->trajectory[i].time);

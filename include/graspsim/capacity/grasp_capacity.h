@@ -53,7 +53,9 @@ struct GraspCapacity {
     SimTK::UnitVec3 direction;
     bool torque = false;
     std::string method;       ///< "ramp" or "bisection"
-    std::string contact, mode, realization;  ///< realization: "" in full mode, else e.g. "bushing merged"
+    simulation::ContactModel contact = simulation::ContactModel::Compliant;
+    simulation::SimulationMode mode = simulation::SimulationMode::Full;
+    std::string realization;  ///< "" in full mode, else e.g. "bushing merged"
     double start = 0;         ///< load start (s)
     double rate = 0;          ///< N/s or N m/s (ramp)
     SlipCriteria criteria;

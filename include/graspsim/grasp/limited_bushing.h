@@ -1,7 +1,7 @@
 #pragma once
 /// @file
-/// The "bushing" realization of the thesis's friction-limited 6-DOF grasp constraint (issue 4,
-/// thesis section 4.2): a stiff 6-DOF spring-damper between the hand side H and the object O
+/// The "bushing" realization of the thesis's friction-limited 6-DOF grasp constraint (thesis
+/// section 4.2): a stiff 6-DOF spring-damper between the hand side H and the object O
 /// whose force saturates at per-axis limits while its anchor slips (elasto-plastic friction).
 ///
 /// Frames: F is fixed on body H (pose X_HF), M is fixed on body O (pose X_OM); both poses are
@@ -47,19 +47,14 @@
 /// handler (the TimeStepper re-realizes and reinitializes the integrator after it) or before
 /// Integrator::initialize().
 
+#include "graspsim/grasp/grasp_attachment.h"
 #include "graspsim/simbody.h"
 
 namespace graspsim::grasp {
 
-/// One of the six axes of a LimitedBushing, in SpatialVec order (rotation first).
-enum class BushingAxis { RotationX = 0, RotationY, RotationZ, TranslationX, TranslationY, TranslationZ };
-
-/// Index of `axis` in a Vec6 of per-axis values (0-2 rotation, 3-5 translation).
-constexpr int toIndex(BushingAxis axis) { return static_cast<int>(axis); }
-
 /// The friction-limited 6-DOF bushing (a Simbody Force::Custom handle; copies refer to the same
 /// element, which belongs to the GeneralForceSubsystem). See the file comment for the law.
-class LimitedBushing : public SimTK::Force::Custom {
+class LimitedBushing : public SimTK::Force::Custom, public GraspAttachment {
 public:
     /// An empty handle.
     LimitedBushing() = default;
@@ -154,7 +149,26 @@ public:
     SimTK::SpatialVec findWrench(const SimTK::State& state) const;
     /// Whether `axis`'s anchor is slipping: enabled, loading (e_k r_k > 0) and the slip
     /// fraction s_k >= 0.5. Needs Stage::Velocity.
-    bool isSliding(const SimTK::State& state, BushingAxis axis) const;
+    bool isSliding(const SimTK::State& state, BushingAxis axis) const override;
+
+    /// GraspAttachment: whether enabled.
+    bool isEngaged(const SimTK::State& state) const override { return isEnabled(state); }
+    /// GraspAttachment: moves F and M to `engagement`'s frames, enables the element with its
+    /// anchor at the current pose (no spring force jump), stiffens it so that its elastic
+    /// deflection at the limits moves no fingertip (at most engagement.leverArm from M) more
+    /// than engagement.penetrationBound (calcStiffnessForBound, never below the constructor's
+    /// stiffness; damping critical with the object's mass and central moments of inertia), then
+    /// sets the limits and locks. Leaves `state` realized to Stage::Position.
+    void engage(SimTK::State& state, const AttachmentEngagement& engagement) const override;
+    /// GraspAttachment: disables the element.
+    void release(SimTK::State& state) const override { setEnabled(state, false); }
+    /// GraspAttachment: Stage::Velocity (a force of the state).
+    SimTK::Stage getReactionStage() const override { return SimTK::Stage::Velocity; }
+    /// GraspAttachment: findWrench() with its moment moved to O's origin. Needs Stage::Velocity.
+    SimTK::SpatialVec findReactionOnObject(const SimTK::State& state) const override;
+    /// GraspAttachment: getFrameOnO(), findEffectiveLimits(), findGeneralizedForce() and
+    /// findWrench() while enabled. Needs Stage::Velocity.
+    std::optional<SingleConstraintState> findSingleConstraintState(const SimTK::State& state) const override;
 };
 
 }  // namespace graspsim::grasp

@@ -1,7 +1,7 @@
 #pragma once
 /// @file
-/// The "weld" realization of the thesis's friction-limited 6-DOF grasp constraint (issue 4,
-/// thesis section 4.2, eq. 4.1-4.2): rigid. Each axis STICKS (a constraint holds it, with any
+/// The "weld" realization of the thesis's friction-limited 6-DOF grasp constraint (thesis
+/// section 4.2, eq. 4.1-4.2): rigid. Each axis STICKS (a constraint holds it, with any
 /// reaction up to its limit) or SLIDES (the constraint is off and the axis carries exactly its
 /// limit, opposing the slip) - Coulomb friction per axis, with the limits as the thesis's
 /// "limits on the Lagrange variables". The compliant alternative is LimitedBushing.
@@ -64,7 +64,7 @@ namespace graspsim::grasp {
 using WeldAxis = BushingAxis;
 
 /// The friction-limited weld (see the file comment).
-class LimitedWeld {
+class LimitedWeld : public GraspAttachment {
 public:
     /// Adds the weld's elements to `system` (6 disabled constraints in `matter`, one force in
     /// `forces`, 6 event handlers in `system`). Defaults: disabled, every axis locked (limit
@@ -115,7 +115,7 @@ public:
     /// when O's parent is H on a Free mobilizer. Any stage.
     bool isHeldByLock(const SimTK::State& state) const;
     /// Whether `axis` is sliding (enabled, its constraint off, carrying its limit).
-    bool isSliding(const SimTK::State& state, WeldAxis axis) const;
+    bool isSliding(const SimTK::State& state, WeldAxis axis) const override;
     /// Slip direction s_k of `axis`: +1 or -1 while sliding, 0 while stuck or disabled.
     int getSlideDirection(const SimTK::State& state, WeldAxis axis) const;
     /// Slip rates r (rad/s for 0-2, m/s for 3-5; along M's axes). Needs Stage::Velocity.
@@ -130,6 +130,23 @@ public:
     const SimTK::Transform& findEngagedTransform(const SimTK::State& state) const;
     /// Current pose X_FM of M in F. Needs Stage::Position.
     SimTK::Transform findTransform(const SimTK::State& state) const;
+
+    /// GraspAttachment: whether enabled.
+    bool isEngaged(const SimTK::State& state) const override { return isEnabled(state); }
+    /// GraspAttachment: moves F and M to `engagement`'s frames, sets the limits and locks, then
+    /// enables the weld (last, so that axes already over their limits start sliding at once).
+    /// Leaves `state` realized to Stage::Position.
+    void engage(SimTK::State& state, const AttachmentEngagement& engagement) const override;
+    /// GraspAttachment: disables the weld.
+    void release(SimTK::State& state) const override { setEnabled(state, false); }
+    /// GraspAttachment: Stage::Acceleration (the reactions are Lagrange multipliers).
+    SimTK::Stage getReactionStage() const override { return SimTK::Stage::Acceleration; }
+    /// GraspAttachment: findWrench() with its moment moved to O's origin. Needs
+    /// Stage::Acceleration.
+    SimTK::SpatialVec findReactionOnObject(const SimTK::State& state) const override;
+    /// GraspAttachment: getFrameOnO(), findEffectiveLimits(), findGeneralizedForce() and
+    /// findWrench() while enabled. Needs Stage::Acceleration.
+    std::optional<SingleConstraintState> findSingleConstraintState(const SimTK::State& state) const override;
 
     class AxisEvent;  // the per-axis witness handler (implementation detail)
     class Elements;   // the Simbody elements and state variables (implementation detail)

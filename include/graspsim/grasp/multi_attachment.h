@@ -1,6 +1,6 @@
 #pragma once
 /// @file
-/// The `multi` attachment of the grasp approximation (issue 4 item 4; the thesis's future work,
+/// The `multi` attachment of the grasp approximation (the thesis's future work,
 /// "a custom constraint that allows for more than two attachments"): one friction-limited element
 /// spanning the object O and every fingertip, so each finger keeps its own joints and can leave
 /// the object on its own.
@@ -28,6 +28,7 @@
 /// Parts are attached and detached one by one (LimitedBushing::setEnabled, an Instance-stage
 /// change: do it in an event handler).
 
+#include "graspsim/grasp/grasp_attachment.h"
 #include "graspsim/grasp/limited_bushing.h"
 
 #include "graspsim/simbody.h"
@@ -48,19 +49,8 @@ struct AttachmentSite {
     SimTK::Vec3 tangentHint_O{0, 0, 0};
 };
 
-/// One finger's load at attachment, from its contacts (eq. 4.1-4.3 per finger).
-struct FingerLoad {
-    bool atContact = false;        ///< place S_i at contact_G / normal_G (else at the AttachmentSite)
-    SimTK::Vec3 contact_G{0, 0, 0};  ///< centroid of the finger's contact points, in Ground (m)
-    SimTK::Vec3 normal_G{0, 0, 1};   ///< object's outward normal there, in Ground (unit)
-    SimTK::Vec3 tangentHint_G{0, 0, 0};  ///< S_i's x direction (tangent part), in Ground, as AttachmentSite's
-    SimTK::Vec3 force_G{0, 0, 0};  ///< total contact force of the finger on the object, in Ground (N)
-    double normalForce = 0;        ///< F_perp_i = sum f . n over the finger's contacts (N), >= 0
-    double armRadius = 0;          ///< r_i: mean distance of its contact points from their centroid (m)
-};
-
 /// The element (see the file comment). Copies refer to the same Simbody force elements.
-class MultiAttachment {
+class MultiAttachment : public GraspAttachment {
 public:
     MultiAttachment() = default;
     /// Adds one disabled part per site to `forces`.
@@ -98,8 +88,27 @@ public:
     /// without the elastic displacement. Needs Stage::Topology.
     double findSlide(const SimTK::State& state, int i) const;
 
+    /// GraspAttachment: whether any part is attached.
+    bool isEngaged(const SimTK::State& state) const override { return countAttached(state) > 0; }
+    /// GraspAttachment: attaches every part i with engagement.fingers[i] and engagement.mu, each
+    /// first stiffened so that its elastic displacement under its largest expected loads (its
+    /// friction limits, and on the locked normal its pressing force) moves the fingertip at most
+    /// engagement.penetrationBound (calcStiffnessForBound with the finger's arm radius); damping
+    /// grows with sqrt(K), keeping each axis's damping ratio. Leaves `state` realized to
+    /// Stage::Position. @throws graspsim::InputError unless there is one load per part.
+    void engage(SimTK::State& state, const AttachmentEngagement& engagement) const override;
+    /// GraspAttachment: detaches every part.
+    void release(SimTK::State& state) const override { detachAll(state); }
+    /// GraspAttachment: Stage::Velocity (the parts are forces of the state).
+    SimTK::Stage getReactionStage() const override { return SimTK::Stage::Velocity; }
+    /// GraspAttachment: the sum of the attached parts' wrenches, moments about O's origin.
+    SimTK::SpatialVec findReactionOnObject(const SimTK::State& state) const override;
+    /// GraspAttachment: whether any attached part slides on `axis` (of its own site frame).
+    bool isSliding(const SimTK::State& state, BushingAxis axis) const override;
+
 private:
     void checkPart(int i) const;
+    void stiffenPart(SimTK::State& state, int i, const FingerLoad& load, double mu, double penetrationBound) const;
 
     SimTK::MobilizedBody object_;
     std::vector<LimitedBushing> parts_;

@@ -2,8 +2,9 @@
 /// @file
 /// Contact forces that reproduce a given wrench on the object: how the grasp approximation
 /// estimates the forces at the fingertips while one constraint, not the contacts, holds the
-/// object (issue 4: "Q from the constraint's reaction wrench distributed over the tracked
-/// contacts"). Plain Eigen, no Simbody.
+/// object (the thesis keeps monitoring the grasp quality while engaged, chapter 4: the quality
+/// is built from the constraint's reaction wrench distributed over the tracked contacts). Plain
+/// Eigen, no Simbody.
 ///
 /// Problem. N contacts at points C_i (G), inward unit normals n_i (G), and a wrench W on the
 /// object (force F (N) and moment M (N m) about O's origin, both expressed in G) are given.

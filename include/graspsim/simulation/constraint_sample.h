@@ -25,8 +25,8 @@ struct ConstraintSample {
 
 /// The sample at `state` when the scene's merged approximation is engaged there; nullopt in full
 /// mode, with the multi attachment (one element per fingertip, no single constraint), or while
-/// not engaged. Realizes `state` to Stage::Acceleration when engaged (the weld's reaction is its
-/// multipliers).
+/// not engaged. Realizes `state` to the attachment's reaction stage when engaged
+/// (grasp::GraspAttachment::getReactionStage: the weld's reaction is its multipliers).
 std::optional<ConstraintSample> findConstraintSample(const GraspScene& scene, const SimTK::State& state);
 
 }  // namespace graspsim::simulation

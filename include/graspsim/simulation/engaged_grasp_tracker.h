@@ -1,7 +1,7 @@
 #pragma once
 /// @file
 /// What the grasp approximation keeps watching of the finger-object contacts while one
-/// constraint, not the contacts, holds the object (issue 4; thesis chapter 4: "the simulation
+/// constraint, not the contacts, holds the object (thesis chapter 4: "the simulation
 /// continues to monitor the contacts between the hand and object, but without solving the
 /// dynamical equations").
 ///

@@ -97,9 +97,10 @@ public:
     /// Mobilizers of the finger joints (the ones merged into the palm while the approximation
     /// is engaged).
     const std::vector<SimTK::MobilizedBodyIndex>& getFingerMobilizers() const { return fingerMobilizers_; }
-    /// The approximation's bushing palm (H, palm frame) - object (M = O); an empty handle unless
-    /// in approx mode with the bushing realization.
-    const grasp::LimitedBushing& getBushing() const { return bushing_; }
+    /// The approximation's attachment in approx mode (the bushing, the weld or the
+    /// multi-attachment, per ApproxOptions), nullptr in full mode. The switch, the tracker and the
+    /// cost table use it through this interface; the accessors below are for inspection.
+    const grasp::GraspAttachment* getAttachment() const { return attachment_; }
     /// The approximation's weld palm (F = palm frame) - object (M = O), or nullptr unless in
     /// approx mode with the weld realization.
     const grasp::LimitedWeld* getWeld() const { return weld_.get(); }
@@ -152,6 +153,7 @@ private:
     grasp::LimitedBushing bushing_;
     std::unique_ptr<grasp::MultiAttachment> multi_;
     std::unique_ptr<grasp::LimitedWeld> weld_;  // its handlers refer to it: destroyed before the System
+    const grasp::GraspAttachment* attachment_ = nullptr;  // one of bushing_, *weld_, *multi_
     GraspSwitch* switch_ = nullptr;  // owned by the system
     std::vector<SimTK::MobilizedBodyIndex> fingerMobilizers_;
     control::IkTiming ikTiming_;

@@ -37,7 +37,9 @@ struct ContactSample {
 
 /// Summary figures of a run (the fields of summary.json, in SI units).
 struct SimulationSummary {
-    std::string scenario, contact, mode, perturbation;
+    std::string scenario, perturbation;
+    ContactModel contact = ContactModel::Compliant;  ///< written as toString(contact)
+    SimulationMode mode = SimulationMode::Full;      ///< written as toString(mode)
     bool complete = false;          ///< false when the run stopped early (see failure)
     std::string failure;            ///< why it stopped early, with the time and the last event
     double simTime = 0;             ///< simulated time reached (s)
@@ -60,7 +62,7 @@ struct SimulationSummary {
     double qAtEngage = 0;           ///< grasp quality at the first engagement (N)
     double qThreshold = 0;          ///< Q_Th in use (N)
     double qMinimum = 0;            ///< Q_M in use (N)
-    std::string constraint;         ///< the approximation's constraint realization, "bushing" or "weld"
+    ApproxConstraint constraint = ApproxConstraint::Bushing;  ///< the approximation's realization (approx mode)
     /// Smallest engaged-quality estimate at the output samples while engaged (N; 0 if never
     /// engaged): the Q the release test compares with Q_M (engaged_grasp_tracker.h).
     double minEngagedGraspQuality = 0;

@@ -63,6 +63,7 @@
 /// forward run (a TimeStepper never rewinds), as the run of grasp_simulation.h is.
 
 #include "graspsim/control/grasp_controller.h"
+#include "graspsim/grasp/grasp_attachment.h"
 #include "graspsim/simulation/engaged_grasp_tracker.h"
 #include "graspsim/simulation/simulation_options.h"
 
@@ -77,10 +78,20 @@ namespace graspsim::simulation {
 class GraspScene;
 class MultiAttachmentSwitch;
 
+/// What a switch of the approximation did.
+enum class GraspEventKind {
+    Engage,   ///< the attachment took over from the contacts
+    Release,  ///< the contacts took over again
+    Detach    ///< multi only: one finger went back to contact, the others still hold
+};
+
+/// The word for `kind` in events.csv: "engage", "release" or "detach".
+std::string toString(GraspEventKind kind);
+
 /// One switch of the approximation.
 struct GraspEvent {
-    double time = 0;     ///< s
-    std::string kind;    ///< "engage" or "release"
+    double time = 0;       ///< s
+    GraspEventKind kind = GraspEventKind::Engage;
     double quality = 0;  ///< grasp quality Q at the switch (N; when releasing, the engaged estimate)
     std::string reason;  ///< why, with the numbers
     /// Release only: |v_after - v_before| of the object's centre of mass across the switch (m/s),
@@ -91,7 +102,8 @@ struct GraspEvent {
 /// The periodic event handler described in the file comment (owned by the System once added).
 class GraspSwitch : public SimTK::PeriodicEventHandler {
 public:
-    /// @param scene the approx-mode scene (its contacts, bushing or weld, and finger mobilizers).
+    /// @param scene the approx-mode scene (its contacts, GraspScene::getAttachment() and finger
+    ///        mobilizers).
     /// @param controller the IK controller this handler runs while ungrasped (not itself added
     ///        to the System, so IK can be paused).
     /// @throws graspsim::InputError for a negative threshold or a slide distance <= 0.
@@ -136,8 +148,8 @@ private:
     bool isSticking(const std::vector<contact::ContactReport>& reports) const;
     double calcQualityOf(const SimTK::State& state, const std::vector<contact::ContactReport>& reports) const;
     void engage(SimTK::State& state, double quality, const std::vector<contact::ContactReport>& reports) const;
-    void placeConstraintFrames(SimTK::State& state, const SimTK::Vec3& p_GC) const;
-    void enableConstraint(SimTK::State& state, const SimTK::Vec6& limits, double leverArm) const;
+    void placeConstraintFrames(const SimTK::State& state, const SimTK::Vec3& p_GC,
+                               grasp::AttachmentEngagement& engagement) const;
     void release(SimTK::State& state, double quality, const std::string& reason) const;
     void setFingersMerged(SimTK::State& state, bool merged) const;
     std::string describeRelease(const SimTK::State& state, double quality) const;
@@ -145,6 +157,7 @@ private:
 
     const GraspScene& scene_;
     const control::GraspController& controller_;
+    const grasp::GraspAttachment& attachment_;
     ApproxOptions options_;
     std::unique_ptr<MultiAttachmentSwitch> multi_;  // ApproxAttach::Multi: replaces the merge (c) and (d)
     std::vector<std::string> goalBodies_;  // body of each goal end-effector

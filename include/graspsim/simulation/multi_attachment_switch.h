@@ -1,6 +1,6 @@
 #pragma once
 /// @file
-/// The `multi` attachment of `--mode approx --attach multi` (issue 4 item 4): what the grasp switch
+/// The `multi` attachment of `--mode approx --attach multi`: what the grasp switch
 /// (grasp_switch.h) does instead of merging the hand when ApproxOptions::attach is Multi.
 ///
 /// Engage (same trigger as merged: full contact and Q >= Q_Th once settled):
@@ -52,11 +52,6 @@ namespace graspsim::simulation {
 class GraspScene;
 struct GraspEvent;
 
-/// Whether the scene of `scenario` supports `options.approx.attach` in approx mode: multi needs
-/// the bushing realization, and every goal end-effector on a body with contact geometry.
-/// Call before anything is written. @throws graspsim::InputError naming --attach otherwise.
-void checkApproxAttach(const scenario::Scenario& scenario, const SimulationOptions& options);
-
 /// The multi variant's engage / detach / release steps (see the file comment). Used by GraspSwitch.
 class MultiAttachmentSwitch {
 public:
@@ -72,8 +67,6 @@ public:
     /// contact, and attaching one that slides (e.g. right after a release, the object falling) would
     /// freeze the slide. `reports`: the contacts of the state to judge.
     bool isSticking(const std::vector<contact::ContactReport>& reports) const;
-    /// Whether any finger is attached in `state`.
-    bool isEngaged(const SimTK::State& state) const;
     /// Steps (a), (b), (d); returns the limits, per finger, as text for the engage event.
     std::string engage(SimTK::State& state, const std::vector<contact::ContactReport>& reports) const;
     /// Detaches the fingers that left (appending "detach" events with `quality`, N); returns why the
@@ -88,7 +81,6 @@ public:
 private:
     int findFinger(const std::string& body) const;
     std::string describeDetach(const SimTK::State& state, int finger) const;
-    void stiffenPart(SimTK::State& state, int finger, const grasp::FingerLoad& load, double mu) const;
 
     const GraspScene& scene_;
     double slideLimit_;

@@ -8,6 +8,10 @@
 #include <optional>
 #include <string>
 
+namespace graspsim::scenario {
+struct Scenario;
+}
+
 namespace graspsim::simulation {
 
 /// How finger-object contact is modelled.
@@ -64,7 +68,8 @@ struct ApproxOptions {
     /// dynamic one (the compliant contact holds until the static coefficient; docs/capacity.md).
     bool staticFrictionLimits = false;
     /// Bound on the growth of the fingertips' penetration while engaged from the bushing's elastic
-    /// deflection (m; issue 4: no visible interpenetration, <= 0.1 mm). On engagement the bushing
+    /// deflection (m; the thesis's conclusion names fingertips sinking into the object as the
+    /// approximation's visible flaw: 0.1 mm is not visible). On engagement the bushing
     /// is stiffened so that its deflection at the friction limits stays within it (grasp_switch.h).
     double maxEngagedPenetration = 1e-4;
     /// The constraint realization. Default bushing (the first one built; results measured so far
@@ -109,5 +114,10 @@ std::string toString(SimulationMode mode);
 /// Parses "merged" or "multi". @throws graspsim::InputError naming `source`, the value and the choices.
 ApproxAttach parseApproxAttach(const std::string& text, const std::string& source);
 std::string toString(ApproxAttach attach);
+
+/// Whether the scene of `scenario` supports `options.approx.attach` in approx mode: multi needs
+/// the bushing realization, and every goal end-effector on a body with contact geometry.
+/// Call before anything is written. @throws graspsim::InputError naming --attach otherwise.
+void checkApproxAttach(const scenario::Scenario& scenario, const SimulationOptions& options);
 
 }  // namespace graspsim::simulation

@@ -1,7 +1,8 @@
 #pragma once
 /// @file
-/// The bounds `graspsim validate` holds each run to, taken from the issues that defined them,
-/// and what one run measured against its full-contact reference.
+/// The bounds `graspsim validate` holds each run to, each with its reason (the thesis section it
+/// comes from, the closed form, or the physical meaning of the tolerance), and what one run
+/// measured against its full-contact reference.
 
 #include "graspsim/simulation/grasp_simulation.h"
 #include "graspsim/validation/trajectory_comparison.h"
@@ -53,7 +54,7 @@ struct ValidationCheck {
     std::string unit;    ///< "mm", "deg", "s", "" (booleans: 1 = true)
     std::string relation;  ///< "<=", ">=" or "=="
     bool pass = false;
-    std::string source;  ///< where the bound comes from (issue and item)
+    std::string source;  ///< why the bound holds: thesis section, closed form, or physical meaning
 };
 
 /// Fills the comparison fields of `record` from its own and its reference's results.

@@ -17,7 +17,7 @@ struct ValidationRun {
     std::string variant;       ///< "full" or an approximation variant, e.g. "approx-bushing-merged"
     simulation::SimulationOptions options;
     std::string reference;     ///< id of the full-contact run it is compared with; empty for a full-contact run
-    /// The long hold of the reliability issue: an approximation run of several minutes checked
+    /// The long hold: an approximation run of several minutes checked
     /// for finite states and drift, not compared with full contact.
     bool longHold = false;
 };

@@ -11,6 +11,8 @@
 
 #include "graspsim/model/model_description.h"
 #include "graspsim/scenario/scenario.h"
+#include "graspsim/simulation/grasp_switch.h"
+#include "graspsim/simulation/simulation_options.h"
 
 #include <array>
 #include <map>
@@ -41,7 +43,7 @@ struct ContactRow {
 /// One row of events.csv.
 struct EventRow {
     double time = 0;     ///< s
-    std::string kind;    ///< "engage" or "release"
+    simulation::GraspEventKind kind = simulation::GraspEventKind::Engage;
     std::string reason;
 };
 
@@ -61,7 +63,8 @@ struct ResultRecord {
     model::ModelDescription model;   ///< model.urdf
     std::string summaryJson;         ///< summary.json as written
     std::string provenanceJson;      ///< provenance.json as written
-    std::string mode, contactModel, perturbation, realization;  ///< from summary.json (realization: the approximation's constraint, bushing or weld)
+    simulation::SimulationMode mode = simulation::SimulationMode::Full;
+    std::string contactModel, perturbation, realization;  ///< from summary.json (realization: the approximation's constraint, bushing or weld)
     double simTime = 0;              ///< simulated time reached (s), from summary.json
     std::vector<TrajectoryRow> trajectory;
     std::vector<ContactRow> contacts;
