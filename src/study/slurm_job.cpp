@@ -1,6 +1,7 @@
 #include "graspsim/study/slurm_job.h"
 
 #include "graspsim/error.h"
+#include "graspsim/io/shell_quote.h"
 
 #include <sys/wait.h>
 
@@ -8,16 +9,6 @@
 #include <sstream>
 
 namespace graspsim::study {
-
-namespace {
-
-std::string quoteForShell(const std::string& text) {
-    std::string quoted = "'";
-    for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return quoted + "'";
-}
-
-}  // namespace
 
 std::string formatSbatchScript(const SlurmJob& job) {
     std::ostringstream s;
@@ -30,15 +21,15 @@ std::string formatSbatchScript(const SlurmJob& job) {
       << "#SBATCH --cpus-per-task=1\n"
       << "#SBATCH --output=" << job.folder << "/slurm/task-%a.log\n"
       << "set -euo pipefail\n"
-      << "exec " << quoteForShell(job.executable) << " study run " << quoteForShell(job.studyFile) << " --out "
-      << quoteForShell(job.folder) << " --jobs 1 --shard \"${SLURM_ARRAY_TASK_ID}/${SLURM_ARRAY_TASK_COUNT}\"\n";
+      << "exec " << io::quoteForShell(job.executable) << " study run " << io::quoteForShell(job.studyFile) << " --out "
+      << io::quoteForShell(job.folder) << " --jobs 1 --shard \"${SLURM_ARRAY_TASK_ID}/${SLURM_ARRAY_TASK_COUNT}\"\n";
     return s.str();
 }
 
 std::string submitSlurmJob(const std::string& scriptPath, const std::vector<std::string>& sbatchArguments) {
     std::string command = "sbatch --parsable";
-    for (const std::string& argument : sbatchArguments) command += " " + quoteForShell(argument);
-    command += " " + quoteForShell(scriptPath) + " 2>&1";
+    for (const std::string& argument : sbatchArguments) command += " " + io::quoteForShell(argument);
+    command += " " + io::quoteForShell(scriptPath) + " 2>&1";
     FILE* pipe = ::popen(command.c_str(), "r");
     if (!pipe) throw Error("cannot start sbatch");
     std::string output;

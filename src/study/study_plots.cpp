@@ -3,6 +3,7 @@
 #include "embedded_study_scripts.h"
 
 #include "graspsim/io/atomic_file.h"
+#include "graspsim/io/shell_quote.h"
 #include "graspsim/validation/plot_script.h"
 
 #include <sys/wait.h>
@@ -11,16 +12,6 @@
 #include <cstdio>
 
 namespace graspsim::study {
-
-namespace {
-
-std::string quoteForShell(const std::string& text) {
-    std::string quoted = "'";
-    for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return quoted + "'";
-}
-
-}  // namespace
 
 PlotOutcome drawStudyPlots(const std::string& folder) {
     PlotOutcome outcome;
@@ -32,7 +23,7 @@ PlotOutcome drawStudyPlots(const std::string& folder) {
     }
     const std::string script = folder + "/plot_study.py";
     io::writeFileAtomically(script, std::string(io::findEmbeddedFile(kEmbeddedFiles, kEmbeddedFileCount, "plot_study.py")));
-    const std::string command = quoteForShell(python) + " " + quoteForShell(script) + " " + quoteForShell(folder) + " 2>&1";
+    const std::string command = io::quoteForShell(python) + " " + io::quoteForShell(script) + " " + io::quoteForShell(folder) + " 2>&1";
     FILE* pipe = ::popen(command.c_str(), "r");
     if (!pipe) {
         outcome.skipped = "plots skipped: cannot start " + python;

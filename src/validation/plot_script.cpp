@@ -4,6 +4,7 @@
 
 #include "graspsim/error.h"
 #include "graspsim/io/atomic_file.h"
+#include "graspsim/io/shell_quote.h"
 
 #include <sys/wait.h>
 
@@ -11,17 +12,6 @@
 #include <cstdlib>
 
 namespace graspsim::validation {
-
-namespace {
-
-// Single-quoted for /bin/sh: every ' becomes '\''.
-std::string quoteForShell(const std::string& text) {
-    std::string quoted = "'";
-    for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return quoted + "'";
-}
-
-}  // namespace
 
 std::string findPythonInterpreter() {
     const char* python = std::getenv("GRASPSIM_PYTHON");
@@ -31,7 +21,7 @@ std::string findPythonInterpreter() {
 std::vector<std::string> runPlotScript(const std::string& folder) {
     const std::string script = folder + "/plot_validation.py";
     io::writeFileAtomically(script, std::string(io::findEmbeddedFile(kEmbeddedFiles, kEmbeddedFileCount, "plot_validation.py")));
-    const std::string command = quoteForShell(findPythonInterpreter()) + " " + quoteForShell(script) + " " + quoteForShell(folder);
+    const std::string command = io::quoteForShell(findPythonInterpreter()) + " " + io::quoteForShell(script) + " " + io::quoteForShell(folder);
     FILE* pipe = ::popen(command.c_str(), "r");
     if (!pipe) throw Error("cannot start " + command);
     std::vector<std::string> plots;
