@@ -13,7 +13,7 @@ using graspsim::capacity::runBisection;
 using graspsim::capacity::runRamp;
 using graspsim::capacity::SqueezeCase;
 
-// The grid of issue 17: three mu and three N, mu = 0.5 and N = 10 (validation's case) not among them.
+// The grid: three mu and three N, mu = 0.5 and N = 10 (validation's case) not among them.
 const double kMus[] = {0.3, 0.6, 0.9};
 const double kPresses[] = {4, 12, 25};
 

@@ -1,7 +1,7 @@
 #pragma once
 /// @file
 /// The holding capacity of a grasp scenario: how large a load on the object the grasp holds
-/// before the object slips, and before it drops (issue 17).
+/// before the object slips, and before it drops.
 ///
 /// The scene is the simulation's (simulation::GraspScene, any contact model and mode) with a
 /// simulation::RampLoad on the object. The load starts kLoadStartDelay after the scenario's

@@ -64,7 +64,7 @@ struct ApproxOptions {
     /// (m): about the radius of a fingertip pad, beyond which the fingers would have lost the
     /// spots they pressed into.
     double releaseSlideDistance = 0.005;
-    /// Opt-in (issue 17): the friction limits from the scenario's STATIC friction instead of the
+    /// Opt-in, for comparing capacities: the friction limits from the scenario's STATIC friction instead of the
     /// dynamic one (the compliant contact holds until the static coefficient; docs/capacity.md).
     bool staticFrictionLimits = false;
     /// Bound on the growth of the fingertips' penetration while engaged from the bushing's elastic
