@@ -82,7 +82,9 @@ TEST_F(StudyRunner, TwoHundredCasesEachCommittedOnceMemoryFlat) {
     std::cout << "study process from case " << kWarmUp << " to " << kCases << ": live heap growth " << heapGrowth / 1e3
               << " kB, resident set growth " << residentGrowth / 1e3 << " kB\n";
     EXPECT_LT(heapGrowth, 100e3);  // one case's setup (scenario text, YAML) is ~100 kB
+#ifndef GRASPSIM_SANITIZED  // AddressSanitizer keeps freed blocks in quarantine: resident set grows by design
     EXPECT_LT(residentGrowth, 2e6);
+#endif
 
     // Run again: everything is finished, nothing runs.
     settings.progress = {};
