@@ -72,8 +72,8 @@ ContactShape ContactShape::fromGeometry(const model::Geometry& geometry) {
         }
         case model::Geometry::Type::Cylinder:
         case model::Geometry::Type::Mesh:
-            throw InputError(what + ": type " +
-                             (geometry.type == model::Geometry::Type::Mesh ? "mesh" : "cylinder") +
+        case model::Geometry::Type::Ellipsoid:
+            throw InputError(what + ": type " + model::toString(geometry.type) +
                              " has no contact support; use sphere, capsule or box");
     }
     shape.validate(what);

@@ -46,6 +46,13 @@ Inertia calcInertiaInGeometryFrame(const Geometry& g, double density) {
         case Geometry::Type::Capsule:
             I = calcCapsuleInertia(g.radius, g.length, density);
             break;
+        case Geometry::Type::Ellipsoid: {
+            const double a = g.semiAxes[0], b = g.semiAxes[1], c = g.semiAxes[2];
+            I.xx = m * (b * b + c * c) / 5;
+            I.yy = m * (a * a + c * c) / 5;
+            I.zz = m * (a * a + b * b) / 5;
+            break;
+        }
         case Geometry::Type::Mesh:
             break;  // calcVolume already threw
     }
@@ -64,6 +71,8 @@ double calcVolume(const Geometry& g) {
             return kPi * g.radius * g.radius * g.length;
         case Geometry::Type::Capsule:
             return kPi * g.radius * g.radius * g.length + 4.0 / 3.0 * kPi * g.radius * g.radius * g.radius;
+        case Geometry::Type::Ellipsoid:
+            return 4.0 / 3.0 * kPi * g.semiAxes[0] * g.semiAxes[1] * g.semiAxes[2];
         case Geometry::Type::Mesh:
             break;
     }

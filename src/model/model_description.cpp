@@ -114,6 +114,11 @@ void validateBody(const std::string& source, const Body& body) {
                 if (!(h > 0)) fail(source, field + " size", describe(2 * h), "box sizes must be > 0 m");
             }
         }
+        if (g.type == Geometry::Type::Ellipsoid) {
+            for (double a : g.semiAxes) {
+                if (!(a > 0 && std::isfinite(a))) fail(source, field + " semi_axes", describe(a), "must be > 0 m");
+            }
+        }
     }
 }
 
@@ -224,6 +229,18 @@ void ModelDescription::validate(const std::string& source) const {
     for (const Body& b : bodies) validateBody(source, b);
     for (const Joint& j : joints) validateJoint(source, j);
     validateTree(source, *this);
+}
+
+std::string toString(Geometry::Type type) {
+    switch (type) {
+        case Geometry::Type::Sphere: return "sphere";
+        case Geometry::Type::Box: return "box";
+        case Geometry::Type::Capsule: return "capsule";
+        case Geometry::Type::Cylinder: return "cylinder";
+        case Geometry::Type::Mesh: return "mesh";
+        case Geometry::Type::Ellipsoid: return "ellipsoid";
+    }
+    return "unknown";
 }
 
 }  // namespace graspsim::model

@@ -59,6 +59,8 @@ void appendShape(TiXmlElement& parent, const Geometry& g) {
             break;
         case Geometry::Type::Capsule:
             break;  // appendGeometry splits capsules first
+        case Geometry::Type::Ellipsoid:
+            throw InputError("geometry '" + g.name + "': URDF has no ellipsoid element");
     }
 }
 

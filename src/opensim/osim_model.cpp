@@ -98,6 +98,9 @@ void appendShape(TiXmlElement& geometryList, const std::string& name, const Geom
         case Geometry::Type::Mesh:
             appendText(*appendElement(geometryList, "Mesh", name), "mesh_file", g.meshFile);
             return;
+        case Geometry::Type::Ellipsoid:
+            appendText(*appendElement(geometryList, "Ellipsoid", name), "radii", formatVec3(g.semiAxes));
+            return;
     }
 }
 

@@ -13,6 +13,7 @@
 /// joints through massless "virtual" bodies, exactly as URDF writes them.
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -21,6 +22,13 @@ namespace graspsim::model {
 
 /// A 3-vector, in the frame named by the field that holds it.
 using Vec3 = std::array<double, 3>;
+
+/// A closed triangle mesh (m): vertices, and triangles as vertex indices ordered
+/// counter-clockwise seen from outside (so the right-hand normals point out).
+struct TriangleMesh {
+    std::vector<Vec3> vertices;                 ///< in the geometry frame, scale applied (m)
+    std::vector<std::array<int, 3>> triangles;  ///< indices into vertices
+};
 
 /// A rigid transform: rotation R (row-major 3x3) and translation p, X_AB maps B coordinates to A.
 struct Transform {
@@ -49,15 +57,24 @@ struct Inertia {
 
 /// Collision (and display) geometry attached to a body.
 struct Geometry {
-    enum class Type { Sphere, Box, Capsule, Cylinder, Mesh };
+    enum class Type { Sphere, Box, Capsule, Cylinder, Mesh, Ellipsoid };
     Type type = Type::Sphere;
     std::string name;          ///< unique within the body
     Transform X_BG;            ///< pose of the geometry frame G in the body frame B
     double radius = 0;         ///< sphere, capsule, cylinder radius (m)
     double length = 0;         ///< capsule and cylinder: length of the axis segment along G's z, excluding caps (m)
     Vec3 halfLengths{0, 0, 0}; ///< box half-lengths along G's x, y, z (m)
-    std::string meshFile;      ///< mesh: file name as given (not loaded by graspsim)
+    Vec3 semiAxes{0, 0, 0};    ///< ellipsoid semi-axes along G's x, y, z (m)
+    std::string meshFile;      ///< mesh: file name as given
+    Vec3 meshScale{1, 1, 1};   ///< mesh: scale applied to the file's coordinates per axis of G
+    /// Mesh: the loaded vertices and triangles (scale applied), when graspsim has read the file;
+    /// null for a mesh known only by name (a display mesh of an imported URDF).
+    std::shared_ptr<const TriangleMesh> mesh;
 };
+
+/// The geometry type's lower-case name as scenario files write it ("sphere", "box", "capsule",
+/// "cylinder", "mesh", "ellipsoid").
+std::string toString(Geometry::Type type);
 
 /// A rigid body.
 struct Body {
