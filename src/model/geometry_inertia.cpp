@@ -1,6 +1,7 @@
 #include "graspsim/model/geometry_inertia.h"
 
 #include "graspsim/error.h"
+#include "graspsim/model/triangle_mesh.h"
 
 #include <algorithm>
 #include <cmath>
@@ -53,8 +54,13 @@ Inertia calcInertiaInGeometryFrame(const Geometry& g, double density) {
             I.zz = m * (a * a + b * b) / 5;
             break;
         }
-        case Geometry::Type::Mesh:
-            break;  // calcVolume already threw
+        case Geometry::Type::Mesh: {
+            // Unit-density inertia scales linearly with density.
+            const Inertia unit = calcMeshMassProperties(*g.mesh).inertia;
+            I = Inertia{density * unit.xx, density * unit.yy, density * unit.zz,
+                        density * unit.xy, density * unit.xz, density * unit.yz};
+            break;
+        }
     }
     return I;
 }
@@ -74,10 +80,11 @@ double calcVolume(const Geometry& g) {
         case Geometry::Type::Ellipsoid:
             return 4.0 / 3.0 * kPi * g.semiAxes[0] * g.semiAxes[1] * g.semiAxes[2];
         case Geometry::Type::Mesh:
+            if (g.mesh) return calcMeshMassProperties(*g.mesh).mass;
             break;
     }
     throw InputError("geometry '" + g.name + "' (mesh " + g.meshFile +
-                     "): graspsim computes volumes of spheres, boxes, cylinders and capsules only");
+                     "): graspsim computes the volume of a mesh only once it has read the file");
 }
 
 std::array<double, 3> calcPrincipalMoments(const Inertia& I) {
@@ -113,7 +120,9 @@ Inertia reexpressInertia(const Inertia& I_G, const Transform& X_BG) {
 MassProperties calcSolidMassProperties(const Geometry& g, double density) {
     MassProperties mp;
     mp.mass = density * calcVolume(g);
-    mp.p_BCm = g.X_BG.p;
+    // Only a mesh's centroid may lie off its geometry frame's origin.
+    mp.p_BCm = g.type == Geometry::Type::Mesh ? g.X_BG.shiftFrameStationToBase(calcMeshMassProperties(*g.mesh).p_BCm)
+                                              : g.X_BG.p;
     mp.inertia = reexpressInertia(calcInertiaInGeometryFrame(g, density), g.X_BG);
     return mp;
 }

@@ -2,6 +2,7 @@
 
 #include "graspsim/error.h"
 #include "graspsim/model/geometry_inertia.h"
+#include "graspsim/model/triangle_mesh.h"
 
 namespace graspsim::model {
 
@@ -38,6 +39,48 @@ ModelDescription buildPhoneModel(double mass, const Vec3& size) {
     box.name = "phone_box";
     box.halfLengths = {size[0] / 2, size[1] / 2, size[2] / 2};
     return makeSolidObject("phone", box, mass);
+}
+
+namespace {
+
+Geometry makeAxialGeometry(Geometry::Type type, const std::string& name, double radius, double length) {
+    Geometry g;
+    g.type = type;
+    g.name = name;
+    g.radius = radius;
+    g.length = length;
+    return g;
+}
+
+}  // namespace
+
+ModelDescription buildCylinderModel(double mass, double radius, double length) {
+    return makeSolidObject("cylinder", makeAxialGeometry(Geometry::Type::Cylinder, "cylinder_shape", radius, length),
+                           mass);
+}
+
+ModelDescription buildCapsuleModel(double mass, double radius, double length) {
+    return makeSolidObject("capsule", makeAxialGeometry(Geometry::Type::Capsule, "capsule_shape", radius, length), mass);
+}
+
+ModelDescription buildEllipsoidModel(double mass, const Vec3& semiAxes) {
+    Geometry ellipsoid;
+    ellipsoid.type = Geometry::Type::Ellipsoid;
+    ellipsoid.name = "ellipsoid_shape";
+    ellipsoid.semiAxes = semiAxes;
+    return makeSolidObject("ellipsoid", ellipsoid, mass);
+}
+
+ModelDescription buildMeshModel(double mass, const TriangleMesh& mesh, const std::string& meshFile,
+                                const Vec3& scale) {
+    const Vec3 centroid = calcMeshMassProperties(mesh).p_BCm;
+    Geometry g;
+    g.type = Geometry::Type::Mesh;
+    g.name = "mesh_shape";
+    g.meshFile = meshFile;
+    g.meshScale = scale;
+    g.mesh = std::make_shared<const TriangleMesh>(translateMesh(mesh, {-centroid[0], -centroid[1], -centroid[2]}));
+    return makeSolidObject("mesh", g, mass);
 }
 
 ModelDescription buildObjectModel(const std::string& name, const std::string& source) {

@@ -1,5 +1,7 @@
 #include "scenario_reader.h"
 
+#include "object_reader.h"
+
 #include "graspsim/anthropometry/sex.h"
 #include "graspsim/anthropometry/subject.h"
 #include "graspsim/anthropometry/units.h"
@@ -64,38 +66,6 @@ void readSubject(const YamlField& root, model::BuildOptions& options) {
     if (const std::optional<YamlField> preset = section.find("preset")) {
         options.preset = model::parsePreset(preset->asText("preset must be thesis or none"), preset->describePlace());
     }
-}
-
-ObjectShape readShape(const YamlField& field) {
-    const std::string text = field.asText("shape must be sphere or box");
-    if (text == "sphere") return ObjectShape::Sphere;
-    if (text == "box") return ObjectShape::Box;
-    field.reject("shape must be sphere or box");
-}
-
-void rejectIfGiven(const YamlField& section, const std::string& key, const std::string& why) {
-    if (const std::optional<YamlField> field = section.find(key)) field->reject(why);
-}
-
-ObjectSpec readObject(const YamlField& root) {
-    const YamlField section =
-        root.require("object", "a scenario needs the object: shape, mass, radius or size, position");
-    section.requireMap({"shape", "mass", "radius", "size", "position", "orientation"});
-    ObjectSpec object;
-    object.shape = readShape(section.require("shape", "shape must be sphere or box"));
-    object.mass = section.getNumber("mass", NumberRule::positive("mass", "kg"));
-    if (object.shape == ObjectShape::Sphere) {
-        object.radius = section.getNumber("radius", NumberRule::positive("radius", "m"));
-        rejectIfGiven(section, "size", "a sphere has a radius, not a size");
-    } else {
-        object.size = section.getVec3("size", NumberRule::positive("size", "m"));
-        rejectIfGiven(section, "radius", "a box has a size [x, y, z], not a radius");
-    }
-    object.position = section.getVec3("position", NumberRule::any("position", "m"));
-    const model::Vec3 degrees =
-        section.findVec3("orientation", NumberRule::closed("orientation", "deg", -360, 360), {0, 0, 0});
-    for (int i = 0; i < 3; ++i) object.orientation[i] = fromDegrees(degrees[i]);
-    return object;
 }
 
 std::vector<std::string> getJointNames(const model::ModelDescription& body) {
@@ -177,12 +147,6 @@ ContactSpec readContact(const YamlField& root) {
     return contact;
 }
 
-// Half the object's smallest dimension: a goal pressed deeper would pass its centre plane.
-double findHalfThickness(const ObjectSpec& object) {
-    if (object.shape == ObjectShape::Sphere) return object.radius;
-    return std::min({object.size[0], object.size[1], object.size[2]}) / 2;
-}
-
 ControllerSpec readController(const YamlField& root, const ObjectSpec& object) {
     const YamlField section =
         root.getSection("controller", {"approach_time", "press_depth", "kp", "kd", "ik_interval"});
@@ -190,7 +154,7 @@ ControllerSpec readController(const YamlField& root, const ObjectSpec& object) {
     controller.approachTime =
         section.findNumber("approach_time", NumberRule::nonNegative("approach time", "s"), controller.approachTime);
     NumberRule depth =
-        NumberRule::closed("press depth (less than half the object's thickness)", "m", 0, findHalfThickness(object));
+        NumberRule::closed("press depth (less than half the object's thickness)", "m", 0, object.findHalfThickness());
     depth.upperOpen = true;
     controller.pressDepth = readFitting(section, "press_depth", depth, controller.pressDepth);
     controller.kp = section.findNumber("kp", NumberRule::positive("kp", "N m/rad"), controller.kp);

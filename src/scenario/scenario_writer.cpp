@@ -32,14 +32,33 @@ std::string quote(const std::string& text) {
     return quoted + "\"";
 }
 
+void writeObjectDimensions(std::ostringstream& out, const ObjectSpec& o) {
+    switch (o.shape) {
+        case ObjectShape::Sphere: out << "  radius: " << formatNumber(o.radius) << "\n"; break;
+        case ObjectShape::Box: out << "  size: " << formatVec3(o.size) << "\n"; break;
+        case ObjectShape::Cylinder:
+        case ObjectShape::Capsule:
+            out << "  radius: " << formatNumber(o.radius) << "\n  length: " << formatNumber(o.length) << "\n";
+            break;
+        case ObjectShape::Ellipsoid: out << "  semi_axes: " << formatVec3(o.semiAxes) << "\n"; break;
+        case ObjectShape::Mesh: {
+            // The path as the scenario gave it, so it still resolves next to the scenario file.
+            out << "  mesh: " << quote(o.mesh) << "\n";
+            const Vec3& s = o.meshScale;
+            if (s[0] == s[1] && s[1] == s[2]) out << "  scale: " << formatNumber(s[0]) << "\n";
+            else out << "  scale: " << formatVec3(s) << "\n";
+            break;
+        }
+    }
+}
+
 void writeSubjectAndObject(std::ostringstream& out, const Scenario& s) {
     const anthropometry::Subject& subject = s.bodyOptions.subject;
     out << "subject:\n  sex: " << anthropometry::toString(subject.sex) << "\n  mass: " << formatNumber(subject.mass)
         << "\n  stature: " << formatNumber(subject.stature) << "\n  preset: " << model::toString(s.bodyOptions.preset) << "\n\n";
     const ObjectSpec& o = s.object;
     out << "object:\n  shape: " << toString(o.shape) << "\n  mass: " << formatNumber(o.mass) << "\n";
-    if (o.shape == ObjectShape::Sphere) out << "  radius: " << formatNumber(o.radius) << "\n";
-    else out << "  size: " << formatVec3(o.size) << "\n";
+    writeObjectDimensions(out, o);
     out << "  position: " << formatVec3(o.position) << "\n  orientation: " << formatVec3(o.orientation, 1 / anthropometry::fromDegrees(1.0))
         << "  # deg\n\n";
 }

@@ -59,6 +59,8 @@ public:
     YamlField require(const std::string& key, const std::string& accepted) const;
     // True for a key written without a value ("contact:" with every line under it commented out).
     bool isEmpty() const { return !node_.IsDefined() || node_.IsNull(); }
+    // True for a list value ("[1, 2, 3]").
+    bool isSequence() const { return node_.IsSequence(); }
     // The child map `key`, checked against `accepted`; when the file leaves it out or empty, an
     // empty map at its line, so that an optional section reads its defaults like a given one.
     YamlField getSection(const std::string& key, const std::vector<std::string>& accepted) const;

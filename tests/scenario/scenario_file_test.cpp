@@ -261,9 +261,31 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"short vector", "position: [0.4, -0.2, 0]", "position: [0.4, -0.2]",
                  {"'object.position'", "'[0.4, -0.2]'", "three finite numbers"}},
         BadInput{"map for a number", "mass: 0.2", "mass: {kg: 0.2}", {"'object.mass'", "'{kg: 0.2}'"}},
-        BadInput{"unknown shape", "shape: sphere", "shape: cube", {"'object.shape'", "'cube'", "sphere or box"}},
+        BadInput{"unknown shape", "shape: sphere", "shape: cube", {"'object.shape'", "'cube'", "sphere, box, cylinder, capsule, ellipsoid or mesh"}},
         BadInput{"size on a sphere", "radius: 0.045", "radius: 0.045\n  size: [1, 1, 1]",
                  {"'object.size'", "'[1, 1, 1]'", "radius, not a size"}},
+        BadInput{"cylinder without length", "shape: sphere", "shape: cylinder",
+                 {"'object.length'", "is missing", "> 0 m"}},
+        BadInput{"zero cylinder length", "shape: sphere", "shape: cylinder\n  length: 0",
+                 {"'object.length'", "'0'", "> 0 m"}},
+        BadInput{"negative capsule radius", "shape: sphere\n  mass: 0.2\n  radius: 0.045",
+                 "shape: capsule\n  mass: 0.2\n  radius: -0.01\n  length: 0.1", {"'object.radius'", "'-0.01'"}},
+        BadInput{"ellipsoid without semi-axes", "shape: sphere\n  mass: 0.2\n  radius: 0.045",
+                 "shape: ellipsoid\n  mass: 0.2", {"'object.semi_axes'", "is missing"}},
+        BadInput{"zero semi-axis", "shape: sphere\n  mass: 0.2\n  radius: 0.045",
+                 "shape: ellipsoid\n  mass: 0.2\n  semi_axes: [0.05, 0, 0.05]", {"'object.semi_axes'", "each > 0 (m)"}},
+        BadInput{"radius on an ellipsoid", "shape: sphere\n  mass: 0.2",
+                 "shape: ellipsoid\n  mass: 0.2\n  semi_axes: [0.05, 0.05, 0.05]",
+                 {"'object.radius'", "semi_axes", "not a radius"}},
+        BadInput{"length on a sphere", "radius: 0.045", "radius: 0.045\n  length: 0.1",
+                 {"'object.length'", "not a length"}},
+        BadInput{"mesh without a file", "shape: sphere\n  mass: 0.2\n  radius: 0.045",
+                 "shape: mesh\n  mass: 0.2", {"'object.mesh'", "is missing"}},
+        BadInput{"missing mesh file", "shape: sphere\n  mass: 0.2\n  radius: 0.045",
+                 "shape: mesh\n  mass: 0.2\n  mesh: no_such.stl", {"'object.mesh'", "no_such.stl", "not a readable file"}},
+        BadInput{"negative mesh scale", "shape: sphere\n  mass: 0.2\n  radius: 0.045",
+                 "shape: mesh\n  mass: 0.2\n  mesh: box.stl\n  scale: -1", {"'object.scale'", "'-1'", "> 0"}},
+        BadInput{"zero mass", "mass: 0.2", "mass: 0", {"'object.mass'", "'0'", "> 0 kg"}},
         BadInput{"negative static friction", "static_friction: 0.9", "static_friction: -0.1",
                  {"'contact.static_friction'", "'-0.1'", ">= 0"}},
         BadInput{"dynamic above static friction", "dynamic_friction: 0.7", "dynamic_friction: 1.2",
@@ -320,6 +342,42 @@ INSTANTIATE_TEST_SUITE_P(
         for (char c : param.param.what) name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
         return name;
     });
+
+// A mesh path is resolved next to the scenario file; a bad mesh is refused in one line naming
+// the scenario file, the field and the mesh file.
+TEST(ScenarioFile, BadMeshFilesAreRefusedNamingScenarioFieldAndFile) {
+    const std::string source = GRASPSIM_TEST_DATA_DIR "/meshes/test.yaml";
+    const std::vector<std::pair<std::string, std::string>> cases{
+        {"open_box.stl", "is not closed"}, {"inverted_box.obj", "inverted normals"},
+        {"l_shape.stl", "is not convex"},  {"empty.stl", "is empty"}};
+    for (const auto& [file, why] : cases) {
+        const std::string text = replaceOnce(kBase, "shape: sphere\n  mass: 0.2\n  radius: 0.045",
+                                             "shape: mesh\n  mass: 0.2\n  mesh: " + file);
+        std::string message;
+        try {
+            parseScenario(text, source);
+        } catch (const InputError& e) {
+            message = e.what();
+        }
+        EXPECT_EQ(message.rfind(source + ":5: field 'object.mesh' mesh file '", 0), 0u) << message;
+        EXPECT_NE(message.find("/meshes/" + file + "'"), std::string::npos) << message;
+        EXPECT_NE(message.find(why), std::string::npos) << message;
+        EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    }
+}
+
+TEST(ScenarioFile, MeshObjectIsCentredAtItsCentroid) {
+    // The test box has a corner at the file's origin; the object frame is at its centroid, so a
+    // goal on the +x face is at x = 0.02 whatever the file's origin.
+    std::string text = replaceOnce(kBase, "shape: sphere\n  mass: 0.2\n  radius: 0.045",
+                                   "shape: mesh\n  mass: 0.2\n  mesh: box.obj");
+    text = replaceOnce(text, "index_tip: [0.045, 0, 0]", "index_tip: [0.02, 0, 0]");
+    text = replaceOnce(text, "thumb_tip: [-0.045, 0, 0]", "thumb_tip: [-0.02, 0.01, 0]");
+    const Scenario s = parseScenario(text, GRASPSIM_TEST_DATA_DIR "/meshes/test.yaml");
+    ASSERT_TRUE(s.object.meshData);
+    EXPECT_NEAR(s.object.calcSurfaceDistance({0, 0, 0}), -0.01, 1e-7);
+    EXPECT_NEAR(s.object.findHalfThickness(), 0.01, 1e-7);
+}
 
 TEST(ScenarioFile, EmptyTextNamesTheSource) {
     const std::string message = parseError("");

@@ -4,6 +4,10 @@
 #include "graspsim/scenario/scenario_file.h"
 #include "graspsim/scenario/scenario_writer.h"
 
+#include "graspsim/error.h"
+#include "graspsim/model/mesh_file.h"
+#include "graspsim/model/triangle_mesh.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -29,6 +33,12 @@ void expectSameScenario(const Scenario& a, const Scenario& b) {
     EXPECT_EQ(a.object.mass, b.object.mass);
     EXPECT_EQ(a.object.radius, b.object.radius);
     expectVec3Eq(a.object.size, b.object.size);
+    EXPECT_EQ(a.object.length, b.object.length);
+    expectVec3Eq(a.object.semiAxes, b.object.semiAxes);
+    EXPECT_EQ(a.object.mesh, b.object.mesh);
+    expectVec3Eq(a.object.meshScale, b.object.meshScale);
+    EXPECT_EQ(a.object.meshData == nullptr, b.object.meshData == nullptr);
+    if (a.object.meshData && b.object.meshData) EXPECT_EQ(a.object.meshData->vertices, b.object.meshData->vertices);
     expectVec3Eq(a.object.position, b.object.position);
     expectVec3Eq(a.object.orientation, b.object.orientation, kAngleTolerance);
     ASSERT_EQ(a.graspPose.size(), b.graspPose.size());
@@ -86,6 +96,76 @@ TEST(ScenarioWriter, DefaultsAndEditedFieldsAreWrittenOut) {
         EXPECT_NE(text.find(key), std::string::npos) << key;
     }
     expectSameScenario(edited, parseScenario(text, "written.yaml"));
+}
+
+// The point where the ray from O through p meets the surface (every shape is star-shaped from
+// its centre of mass), by bisection on the signed distance.
+Vec3 projectToSurface(const ObjectSpec& object, const Vec3& p) {
+    double inside = 0, outside = 1;
+    while (object.calcSurfaceDistance({p[0] * outside, p[1] * outside, p[2] * outside}) < 0) outside *= 2;
+    for (int i = 0; i < 200; ++i) {
+        const double t = (inside + outside) / 2;
+        (object.calcSurfaceDistance({p[0] * t, p[1] * t, p[2] * t}) < 0 ? inside : outside) = t;
+    }
+    return {p[0] * outside, p[1] * outside, p[2] * outside};
+}
+
+// The ball-clutch scenario with its object swapped for another shape, goals moved onto it.
+Scenario makeShapeScenario(const ObjectSpec& object) {
+    Scenario s = findBuiltinScenario("ball-clutch");
+    const Vec3 position = s.object.position;
+    s.object = object;
+    s.object.position = position;
+    s.object.orientation = {0.1, 0.2, -0.3};
+    for (auto& [effector, p] : s.goals) p = projectToSurface(s.object, p);
+    return s;
+}
+
+TEST(ScenarioWriter, EveryShapeReadsBackUnchanged) {
+    std::vector<ObjectSpec> objects(5);
+    objects[0].shape = ObjectShape::Cylinder;
+    objects[0].radius = 0.03;
+    objects[0].length = 0.12;
+    objects[1].shape = ObjectShape::Capsule;
+    objects[1].radius = 0.025;
+    objects[1].length = 0.05;
+    objects[2].shape = ObjectShape::Ellipsoid;
+    objects[2].semiAxes = {0.05, 0.04, 0.03};
+    objects[3].shape = ObjectShape::Box;
+    objects[3].size = {0.05, 0.09, 0.03};
+    objects[4].shape = ObjectShape::Sphere;
+    objects[4].radius = 0.04;
+    for (ObjectSpec& object : objects) {
+        SCOPED_TRACE(toString(object.shape));
+        object.mass = 0.3;
+        const Scenario original = makeShapeScenario(object);
+        const std::string text = formatScenarioYaml(original);
+        const Scenario read = parseScenario(text, "written.yaml");
+        expectSameScenario(original, read);
+        EXPECT_EQ(formatScenarioYaml(read), text);
+    }
+}
+
+TEST(ScenarioWriter, MeshObjectReadsBackWithItsPathAndScale) {
+    // The mesh path is relative to the scenario file, so the written text is read as if it lay
+    // next to the test meshes.
+    const std::string source = GRASPSIM_TEST_DATA_DIR "/meshes/written.yaml";
+    for (const Vec3& scale : {Vec3{2, 2, 2}, Vec3{1, 2, 1.5}}) {
+        ObjectSpec object;
+        object.shape = ObjectShape::Mesh;
+        object.mass = 0.1;
+        object.mesh = "box.stl";
+        object.meshScale = scale;
+        const model::TriangleMesh mesh = model::readMeshFile(GRASPSIM_TEST_DATA_DIR "/meshes/box.stl", scale, "test");
+        const Vec3 c = model::calcMeshMassProperties(mesh).p_BCm;
+        object.meshData = std::make_shared<const model::TriangleMesh>(model::translateMesh(mesh, {-c[0], -c[1], -c[2]}));
+        const Scenario original = makeShapeScenario(object);
+        const std::string text = formatScenarioYaml(original);
+        EXPECT_NE(text.find(scale[0] == scale[1] ? "scale: 2\n" : "scale: [1, 2, 1.5]\n"), std::string::npos) << text;
+        const Scenario read = parseScenario(text, source);
+        expectSameScenario(original, read);
+        EXPECT_EQ(formatScenarioYaml(read), text);
+    }
 }
 
 }  // namespace

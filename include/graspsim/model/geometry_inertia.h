@@ -17,8 +17,8 @@ struct MassProperties {
     Inertia inertia;      ///< central inertia, expressed in B (kg m^2)
 };
 
-/// Volume of a sphere, box, cylinder or capsule (m^3).
-/// @throws graspsim::InputError for a mesh, whose volume graspsim does not compute.
+/// Volume of a sphere, box, cylinder, capsule, ellipsoid or loaded mesh (m^3).
+/// @throws graspsim::InputError for a mesh known only by file name (`mesh` null).
 double calcVolume(const Geometry& geometry);
 
 /// Mass properties of one solid of the given density (kg/m^3), in the body frame via X_BG.

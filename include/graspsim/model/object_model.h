@@ -26,6 +26,28 @@ ModelDescription buildBallModel(double mass = kBallMass, double radius = kBallRa
 /// A solid box of uniform density: body "phone" with box geometry "phone_box".
 ModelDescription buildPhoneModel(double mass = kPhoneMass, const Vec3& size = kPhoneSize);
 
+/// A solid cylinder of uniform density, axis along O's z: body "cylinder", geometry
+/// "cylinder_shape". `length` is the full height (m).
+ModelDescription buildCylinderModel(double mass, double radius, double length);
+
+/// A solid capsule of uniform density, axis along O's z: body "capsule", geometry
+/// "capsule_shape". `length` is its straight part, between the centres of its hemispherical caps (m).
+ModelDescription buildCapsuleModel(double mass, double radius, double length);
+
+/// A solid ellipsoid of uniform density with semi-axes (m) along O's x, y, z: body "ellipsoid",
+/// geometry "ellipsoid_shape".
+ModelDescription buildEllipsoidModel(double mass, const Vec3& semiAxes);
+
+/// A solid closed mesh of uniform density: body "mesh", geometry "mesh_shape". Mass properties
+/// come from the divergence theorem over signed tetrahedra (model/triangle_mesh.h). The object
+/// frame O must sit at the centre of mass, so the vertices are moved by minus their solid's
+/// centroid (the file's origin is not kept); O's axes are the file's axes, not rotated to
+/// principal axes, so the inertia keeps its products.
+/// @param mesh vertices (scale applied) and outward triangles, as model::readMeshFile returns them.
+/// @param meshFile, scale the file name and scale, kept for export.
+ModelDescription buildMeshModel(double mass, const TriangleMesh& mesh, const std::string& meshFile,
+                                const Vec3& scale);
+
 /// The named object ("ball" or "phone") at its thesis mass.
 /// @throws graspsim::InputError naming `source`, the value and the accepted names.
 ModelDescription buildObjectModel(const std::string& name, const std::string& source);

@@ -28,13 +28,17 @@ struct WorldSpec {
     Vec3 gravity{0, -9.81, 0};  ///< gravitational acceleration in G (m/s^2); default (0, -9.81, 0)
 };
 
-/// Shape of the grasped object.
+/// Shape of the grasped object (docs/shapes.md).
 enum class ObjectShape {
-    Sphere,  ///< solid sphere of `radius` (the thesis's ball)
-    Box      ///< solid box of `size` (the thesis's phone)
+    Sphere,     ///< solid sphere of `radius` (the thesis's ball)
+    Box,        ///< solid box of `size` (the thesis's phone)
+    Cylinder,   ///< solid cylinder of `radius` and `length` (full height) along O's z
+    Capsule,    ///< solid capsule of `radius` and `length` (its straight part) along O's z
+    Ellipsoid,  ///< solid ellipsoid of `semiAxes` along O's x, y, z
+    Mesh        ///< solid closed convex mesh read from `mesh` (STL or OBJ), scaled by `meshScale`
 };
 
-/// "sphere" or "box", the spelling a scenario file uses.
+/// "sphere", "box", "cylinder", "capsule", "ellipsoid" or "mesh", the spelling a scenario file uses.
 std::string toString(ObjectShape shape);
 
 /// The grasped object: a free rigid body of uniform density. No defaults for its shape, mass,
@@ -42,8 +46,15 @@ std::string toString(ObjectShape shape);
 struct ObjectSpec {
     ObjectShape shape = ObjectShape::Sphere;
     double mass = 0;           ///< kg, > 0
-    double radius = 0;         ///< sphere radius (m), > 0; sphere only
+    double radius = 0;         ///< sphere, cylinder, capsule radius (m), > 0
     Vec3 size{0, 0, 0};        ///< box edge lengths along O's x, y, z (m), each > 0; box only
+    double length = 0;         ///< cylinder height, capsule straight part, along O's z (m), > 0
+    Vec3 semiAxes{0, 0, 0};    ///< ellipsoid semi-axes along O's x, y, z (m), each > 0
+    std::string mesh;          ///< mesh file as the scenario writes it (relative to the scenario file)
+    Vec3 meshScale{1, 1, 1};   ///< mesh: scale of the file's coordinates per axis, each > 0; default 1
+    /// Mesh: the loaded triangles, scale applied and moved so that the centroid of the solid is
+    /// at O (the object frame is at the centre of mass); null for the other shapes.
+    std::shared_ptr<const model::TriangleMesh> meshData;
     Vec3 position{0, 0, 0};    ///< p_GO: centre of mass in G at t = 0 (m)
     Vec3 orientation{0, 0, 0}; ///< body-fixed X-Y-Z Euler angles of O in G at t = 0 (rad); default 0
 
@@ -52,16 +63,24 @@ struct ObjectSpec {
     model::Transform findPose() const;
 
     /// Signed distance (m) from the point p_OP (object frame, m) to the object's surface:
-    /// positive outside, negative inside, zero on the surface.
+    /// positive outside, negative inside, zero on the surface. Exact for every shape except the
+    /// ellipsoid, where it is the first-order estimate F/|grad F| (F = sum (x_i/a_i)^2 - 1, scaled),
+    /// exact on the surface and good to second order near it (enough to check goal points).
     double calcSurfaceDistance(const Vec3& p_OP) const;
 
     /// Outward unit normal of the surface nearest to point P (given in O), in O: the radial
-    /// direction for a sphere, the normal of the face whose plane is nearest for a box.
+    /// direction for a sphere, the normal of the face whose plane is nearest for a box or mesh,
+    /// the nearer of side and end face for a cylinder, the direction from the axis segment for a
+    /// capsule, the gradient direction for an ellipsoid.
     Vec3 findOutwardNormal(const Vec3& p_OP) const;
+
+    /// Half the object's smallest thickness through O (m): a goal pressed deeper would pass the centre.
+    double findHalfThickness() const;
 };
 
-/// The object as a one-body model (body "ball" for a sphere, "phone" for a box), built by
-/// model::buildBallModel / model::buildPhoneModel with the spec's mass and size. The pose is
+/// The object as a one-body model (body "ball" for a sphere, "phone" for a box, else named
+/// after the shape), built by model::buildBallModel, buildPhoneModel, buildCylinderModel,
+/// buildCapsuleModel, buildEllipsoidModel or buildMeshModel with the spec's mass and size. The pose is
 /// not part of the description; use ObjectSpec::findPose().
 model::ModelDescription buildObjectModel(const ObjectSpec& object);
 

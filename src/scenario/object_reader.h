@@ -1,0 +1,14 @@
+#pragma once
+// Reads the scenario's `object` section: its shape, the fields that shape needs (and no
+// others), mass and initial pose; a mesh file is read and checked here (model/mesh_file.h).
+
+#include "yaml_field.h"
+
+#include "graspsim/scenario/scenario.h"
+
+namespace graspsim::scenario {
+
+// The object of the document `root`; a mesh path is taken relative to the scenario file.
+ObjectSpec readObject(const YamlField& root);
+
+}  // namespace graspsim::scenario
