@@ -79,12 +79,24 @@ TriangleMesh readMeshFile(const std::string& path, const Vec3& scale, const std:
     if (!std::filesystem::is_regular_file(path, error) || !std::ifstream(path)) {
         throw InputError(what + " is not a readable file; give an STL or OBJ mesh file");
     }
-    if (std::filesystem::file_size(path, error) == 0) {
-        throw InputError(what + " is empty; give a closed convex STL or OBJ mesh");
-    }
+    std::ifstream file(path, std::ios::binary);
+    std::ostringstream bytes;
+    bytes << file.rdbuf();
+    if (!file) throw InputError(what + " cannot be read; give a readable STL or OBJ mesh file");
+    std::string format = std::filesystem::path(path).extension().string();
+    if (!format.empty()) format.erase(0, 1);
+    return parseMeshBytes(bytes.str(), format, scale, what);
+}
+
+TriangleMesh parseMeshBytes(const std::string& bytes, const std::string& format, const Vec3& scale,
+                            const std::string& what) {
+    if (bytes.empty()) throw InputError(what + " is empty; give a closed convex STL or OBJ mesh");
     Assimp::Importer importer;
-    const aiScene* scene = importer.ReadFile(
-        path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices);
+    const aiScene* scene =
+        importer.ReadFileFromMemory(bytes.data(), bytes.size(),
+                                    aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
+                                        aiProcess_PreTransformVertices,
+                                    format.c_str());
     if (!scene || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE)) {
         throw InputError(what + " cannot be read as a mesh (assimp: " + foldToOneLine(importer.GetErrorString()) +
                          "); give an STL (ASCII or binary) or OBJ file");

@@ -79,7 +79,10 @@ ModelDescription buildMeshModel(double mass, const TriangleMesh& mesh, const std
     g.name = "mesh_shape";
     g.meshFile = meshFile;
     g.meshScale = scale;
-    g.mesh = std::make_shared<const TriangleMesh>(translateMesh(mesh, {-centroid[0], -centroid[1], -centroid[2]}));
+    // The geometry keeps the file's frame (so an exported URDF can name the file), placed so that
+    // the solid's centroid falls on O.
+    g.X_BG = Transform::translation({-centroid[0], -centroid[1], -centroid[2]});
+    g.mesh = std::make_shared<const TriangleMesh>(mesh);
     return makeSolidObject("mesh", g, mass);
 }
 

@@ -140,12 +140,6 @@ double calcConvexHullVolume(const TriangleMesh& mesh, const std::string& source)
     return volume;
 }
 
-TriangleMesh translateMesh(const TriangleMesh& mesh, const Vec3& offset) {
-    TriangleMesh moved = mesh;
-    for (Vec3& v : moved.vertices) v = add(v, offset);
-    return moved;
-}
-
 double calcConvexMeshDistance(const TriangleMesh& mesh, const Vec3& p) {
     double planeDistance = -std::numeric_limits<double>::infinity();
     for (const std::array<int, 3>& t : mesh.triangles) planeDistance = std::max(planeDistance, calcPlaneDistance(mesh, t, p));

@@ -54,13 +54,19 @@ void appendShape(TiXmlElement& parent, const Geometry& g) {
             cylinder->SetAttribute("length", formatUrdfNumber(g.length));
             break;
         }
-        case Geometry::Type::Mesh:
-            appendElement(*geometry, "mesh")->SetAttribute("filename", g.meshFile);
+        case Geometry::Type::Mesh: {
+            TiXmlElement* mesh = appendElement(*geometry, "mesh");
+            mesh->SetAttribute("filename", g.meshFile);
+            // URDF's default scale is 1; writing it only when it differs keeps older files' bytes.
+            if (g.meshScale != Vec3{1, 1, 1}) mesh->SetAttribute("scale", formatUrdfTriple(g.meshScale));
             break;
+        }
         case Geometry::Type::Capsule:
             break;  // appendGeometry splits capsules first
         case Geometry::Type::Ellipsoid:
-            throw InputError("geometry '" + g.name + "': URDF has no ellipsoid element");
+            throw InputError("geometry '" + g.name + "' (ellipsoid, semi-axes " + formatUrdfTriple(g.semiAxes) +
+                             " m): URDF has no ellipsoid element and graspsim writes none; export a sphere, box, "
+                             "cylinder, capsule or mesh (e.g. a tessellated ellipsoid)");
     }
 }
 

@@ -69,8 +69,10 @@ Geometry convertCollision(const urdf::Collision& collision, std::size_t index) {
         g.radius = static_cast<const urdf::Cylinder&>(shape).radius;
         g.length = static_cast<const urdf::Cylinder&>(shape).length;
     } else {
+        const urdf::Mesh& mesh = static_cast<const urdf::Mesh&>(shape);
         g.type = Geometry::Type::Mesh;
-        g.meshFile = static_cast<const urdf::Mesh&>(shape).filename;
+        g.meshFile = mesh.filename;
+        g.meshScale = {mesh.scale.x, mesh.scale.y, mesh.scale.z};
     }
     return g;
 }

@@ -95,9 +95,13 @@ void appendShape(TiXmlElement& geometryList, const std::string& name, const Geom
             appendText(*cylinder, "half_height", formatNumber(g.length / 2));
             return;
         }
-        case Geometry::Type::Mesh:
-            appendText(*appendElement(geometryList, "Mesh", name), "mesh_file", g.meshFile);
+        case Geometry::Type::Mesh: {
+            TiXmlElement* mesh = appendElement(geometryList, "Mesh", name);
+            // OpenSim's Geometry scales by scale_factors (default 1 1 1), written only when it differs.
+            if (g.meshScale != Vec3{1, 1, 1}) appendText(*mesh, "scale_factors", formatVec3(g.meshScale));
+            appendText(*mesh, "mesh_file", g.meshFile);
             return;
+        }
         case Geometry::Type::Ellipsoid:
             appendText(*appendElement(geometryList, "Ellipsoid", name), "radii", formatVec3(g.semiAxes));
             return;

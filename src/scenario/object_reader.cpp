@@ -4,6 +4,7 @@
 #include "graspsim/model/mesh_file.h"
 #include "graspsim/model/triangle_mesh.h"
 
+#include <algorithm>
 #include <filesystem>
 
 namespace graspsim::scenario {
@@ -71,11 +72,12 @@ void readMesh(const YamlField& root, const YamlField& section, ObjectSpec& objec
     const YamlField field = section.require("mesh", "a mesh object needs mesh: a path to an STL or OBJ file");
     object.mesh = field.asText("mesh must be a path to an STL or OBJ file, relative to the scenario file");
     object.meshScale = readMeshScale(section);
-    const model::TriangleMesh mesh =
-        model::readMeshFile(resolveMeshPath(root, object.mesh), object.meshScale, field.describePlace() + " mesh file");
-    // The object frame is at the centre of mass: move the solid's centroid to the origin.
-    const model::Vec3 c = model::calcMeshMassProperties(mesh).p_BCm;
-    object.meshData = std::make_shared<const model::TriangleMesh>(model::translateMesh(mesh, {-c[0], -c[1], -c[2]}));
+    const std::string path = resolveMeshPath(root, object.mesh);
+    object.meshData = std::make_shared<const model::TriangleMesh>(
+        model::readMeshFile(path, object.meshScale, field.describePlace() + " mesh file"));
+    object.meshPath = std::filesystem::absolute(path).lexically_normal().string();
+    // The object frame is at the centre of mass: the solid's centroid.
+    object.meshCentroid = model::calcMeshMassProperties(*object.meshData).p_BCm;
 }
 
 void readDimensions(const YamlField& root, const YamlField& section, ObjectSpec& object) {

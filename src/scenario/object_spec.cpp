@@ -74,6 +74,10 @@ model::Transform ObjectSpec::findPose() const {
     return X_GO;
 }
 
+Vec3 ObjectSpec::toMeshFrame(const Vec3& p_OP) const {
+    return {p_OP[0] + meshCentroid[0], p_OP[1] + meshCentroid[1], p_OP[2] + meshCentroid[2]};
+}
+
 double ObjectSpec::calcSurfaceDistance(const Vec3& p) const {
     switch (shape) {
         case ObjectShape::Sphere: return std::hypot(p[0], p[1], p[2]) - radius;
@@ -85,7 +89,7 @@ double ObjectSpec::calcSurfaceDistance(const Vec3& p) const {
             return std::hypot(p[0] - c[0], p[1] - c[1], p[2] - c[2]) - radius;
         }
         case ObjectShape::Ellipsoid: return calcEllipsoidDistance(semiAxes, p);
-        case ObjectShape::Mesh: return model::calcConvexMeshDistance(*meshData, p);
+        case ObjectShape::Mesh: return model::calcConvexMeshDistance(*meshData, toMeshFrame(p));
     }
     return 0;
 }
@@ -113,7 +117,7 @@ Vec3 ObjectSpec::findOutwardNormal(const Vec3& p) const {
         case ObjectShape::Ellipsoid:
             return normalize({p[0] / (semiAxes[0] * semiAxes[0]), p[1] / (semiAxes[1] * semiAxes[1]),
                               p[2] / (semiAxes[2] * semiAxes[2])});
-        case ObjectShape::Mesh: return model::findConvexMeshNormal(*meshData, p);
+        case ObjectShape::Mesh: return model::findConvexMeshNormal(*meshData, toMeshFrame(p));
     }
     return {0, 0, 1};
 }
@@ -125,7 +129,7 @@ double ObjectSpec::findHalfThickness() const {
         case ObjectShape::Box: return std::min({size[0], size[1], size[2]}) / 2;
         case ObjectShape::Cylinder: return std::min(radius, length / 2);
         case ObjectShape::Ellipsoid: return std::min({semiAxes[0], semiAxes[1], semiAxes[2]});
-        case ObjectShape::Mesh: return -model::calcConvexMeshDistance(*meshData, {0, 0, 0});
+        case ObjectShape::Mesh: return -model::calcConvexMeshDistance(*meshData, meshCentroid);
     }
     return 0;
 }

@@ -42,8 +42,9 @@ void writeObjectDimensions(std::ostringstream& out, const ObjectSpec& o) {
             break;
         case ObjectShape::Ellipsoid: out << "  semi_axes: " << formatVec3(o.semiAxes) << "\n"; break;
         case ObjectShape::Mesh: {
-            // The path as the scenario gave it, so it still resolves next to the scenario file.
-            out << "  mesh: " << quote(o.mesh) << "\n";
+            // Absolute: a written scenario (a result folder's copy, a planned scenario) lies
+            // elsewhere than the one read, and must still find the same file.
+            out << "  mesh: " << quote(o.meshPath.empty() ? o.mesh : o.meshPath) << "\n";
             const Vec3& s = o.meshScale;
             if (s[0] == s[1] && s[1] == s[2]) out << "  scale: " << formatNumber(s[0]) << "\n";
             else out << "  scale: " << formatVec3(s) << "\n";

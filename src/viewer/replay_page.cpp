@@ -42,12 +42,23 @@ void appendPose(Json& out, const model::Vec3& p, const std::array<double, 4>& q)
 }
 
 Json toJson(const model::Geometry& g) {
-    static const char* const kTypes[] = {"sphere", "box", "capsule", "cylinder", "mesh"};
     Json j;
-    j["type"] = kTypes[static_cast<int>(g.type)];
+    j["type"] = model::toString(g.type);
     j["r"] = round6(g.radius);
     j["len"] = round6(g.length);
     j["half"] = toJson(g.halfLengths);
+    // Only the shapes that need them carry these, so sphere and box entries stay as they were.
+    if (g.type == model::Geometry::Type::Ellipsoid) j["semi"] = toJson(g.semiAxes);
+    if (g.type == model::Geometry::Type::Mesh && g.mesh) {
+        // The triangles themselves: the page is self-contained and loads no files.
+        Json vertices = Json::array(), triangles = Json::array();
+        for (const model::Vec3& v : g.mesh->vertices)
+            for (double c : v) vertices.push_back(round6(c));
+        for (const std::array<int, 3>& t : g.mesh->triangles)
+            for (int k : t) triangles.push_back(k);
+        j["verts"] = vertices;
+        j["tris"] = triangles;
+    }
     Json pose = Json::array();
     appendPose(pose, g.X_BG.p, findQuaternion(g.X_BG));
     j["pose"] = pose;
@@ -62,7 +73,7 @@ std::string findFinger(const std::string& body) {
     return "";
 }
 
-std::string getObjectName(const scenario::Scenario& s) { return s.object.shape == scenario::ObjectShape::Sphere ? "ball" : "phone"; }
+std::string getObjectName(const scenario::Scenario& s) { return scenario::buildObjectModel(s.object).bodies.at(0).name; }
 
 // Bodies drawn: every hand/arm body with geometry, then the object (last).
 Json makeBodies(const ResultRecord& record, std::vector<std::size_t>& drawn) {
@@ -75,12 +86,8 @@ Json makeBodies(const ResultRecord& record, std::vector<std::size_t>& drawn) {
         bodies.push_back({{"name", body.name}, {"finger", findFinger(body.name)}, {"geoms", geoms}});
         drawn.push_back(b);
     }
-    model::Geometry shape;
-    const scenario::ObjectSpec& object = record.scenario.object;
-    shape.type = object.shape == scenario::ObjectShape::Sphere ? model::Geometry::Type::Sphere : model::Geometry::Type::Box;
-    shape.radius = object.radius;
-    shape.halfLengths = {object.size[0] / 2, object.size[1] / 2, object.size[2] / 2};
-    bodies.push_back({{"name", getObjectName(record.scenario)}, {"finger", "object"}, {"geoms", Json::array({toJson(shape)})}});
+    const model::Body object = scenario::buildObjectModel(record.scenario.object).bodies.at(0);
+    bodies.push_back({{"name", object.name}, {"finger", "object"}, {"geoms", Json::array({toJson(object.geometry.at(0))})}});
     return bodies;
 }
 

@@ -189,3 +189,35 @@ TEST_F(SimulateCommand, RejectsBadScenarioFilesNamingFileAndField) {
     check("mass: 0.200", "mas: 0.200", {"mas"});
     check("index_tip: [0.0199", "index_tip: [0.0599", {"goals.index_tip", "off"});
 }
+
+// Object shapes: an unknown shape, a non-positive size or mass, a missing size field, and each
+// kind of unusable mesh file are one line naming the scenario file and field, exit 2, no output.
+TEST_F(SimulateCommand, RejectsBadObjectShapesAndMeshes) {
+    extraFiles_ = 1;
+    const std::string out = " --out " + (dir_ / "out").string();
+    const auto check = [&](const std::string& text, std::initializer_list<const char*> fragments) {
+        const std::string file = write("bad.yaml", text);
+        const RunResult r = run("simulate " + file + out);
+        EXPECT_EQ(r.exitCode, 2) << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_NE(r.err.find("bad.yaml:"), std::string::npos) << r.err;
+        for (const char* f : fragments) EXPECT_NE(r.err.find(f), std::string::npos) << "missing '" << f << "' in " << r.err;
+        EXPECT_FALSE(fs::exists(dir_ / "out"));
+    };
+    check(ballScenarioWith("shape: sphere", "shape: cone"), {"object.shape", "cone", "cylinder, capsule, ellipsoid or mesh"});
+    check(ballScenarioWith("radius: 0.045", "radius: 0"), {"object.radius", "'0'", "> 0"});
+    check(ballScenarioWith("mass: 0.200", "mass: -0.2"), {"object.mass", "-0.2", "> 0"});
+    check(ballScenarioWith("shape: sphere", "shape: cylinder"), {"object.length", "is missing"});
+    check(ballScenarioWith("shape: sphere", "shape: ellipsoid"), {"object.radius", "semi_axes"});
+    const std::string meshes = GRASPSIM_TEST_DATA_DIR "/meshes/";
+    const auto meshScenario = [&](const std::string& file) {
+        std::string text = ballScenarioWith("shape: sphere", "shape: mesh");
+        text.replace(text.find("radius: 0.045"), 13, "mesh: " + meshes + file);
+        return text;
+    };
+    check(meshScenario("no_such_mesh.stl"), {"object.mesh", "no_such_mesh.stl", "not a readable file"});
+    check(meshScenario("empty.stl"), {"object.mesh", "empty.stl", "is empty"});
+    check(meshScenario("open_box.stl"), {"object.mesh", "open_box.stl", "not closed"});
+    check(meshScenario("l_shape.obj"), {"object.mesh", "l_shape.obj", "not convex", "convex hull has volume"});
+    check(meshScenario("inverted_box.stl"), {"object.mesh", "inverted_box.stl", "inverted normals"});
+}

@@ -54,7 +54,8 @@ double integrate(F f, double a, double b, int n) {
 
 TEST(ObjectModel, CylinderHasTheClosedFormInertia) {
     const double m = 0.3, r = 0.02, L = 0.12;
-    const Body& b = buildCylinderModel(m, r, L).bodies.at(0);
+    const ModelDescription model = buildCylinderModel(m, r, L);
+    const Body& b = model.bodies.at(0);
     EXPECT_EQ(b.name, "cylinder");
     EXPECT_DOUBLE_EQ(b.mass, m);
     EXPECT_NEAR(b.inertia.xx, m * (3 * r * r + L * L) / 12, 1e-15);
@@ -75,7 +76,8 @@ TEST(ObjectModel, CapsuleMatchesSlicesIntegratedAlongItsAxis) {
     const double V = integrate([&](double z) { return kPi * rho2(z); }, -half, half, n);
     const double Izz = integrate([&](double z) { return kPi / 2 * rho2(z) * rho2(z); }, -half, half, n);
     const double Ixx = integrate([&](double z) { return kPi * rho2(z) * (rho2(z) / 4 + z * z); }, -half, half, n);
-    const Body& b = buildCapsuleModel(m, r, L).bodies.at(0);
+    const ModelDescription model = buildCapsuleModel(m, r, L);
+    const Body& b = model.bodies.at(0);
     EXPECT_EQ(b.geometry.at(0).type, Geometry::Type::Capsule);
     EXPECT_NEAR(b.inertia.zz, m * Izz / V, 1e-6 * b.inertia.zz);
     EXPECT_NEAR(b.inertia.xx, m * Ixx / V, 1e-6 * b.inertia.xx);
@@ -84,7 +86,8 @@ TEST(ObjectModel, CapsuleMatchesSlicesIntegratedAlongItsAxis) {
 
 TEST(ObjectModel, EllipsoidHasTheClosedFormInertia) {
     const double m = 0.15, a = 0.03, bb = 0.02, c = 0.05;
-    const Body& b = buildEllipsoidModel(m, {a, bb, c}).bodies.at(0);
+    const ModelDescription model = buildEllipsoidModel(m, {a, bb, c});
+    const Body& b = model.bodies.at(0);
     EXPECT_EQ(b.geometry.at(0).type, Geometry::Type::Ellipsoid);
     EXPECT_NEAR(b.inertia.xx, m * (bb * bb + c * c) / 5, 1e-15);
     EXPECT_NEAR(b.inertia.yy, m * (a * a + c * c) / 5, 1e-15);
@@ -108,7 +111,10 @@ TEST(ObjectModel, MeshIsMovedToItsCentroidAndHasTheBoxInertia) {
     EXPECT_EQ(b.name, "mesh");
     EXPECT_EQ(b.geometry.at(0).meshFile, "box.stl");
     for (double c : b.p_BCm) EXPECT_NEAR(c, 0, 1e-15);
-    EXPECT_NEAR(b.geometry.at(0).mesh->vertices.at(0)[0], -0.02, 1e-15);
+    const Vec3 p_OG = b.geometry.at(0).X_BG.p;
+    EXPECT_NEAR(p_OG[0], -0.02, 1e-15);
+    EXPECT_NEAR(p_OG[1], -0.03, 1e-15);
+    EXPECT_NEAR(p_OG[2], -0.01, 1e-15);
     EXPECT_NEAR(b.inertia.xx, m * (0.06 * 0.06 + 0.02 * 0.02) / 12, 1e-12 * b.inertia.xx);
     EXPECT_NEAR(b.inertia.zz, m * (0.04 * 0.04 + 0.06 * 0.06) / 12, 1e-12 * b.inertia.zz);
     EXPECT_NEAR(b.inertia.xy, 0, 1e-18);

@@ -1,6 +1,7 @@
 // URDF export: the written text reads back to the same description (every number to 1e-9,
 // most of them bit for bit), urdfdom accepts it, and foreign readers see real shapes.
 
+#include "graspsim/model/object_model.h"
 #include "graspsim/model/urdf_export.h"
 #include "graspsim/model/urdf_import.h"
 
@@ -154,6 +155,7 @@ void expectGeometryNear(const Geometry& expected, const Geometry& actual, const 
     EXPECT_NEAR(expected.length, actual.length, kTolerance) << what;
     expectVecNear(expected.halfLengths, actual.halfLengths, what + " halfLengths");
     EXPECT_EQ(expected.meshFile, actual.meshFile) << what;
+    expectVecNear(expected.meshScale, actual.meshScale, what + " meshScale");
 }
 
 void expectBodyNear(const Body& expected, const Body& actual) {
@@ -313,6 +315,42 @@ TEST(UrdfExport, BodyNamedWorldClashesWithTheGroundLink) {
     model.bodies.back().name = "world";
     model.joints.back().child = "world";
     EXPECT_THROW(writeUrdf(model), InputError);
+}
+
+TEST(UrdfExport, ObjectShapesRoundTrip) {
+    // A box mesh with a corner at its file's origin: the geometry frame sits at minus its centroid.
+    TriangleMesh box;
+    for (int i = 0; i < 2; ++i)
+        for (int j = 0; j < 2; ++j)
+            for (int k = 0; k < 2; ++k) box.vertices.push_back({0.04 * i, 0.06 * j, 0.02 * k});
+    const int quads[6][4] = {{0, 1, 3, 2}, {4, 6, 7, 5}, {0, 4, 5, 1}, {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 5, 7, 3}};
+    for (const auto& q : quads) {
+        box.triangles.push_back({q[0], q[1], q[2]});
+        box.triangles.push_back({q[0], q[2], q[3]});
+    }
+    const ModelDescription objects[] = {buildCylinderModel(0.3, 0.02, 0.1), buildCapsuleModel(0.2, 0.015, 0.05),
+                                        buildMeshModel(0.1, box, "meshes/box.stl", {0.5, 1, 2})};
+    for (const ModelDescription& object : objects) {
+        SCOPED_TRACE(object.name);
+        const std::string text = writeUrdf(object);
+        expectModelNear(object, readUrdf(text, "object.urdf"));
+    }
+    const std::string meshText = writeUrdf(objects[2]);
+    EXPECT_NE(meshText.find("<mesh filename=\"meshes/box.stl\" scale=\"0.5 1 2\""), std::string::npos) << meshText;
+    EXPECT_NE(meshText.find("<origin xyz=\"-0.02 -0.03 -0.01"), std::string::npos) << meshText;  // -centroid
+}
+
+TEST(UrdfExport, EllipsoidIsRefusedInOneLine) {
+    try {
+        writeUrdf(buildEllipsoidModel(0.1, {0.05, 0.04, 0.03}));
+        FAIL() << "an ellipsoid was written";
+    } catch (const InputError& e) {
+        const std::string message = e.what();
+        EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+        EXPECT_NE(message.find("'ellipsoid_shape'"), std::string::npos) << message;
+        EXPECT_NE(message.find("0.05 0.04 0.03"), std::string::npos) << message;
+        EXPECT_NE(message.find("URDF has no ellipsoid"), std::string::npos) << message;
+    }
 }
 
 TEST(UrdfExport, InvalidModelIsRejectedBeforeWriting) {

@@ -7,6 +7,7 @@
 
 #include "graspsim/error.h"
 #include "graspsim/model/body_model.h"
+#include "graspsim/model/object_model.h"
 #include "graspsim/system/multibody_model.h"
 
 #include <gtest/gtest.h>
@@ -259,6 +260,24 @@ TEST(OsimModel, ShapesSitWhereTheDescriptionPutsThem) {
         }
     }
     EXPECT_GT(capsules, 10);  // the finger segments
+}
+
+// Each object shape becomes its OpenSim geometry: the text names the element and its sizes.
+TEST(OsimModel, ObjectShapesBecomeOpenSimGeometry) {
+    model::TriangleMesh tetrahedron;
+    tetrahedron.vertices = {{0, 0, 0}, {0.03, 0, 0}, {0, 0.03, 0}, {0, 0, 0.03}};
+    tetrahedron.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+    const std::pair<model::ModelDescription, std::vector<std::string>> cases[] = {
+        {model::buildCylinderModel(0.3, 0.02, 0.1), {"<Cylinder name=\"cylinder_shape\">", "<half_height>0.05"}},
+        {model::buildCapsuleModel(0.2, 0.015, 0.05), {"<Cylinder name=\"capsule_shape\">", "<Sphere name=\"capsule_shape_cap_pos\">"}},
+        {model::buildEllipsoidModel(0.1, {0.05, 0.04, 0.03}), {"<Ellipsoid name=\"ellipsoid_shape\">", "<radii>0.05"}},
+        {model::buildMeshModel(0.1, tetrahedron, "meshes/tetrahedron.stl", {2, 2, 2}),
+         {"<Mesh name=\"mesh_shape\">", "<mesh_file>meshes/tetrahedron.stl</mesh_file>", "<scale_factors>2 2 2</scale_factors>"}},
+    };
+    for (const auto& [object, expected] : cases) {
+        const std::string text = writeOsim(object);
+        for (const std::string& part : expected) EXPECT_NE(text.find(part), std::string::npos) << part << " not in\n" << text;
+    }
 }
 
 TEST(OsimModel, OrientationAnglesRebuildTheRotation) {

@@ -84,6 +84,49 @@ TEST(ObjectSpec, OutwardNormalIsRadialOrTheNearestFaces) {
     EXPECT_EQ(side[0], 1.0);
 }
 
+TEST(ObjectSpec, CylinderDistanceIsRadialAxialOrOffTheRim) {
+    ObjectSpec c;
+    c.shape = ObjectShape::Cylinder;
+    c.radius = 0.03;
+    c.length = 0.1;
+    EXPECT_NEAR(c.calcSurfaceDistance({0.03, 0, 0.02}), 0, 1e-15);      // on the side
+    EXPECT_NEAR(c.calcSurfaceDistance({0, 0.01, 0.05}), 0, 1e-15);      // on the end face
+    EXPECT_NEAR(c.calcSurfaceDistance({0, 0, 0.045}), -0.005, 1e-15);   // inside, near the end face
+    EXPECT_NEAR(c.calcSurfaceDistance({0.033, 0, 0.054}), 0.005, 1e-15);  // off the rim: 3-4-5
+    const Vec3 side = c.findOutwardNormal({0, -0.029, 0});
+    EXPECT_NEAR(side[1], -1, 1e-15);
+    const Vec3 end = c.findOutwardNormal({0.0, 0.0, -0.049});
+    EXPECT_NEAR(end[2], -1, 1e-15);
+    EXPECT_NEAR(c.findHalfThickness(), 0.03, 1e-15);
+}
+
+TEST(ObjectSpec, CapsuleDistanceIsFromItsAxisSegment) {
+    ObjectSpec c;
+    c.shape = ObjectShape::Capsule;
+    c.radius = 0.02;
+    c.length = 0.06;
+    EXPECT_NEAR(c.calcSurfaceDistance({0.02, 0, 0.01}), 0, 1e-15);
+    EXPECT_NEAR(c.calcSurfaceDistance({0, 0, 0.05}), 0, 1e-15);           // tip of a cap
+    EXPECT_NEAR(c.calcSurfaceDistance({0.03, 0, 0.07}), 0.03, 1e-15);     // 3-4-5 from the cap centre
+    const Vec3 n = c.findOutwardNormal({0.03, 0, 0.07});
+    EXPECT_NEAR(n[0], 0.6, 1e-15);
+    EXPECT_NEAR(n[2], 0.8, 1e-15);
+}
+
+TEST(ObjectSpec, EllipsoidDistanceIsExactOnTheAxesAndZeroOnTheSurface) {
+    ObjectSpec e;
+    e.shape = ObjectShape::Ellipsoid;
+    e.semiAxes = {0.05, 0.04, 0.03};
+    EXPECT_NEAR(e.calcSurfaceDistance({0.05, 0, 0}), 0, 1e-15);
+    // A surface point off the axes: (a cos t, b sin t, 0).
+    EXPECT_NEAR(e.calcSurfaceDistance({0.05 * std::cos(0.7), 0.04 * std::sin(0.7), 0}), 0, 1e-15);
+    // On an axis the first-order estimate is exact to second order: (x^2/a^2 - 1) a^2/(2x).
+    EXPECT_NEAR(e.calcSurfaceDistance({0, 0, 0.031}), 0.001, 2e-5);
+    const Vec3 n = e.findOutwardNormal({0, 0.04, 0});
+    EXPECT_NEAR(n[1], 1, 1e-15);
+    EXPECT_NEAR(e.findHalfThickness(), 0.03, 1e-15);
+}
+
 TEST(ObjectSpec, ModelIsTheObjectBuilderWithTheSpecsMassAndSize) {
     const model::ModelDescription ball = buildObjectModel(makeSphere(0.05));
     ASSERT_EQ(ball.bodies.size(), 1u);

@@ -35,10 +35,11 @@ void expectSameScenario(const Scenario& a, const Scenario& b) {
     expectVec3Eq(a.object.size, b.object.size);
     EXPECT_EQ(a.object.length, b.object.length);
     expectVec3Eq(a.object.semiAxes, b.object.semiAxes);
-    EXPECT_EQ(a.object.mesh, b.object.mesh);
+    EXPECT_EQ(a.object.meshPath, b.object.meshPath);
     expectVec3Eq(a.object.meshScale, b.object.meshScale);
     EXPECT_EQ(a.object.meshData == nullptr, b.object.meshData == nullptr);
     if (a.object.meshData && b.object.meshData) EXPECT_EQ(a.object.meshData->vertices, b.object.meshData->vertices);
+    expectVec3Eq(a.object.meshCentroid, b.object.meshCentroid);
     expectVec3Eq(a.object.position, b.object.position);
     expectVec3Eq(a.object.orientation, b.object.orientation, kAngleTolerance);
     ASSERT_EQ(a.graspPose.size(), b.graspPose.size());
@@ -147,18 +148,18 @@ TEST(ScenarioWriter, EveryShapeReadsBackUnchanged) {
 }
 
 TEST(ScenarioWriter, MeshObjectReadsBackWithItsPathAndScale) {
-    // The mesh path is relative to the scenario file, so the written text is read as if it lay
-    // next to the test meshes.
-    const std::string source = GRASPSIM_TEST_DATA_DIR "/meshes/written.yaml";
+    // The written path is absolute, so the text reads back wherever it is said to lie.
+    const std::string source = "elsewhere/written.yaml";
     for (const Vec3& scale : {Vec3{2, 2, 2}, Vec3{1, 2, 1.5}}) {
         ObjectSpec object;
         object.shape = ObjectShape::Mesh;
         object.mass = 0.1;
         object.mesh = "box.stl";
+        object.meshPath = GRASPSIM_TEST_DATA_DIR "/meshes/box.stl";
         object.meshScale = scale;
-        const model::TriangleMesh mesh = model::readMeshFile(GRASPSIM_TEST_DATA_DIR "/meshes/box.stl", scale, "test");
-        const Vec3 c = model::calcMeshMassProperties(mesh).p_BCm;
-        object.meshData = std::make_shared<const model::TriangleMesh>(model::translateMesh(mesh, {-c[0], -c[1], -c[2]}));
+        object.meshData = std::make_shared<const model::TriangleMesh>(
+            model::readMeshFile(GRASPSIM_TEST_DATA_DIR "/meshes/box.stl", scale, "test"));
+        object.meshCentroid = model::calcMeshMassProperties(*object.meshData).p_BCm;
         const Scenario original = makeShapeScenario(object);
         const std::string text = formatScenarioYaml(original);
         EXPECT_NE(text.find(scale[0] == scale[1] ? "scale: 2\n" : "scale: [1, 2, 1.5]\n"), std::string::npos) << text;

@@ -23,6 +23,12 @@ constexpr double kConvexVolumeTolerance = 1e-6;
 /// @throws graspsim::InputError, one line naming `place`, the path, what is wrong and what is accepted.
 TriangleMesh readMeshFile(const std::string& path, const Vec3& scale, const std::string& place);
 
+/// The same for a file's bytes already in memory: `format` is "stl" or "obj" (the extension),
+/// `what` names it in messages (place and path). readMeshFile reads the file and calls this.
+/// @throws graspsim::InputError as readMeshFile.
+TriangleMesh parseMeshBytes(const std::string& bytes, const std::string& format, const Vec3& scale,
+                            const std::string& what);
+
 /// Same checks for a mesh already in memory (`what` names it in messages: place and path).
 /// @throws graspsim::InputError as readMeshFile.
 void checkSolidConvexMesh(const TriangleMesh& mesh, const std::string& what);

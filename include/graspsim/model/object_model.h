@@ -40,9 +40,9 @@ ModelDescription buildEllipsoidModel(double mass, const Vec3& semiAxes);
 
 /// A solid closed mesh of uniform density: body "mesh", geometry "mesh_shape". Mass properties
 /// come from the divergence theorem over signed tetrahedra (model/triangle_mesh.h). The object
-/// frame O must sit at the centre of mass, so the vertices are moved by minus their solid's
-/// centroid (the file's origin is not kept); O's axes are the file's axes, not rotated to
-/// principal axes, so the inertia keeps its products.
+/// frame O must sit at the centre of mass, so the geometry frame G (the file's frame, vertices
+/// unchanged) is placed at X_OG = translation(-centroid); O's axes are the file's axes, not
+/// rotated to principal axes, so the inertia keeps its products.
 /// @param mesh vertices (scale applied) and outward triangles, as model::readMeshFile returns them.
 /// @param meshFile, scale the file name and scale, kept for export.
 ModelDescription buildMeshModel(double mass, const TriangleMesh& mesh, const std::string& meshFile,

@@ -27,9 +27,6 @@ std::optional<std::pair<int, int>> findOpenEdge(const TriangleMesh& mesh);
 /// @throws graspsim::InputError (with `source`) when the vertices are flat or qhull fails.
 double calcConvexHullVolume(const TriangleMesh& mesh, const std::string& source);
 
-/// The mesh moved by `offset` (m): every vertex plus offset.
-TriangleMesh translateMesh(const TriangleMesh& mesh, const Vec3& offset);
-
 /// Signed distance (m) from point P to the surface of a closed convex mesh, positive outside:
 /// outside, the distance to the nearest triangle; inside, minus the distance to the nearest face plane.
 double calcConvexMeshDistance(const TriangleMesh& mesh, const Vec3& p_MP);

@@ -50,11 +50,14 @@ struct ObjectSpec {
     Vec3 size{0, 0, 0};        ///< box edge lengths along O's x, y, z (m), each > 0; box only
     double length = 0;         ///< cylinder height, capsule straight part, along O's z (m), > 0
     Vec3 semiAxes{0, 0, 0};    ///< ellipsoid semi-axes along O's x, y, z (m), each > 0
-    std::string mesh;          ///< mesh file as the scenario writes it (relative to the scenario file)
+    std::string mesh;          ///< mesh file as the scenario gives it (relative to the scenario file)
+    std::string meshPath;      ///< mesh: the file read, absolute; what a written scenario gives as `mesh`
     Vec3 meshScale{1, 1, 1};   ///< mesh: scale of the file's coordinates per axis, each > 0; default 1
-    /// Mesh: the loaded triangles, scale applied and moved so that the centroid of the solid is
-    /// at O (the object frame is at the centre of mass); null for the other shapes.
+    /// Mesh: the loaded triangles in the file's frame M, scale applied; null for the other shapes.
     std::shared_ptr<const model::TriangleMesh> meshData;
+    /// Mesh: p_MO, the centroid of the solid in the file's frame M (m). The object frame O sits
+    /// there (at the centre of mass) with M's axes, so p_M = p_O + meshCentroid.
+    Vec3 meshCentroid{0, 0, 0};
     Vec3 position{0, 0, 0};    ///< p_GO: centre of mass in G at t = 0 (m)
     Vec3 orientation{0, 0, 0}; ///< body-fixed X-Y-Z Euler angles of O in G at t = 0 (rad); default 0
 
@@ -76,6 +79,9 @@ struct ObjectSpec {
 
     /// Half the object's smallest thickness through O (m): a goal pressed deeper would pass the centre.
     double findHalfThickness() const;
+
+    /// Mesh: p_MP, the point given in O expressed in the mesh file's frame M (m).
+    Vec3 toMeshFrame(const Vec3& p_OP) const;
 };
 
 /// The object as a one-body model (body "ball" for a sphere, "phone" for a box, else named

@@ -53,8 +53,18 @@
           mesh.add(cap);
         });
       }
+    } else if (g.type === "ellipsoid") {
+      // A unit sphere scaled by the semi-axes.
+      mesh = new THREE.Mesh(new THREE.SphereBufferGeometry(1, 32, 20), material);
+      mesh.scale.set(g.semi[0], g.semi[1], g.semi[2]);
+    } else if (g.type === "mesh" && g.verts) {
+      var geometry = new THREE.BufferGeometry();
+      geometry.setAttribute("position", new THREE.Float32BufferAttribute(g.verts, 3));
+      geometry.setIndex(g.tris);
+      geometry.computeVertexNormals();
+      mesh = new THREE.Mesh(geometry, material);
     } else {
-      return null;  // meshes are not loaded: graspsim's models have none
+      return null;  // a mesh known only by file name (an imported URDF's display mesh)
     }
     mesh.position.set(g.pose[0], g.pose[1], g.pose[2]);
     mesh.quaternion.set(g.pose[4], g.pose[5], g.pose[6], g.pose[3]);
