@@ -19,13 +19,11 @@ namespace {
 // One point contact (or none) cannot hold an object against a general load.
 constexpr int kMinAttachedFingers = 2;
 
-bool isPalm(const std::string& name) { return name.size() >= 4 && name.compare(name.size() - 4, 4, "palm") == 0; }
-
 // The bodies from an end-effector's body up to (not including) the palm.
 std::vector<std::string> findDigitBodies(const model::ModelDescription& d, const std::string& endEffector) {
     std::vector<std::string> bodies;
     std::string body = d.findEndEffector(endEffector)->body;
-    while (!isPalm(body)) {
+    while (d.findBody(body)->role != model::BodyRole::Palm) {
         bodies.push_back(body);
         const model::Joint* j = d.findParentJoint(body);
         if (!j) throw Error("end-effector '" + endEffector + "' does not hang from a palm");

@@ -143,6 +143,7 @@ private:
     SimTK::MobilizedBody::Free object_;
     SimTK::Constraint::Weld groundHold_;  // empty unless the object hangs from the palm
     ContactModel contactModel_ = ContactModel::Compliant;
+    std::string palmBody_;  // the body with the palm role (the builder's, not found by name)
     contact::CompliantContactForce contacts_;
     contact::RigidContactSet rigidContacts_;
     system::ImplicitJointImpedance impedance_;
