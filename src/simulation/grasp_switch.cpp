@@ -161,7 +161,7 @@ void GraspSwitch::handleEvent(SimTK::State& state, SimTK::Real accuracy, bool& s
 
 double GraspSwitch::calcQuality(const SimTK::State& state) const {
     scene_.getSystem().realize(state, SimTK::Stage::Velocity);
-    return calcQualityOf(state, scene_.getContacts().findContactReports(state));
+    return calcQualityOf(state, scene_.getCompliantContacts().findContactReports(state));
 }
 
 double GraspSwitch::calcQualityOf(const SimTK::State& state, const std::vector<contact::ContactReport>& reports) const {
@@ -191,7 +191,7 @@ double GraspSwitch::calcEngagedQuality(const SimTK::State& state) const {
         // Multi: the fingers move on their own and the palm-fixed tracker does not apply; Q is that
         // of the contacts every pair would produce in `state`, switched on or not.
         scene_.getSystem().realize(state, SimTK::Stage::Velocity);
-        q = calcQualityOf(state, scene_.getContacts().findContactReports(state, scene_.getContacts().findAllPairIndices()));
+        q = calcQualityOf(state, scene_.getCompliantContacts().findContactReports(state, scene_.getCompliantContacts().findAllPairIndices()));
     }
     qualityMemo_ = {state.getTime(), state.getY(), q};
     return q;
@@ -217,7 +217,7 @@ bool GraspSwitch::isSticking(const std::vector<contact::ContactReport>& reports)
 // One set of contact reports serves every test of the check and the engagement itself.
 void GraspSwitch::checkEngage(SimTK::State& state) const {
     scene_.getSystem().realize(state, SimTK::Stage::Velocity);
-    const std::vector<contact::ContactReport> reports = scene_.getContacts().findContactReports(state);
+    const std::vector<contact::ContactReport> reports = scene_.getCompliantContacts().findContactReports(state);
     if (!isFullContact(reports)) return;
     const double q = calcQualityOf(state, reports);
     if (qThreshold_ == 0) {
@@ -264,7 +264,7 @@ void GraspSwitch::engage(SimTK::State& state, double quality, const std::vector<
     engagement.leverArm = findLeverArm(reports, p_GC);
     engagement.penetrationBound = options_.maxEngagedPenetration;
     for (int k = 0; k < 6; ++k) engagement.lockedAxes[k] = !(*options_.relaxedAxes)[k];
-    scene_.getContacts().setPairsEnabled(state, scene_.getContacts().findAllPairIndices(), false);  // (b)
+    scene_.getCompliantContacts().setPairsEnabled(state, scene_.getCompliantContacts().findAllPairIndices(), false);  // (b)
     setFingersMerged(state, true);                                                        // (c)
     attachment_.engage(state, engagement);                                                // (d)
     X_HO_engaged_ = ~scene_.getPalm().getBodyTransform(state) * scene_.getObject().getBodyTransform(state);
@@ -318,7 +318,7 @@ void GraspSwitch::release(SimTK::State& state, double quality, const std::string
     const SimTK::Vec3 v_before = scene_.getObject().getBodyOriginVelocity(state);
     attachment_.release(state);
     if (!multi_) setFingersMerged(state, false);  // multi never merges them
-    scene_.getContacts().setPairsEnabled(state, scene_.getContacts().findAllPairIndices(), true);
+    scene_.getCompliantContacts().setPairsEnabled(state, scene_.getCompliantContacts().findAllPairIndices(), true);
     events_.push_back({state.getTime(), GraspEventKind::Release, quality, reason, findVelocityJump(state, v_before)});
 }
 

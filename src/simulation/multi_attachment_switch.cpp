@@ -66,7 +66,7 @@ grasp::FingerLoad calcFingerLoad(const std::vector<const contact::ContactReport*
 MultiAttachmentSwitch::MultiAttachmentSwitch(const GraspScene& scene, double slideLimit, double penetrationBound)
     : scene_(scene), slideLimit_(slideLimit), penetrationBound_(penetrationBound) {
     const model::ModelDescription& d = scene.getModel().getDescription();
-    const contact::CompliantContactForce& contacts = scene.getContacts();
+    const contact::CompliantContactForce& contacts = scene.getCompliantContacts();
     for (const std::string& endEffector : scene.getGoalEndEffectors()) {
         fingerBodies_.push_back(findDigitBodies(d, endEffector));
         fingerPairs_.emplace_back();
@@ -103,7 +103,7 @@ std::string MultiAttachmentSwitch::engage(SimTK::State& state, const std::vector
     // Only the goal digits' pairs: the palm and digits without a goal stay in ordinary contact.
     std::vector<int> replaced;
     for (const std::vector<int>& pairs : fingerPairs_) replaced.insert(replaced.end(), pairs.begin(), pairs.end());
-    scene_.getContacts().setPairsEnabled(state, replaced, false);
+    scene_.getCompliantContacts().setPairsEnabled(state, replaced, false);
     grasp::AttachmentEngagement engagement;
     engagement.mu = scene_.getScenario().contact.dynamicFriction;
     engagement.penetrationBound = penetrationBound_;
@@ -130,7 +130,7 @@ std::string MultiAttachmentSwitch::update(SimTK::State& state, double quality, s
     }
     for (const auto& [i, reason] : leaving) {
         multi.detach(state, i);
-        scene_.getContacts().setPairsEnabled(state, fingerPairs_[static_cast<std::size_t>(i)], true);
+        scene_.getCompliantContacts().setPairsEnabled(state, fingerPairs_[static_cast<std::size_t>(i)], true);
         events.push_back({state.getTime(), GraspEventKind::Detach, quality, scene_.getGoalEndEffectors()[static_cast<std::size_t>(i)] + ": " + reason});
     }
     const int attached = multi.countAttached(state);
@@ -164,7 +164,7 @@ double MultiAttachmentSwitch::findSmallestPressing(const SimTK::State& state) co
 
 void MultiAttachmentSwitch::release(SimTK::State& state) const {
     scene_.getMultiAttachment()->detachAll(state);
-    const contact::CompliantContactForce& contacts = scene_.getContacts();
+    const contact::CompliantContactForce& contacts = scene_.getCompliantContacts();
     contacts.setPairsEnabled(state, contacts.findAllPairIndices(), true);
 }
 

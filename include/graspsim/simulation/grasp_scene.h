@@ -76,7 +76,7 @@ public:
     /// The object's body; its frame O is at its centre of mass.
     const SimTK::MobilizedBody& getObject() const { return object_; }
     /// The compliant contact element; an empty handle with ContactModel::Rigid.
-    const contact::CompliantContactForce& getContacts() const { return contacts_; }
+    const contact::CompliantContactForce& getCompliantContacts() const { return contacts_; }
     ContactModel getContactModel() const { return contactModel_; }
     /// The rigid contacts; empty with ContactModel::Compliant.
     const contact::RigidContactSet& getRigidContacts() const { return rigidContacts_; }
