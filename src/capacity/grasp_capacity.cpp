@@ -53,14 +53,14 @@ public:
                                  std::to_string(getState().getTime()) + " s; use --mode full or lower --q-threshold");
         }
         reference_ = findGoalPointsInPalm();
-        q_PO_reference_ = findObjectInPalm().R().convertRotationToQuaternion().asVec4();
+        q_HO_reference_ = findObjectInPalm().R().convertRotationToQuaternion().asVec4();
     }
 
     CapacitySample sampleNow() override {
         CapacitySample s;
         const std::vector<SimTK::Vec3> now = findGoalPointsInPalm();
-        const SimTK::Rotation R_PO0{SimTK::Quaternion(q_PO_reference_)};
-        const SimTK::Rotation R_change = ~R_PO0 * findObjectInPalm().R();
+        const SimTK::Rotation R_HO0{SimTK::Quaternion(q_HO_reference_)};
+        const SimTK::Rotation R_change = ~R_HO0 * findObjectInPalm().R();
         s.rotation = std::abs(R_change.convertRotationToAngleAxis()[0]);
         for (std::size_t k = 0; k < now.size(); ++k) s.slip = std::max(s.slip, (now[k] - reference_[k]).norm());
         if (const simulation::GraspSwitch* grasp = scene_.getGraspSwitch()) s.engaged = grasp->isEngaged(getState()) ? 1 : 0;
@@ -108,11 +108,11 @@ private:
         return ~scene_.getPalm().getBodyTransform(s) * scene_.getObject().getBodyTransform(s);
     }
 
-    // The goal points (object material points where the fingertips press), in the palm frame P.
+    // The goal points (object material points where the fingertips press), in the palm frame H.
     std::vector<SimTK::Vec3> findGoalPointsInPalm() const {
-        const SimTK::Transform X_PO = findObjectInPalm();
+        const SimTK::Transform X_HO = findObjectInPalm();
         std::vector<SimTK::Vec3> points;
-        for (const SimTK::Vec3& p_OG : scene_.getSurfaceGoals()) points.push_back(X_PO * p_OG);
+        for (const SimTK::Vec3& p_OT : scene_.getSurfaceGoals()) points.push_back(X_HO * p_OT);
         return points;
     }
 
@@ -120,7 +120,7 @@ private:
     std::unique_ptr<integration::Stepper> stepper_;
     std::unique_ptr<simulation::RigidStepper> rigid_;
     std::vector<SimTK::Vec3> reference_;
-    SimTK::Vec4 q_PO_reference_{1, 0, 0, 0};  // R_PO at the reference, as a quaternion
+    SimTK::Vec4 q_HO_reference_{1, 0, 0, 0};  // R_HO at the reference, as a quaternion
 };
 
 GraspCapacity makeHeader(const simulation::SimulationOptions& options, const GraspCapacityRequest& request,
