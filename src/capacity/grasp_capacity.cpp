@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <iterator>
 
 namespace graspsim::capacity {
 
@@ -155,6 +157,22 @@ double findDefaultRate(const scenario::Scenario& scenario, bool torque) {
         lever = std::max(lever, std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]));
     }
     return force * lever;
+}
+
+void checkLoadResistible(const scenario::Scenario& scenario, const GraspCapacityRequest& request) {
+    if (!request.torque || scenario.goals.size() != 2) return;
+    const auto first = scenario.goals.begin(), second = std::next(first);
+    const model::Transform X_GO = scenario.object.findPose();
+    const model::Vec3 a = X_GO.xformFrameVecToBase(first->second), b = X_GO.xformFrameVecToBase(second->second);
+    const SimTK::Vec3 line(b[0] - a[0], b[1] - a[1], b[2] - a[2]);
+    if (!(line.norm() > 0)) return;
+    const double angle = std::acos(std::min(1.0, std::abs(~SimTK::Vec3(request.direction) * line) / line.norm()));
+    if (angle > kPinchAxisTolerance) return;
+    char degrees[32];
+    std::snprintf(degrees, sizeof degrees, "%.3g", angle * 180 / SimTK::Pi);
+    throw InputError("--direction " + request.directionName + " --torque: the axis is " + degrees + " deg from the line through the goals " +
+                     first->first + " and " + second->first + "; two point contacts cannot resist a torque about it (no torsional "
+                     "friction), so there is no capacity to measure; choose an axis more than 5 deg away");
 }
 
 double findLoadStart(const scenario::Scenario& scenario) { return scenario.simulation.settleTime + kLoadStartDelay; }

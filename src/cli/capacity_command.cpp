@@ -153,6 +153,7 @@ int CapacityCommand::run() const {
     const Plan plan = makePlan();
     const scenario::Scenario scenario = scenario::loadScenario(o.scenario);
     simulation::checkApproxAttach(scenario, plan.simulation);
+    for (const capacity::GraspCapacityRequest& r : plan.requests) capacity::checkLoadResistible(scenario, r);
     if (!o.out.empty()) prepareFolder(o.out);
     std::vector<capacity::GraspCapacity> measurements;
     for (capacity::GraspCapacityRequest r : plan.requests) {
