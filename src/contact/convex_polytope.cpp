@@ -175,11 +175,21 @@ std::shared_ptr<const ConvexPolytope> ConvexPolytope::build(const model::Triangl
         faceOfRoot[root] = static_cast<int>(polytope->faces_.size());
         polytope->faces_.push_back(face);
     }
+    std::vector<int> faceOfTriangle(triangles.size());
     for (std::size_t t = 0; t < triangles.size(); ++t) {
-        const int face = faceOfRoot[findRoot(parent, static_cast<int>(t))];
+        faceOfTriangle[t] = faceOfRoot[findRoot(parent, static_cast<int>(t))];
         polytope->triangles_.push_back(
             {{vertices[triangles[t][0]], vertices[triangles[t][1]], vertices[triangles[t][2]]},
-             face});
+             faceOfTriangle[t]});
+    }
+
+    // Triangles grouped by face, so that a distance query visits only faces it is above.
+    std::stable_sort(polytope->triangles_.begin(), polytope->triangles_.end(),
+                     [](const Triangle& a, const Triangle& b) { return a.face < b.face; });
+    polytope->firstTriangle_.assign(polytope->faces_.size() + 1, 0);
+    for (const Triangle& t : polytope->triangles_) ++polytope->firstTriangle_[t.face + 1];
+    for (std::size_t f = 0; f < polytope->faces_.size(); ++f) {
+        polytope->firstTriangle_[f + 1] += polytope->firstTriangle_[f];
     }
 
     // Convexity: no vertex above any face plane.
@@ -199,7 +209,7 @@ std::shared_ptr<const ConvexPolytope> ConvexPolytope::build(const model::Triangl
     // Edges between faces of different planes; vertices where three or more planes meet.
     std::vector<std::vector<int>> facesAtVertex(vertices.size());
     for (std::size_t t = 0; t < triangles.size(); ++t) {
-        for (int k = 0; k < 3; ++k) facesAtVertex[triangles[t][k]].push_back(polytope->triangles_[t].face);
+        for (int k = 0; k < 3; ++k) facesAtVertex[triangles[t][k]].push_back(faceOfTriangle[t]);
     }
     std::vector<int> newIndex(vertices.size(), -1);
     for (std::size_t v = 0; v < vertices.size(); ++v) {
@@ -212,7 +222,7 @@ std::shared_ptr<const ConvexPolytope> ConvexPolytope::build(const model::Triangl
         }
     }
     for (const auto& [edge, sides] : edgeTriangles) {
-        const int f0 = polytope->triangles_[sides[0]].face, f1 = polytope->triangles_[sides[1]].face;
+        const int f0 = faceOfTriangle[sides[0]], f1 = faceOfTriangle[sides[1]];
         if (f0 == f1) continue;
         // An edge end where only two planes meet (a vertex splitting a straight edge) is not a
         // polytope vertex; such edges are kept whole only between polytope vertices.
@@ -232,18 +242,23 @@ int ConvexPolytope::findEdge(int f0, int f1) const {
 }
 
 double ConvexPolytope::findOutsideDistance(const SimTK::Vec3& p_S, SimTK::Vec3* nearest) const {
-    // The nearest point lies on a face whose plane p_S is above (see docs/contact.md), so only
-    // those triangles are searched; near the surface they are few.
+    // The nearest point lies on a face whose plane p_S is above (the vector from it to p_S is
+    // in the normal cone there, so it has a positive component along one of the faces meeting
+    // there), and no point of a face is nearer than its plane: so only the triangles of faces
+    // p_S is above by less than the best distance so far are searched. Near the surface they
+    // are few.
     double best = SimTK::Infinity;
-    for (const Triangle& t : triangles_) {
-        const Face& face = faces_[t.face];
-        const double above = SimTK::dot(face.normal, p_S) - face.offset;
+    for (std::size_t f = 0; f < faces_.size(); ++f) {
+        const double above = SimTK::dot(faces_[f].normal, p_S) - faces_[f].offset;
         if (above <= 0 || above >= best) continue;
-        const SimTK::Vec3 q = findClosestPointOnTriangle(p_S, t.corners[0], t.corners[1], t.corners[2]);
-        const double distance = (p_S - q).norm();
-        if (distance < best) {
-            best = distance;
-            if (nearest) *nearest = q;
+        for (int i = firstTriangle_[f]; i < firstTriangle_[f + 1]; ++i) {
+            const Triangle& t = triangles_[i];
+            const SimTK::Vec3 q = findClosestPointOnTriangle(p_S, t.corners[0], t.corners[1], t.corners[2]);
+            const double distance = (p_S - q).norm();
+            if (distance < best) {
+                best = distance;
+                if (nearest) *nearest = q;
+            }
         }
     }
     return best;

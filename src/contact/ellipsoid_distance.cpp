@@ -8,9 +8,9 @@ namespace graspsim::contact {
 
 namespace {
 
-// Bisection runs until the midpoint equals an end: at most about 1100 halvings of a double
-// interval, in practice ~60-150.
-constexpr int kMaxBisections = 1100;
+// Iterations until the bracket cannot shrink: bisection alone needs at most about 1100 halvings
+// of a double interval; the Newton steps below usually finish in 5-20.
+constexpr int kMaxIterations = 1100;
 
 double calcRobustLength(double a, double b, double c = 0) {
     const double m = std::max({std::abs(a), std::abs(b), std::abs(c)});
@@ -18,29 +18,33 @@ double calcRobustLength(double a, double b, double c = 0) {
     return m * std::sqrt((a / m) * (a / m) + (b / m) * (b / m) + (c / m) * (c / m));
 }
 
-// Root s of sum_i (r_i z_i / (s + r_i))^2 = 1 with r = (r0, r1, 1) (r1 = 0 for an ellipse:
-// then only z0, z1 enter with r = (r0, 1)). g is the sign-carrying value at s = 0.
+// Root s of S(s) = sum_k (r_k z_k / (s + r_k))^2 = 1 over the n = 2 or 3 terms (r_{n-1} = 1),
+// g = S(0) - 1. Eberly's bracket [s0, s1] holds the root, S(s0) >= 1 >= S(s1). Newton steps
+// are taken on phi(s) = 1 / sqrt(S(s)) - 1, which is nearly linear in s (exactly so for one
+// term), when they stay strictly inside the bracket; otherwise the bracket is bisected as in
+// Eberly's robust method. Ends when the bracket cannot shrink: the root to the last bit.
 double findRoot(int n, const double* r, const double* z, double g) {
     std::array<double, 3> num{};
     for (int i = 0; i < n; ++i) num[i] = r[i] * z[i];
     double s0 = z[n - 1] - 1;
     double s1 = g < 0 ? 0 : calcRobustLength(num[0], num[1], n == 3 ? num[2] : 0) - 1;
-    double s = 0;
-    for (int i = 0; i < kMaxBisections; ++i) {
-        s = 0.5 * (s0 + s1);
-        if (s == s0 || s == s1) break;
-        double value = -1;
+    double s = s0;
+    for (int i = 0; i < kMaxIterations; ++i) {
+        double sum = 0, slope = 0;  // S(s) and dS/ds
         for (int k = 0; k < n; ++k) {
             const double ratio = num[k] / (s + r[k]);
-            value += ratio * ratio;
+            sum += ratio * ratio;
+            slope -= 2 * ratio * ratio / (s + r[k]);
         }
-        if (value > 0) {
-            s0 = s;
-        } else if (value < 0) {
-            s1 = s;
-        } else {
-            break;
-        }
+        if (sum == 1) return s;
+        (sum > 1 ? s0 : s1) = s;
+        const double root = std::sqrt(sum);
+        const double phi = 1 / root - 1, dPhi = -0.5 * slope / (sum * root);
+        double next = dPhi > 0 ? s - phi / dPhi : s0;
+        if (next == s) return s;  // Newton has converged: the step is below s's last bit
+        if (!(next > s0 && next < s1)) next = 0.5 * (s0 + s1);
+        if (next <= s0 || next >= s1) return s;  // no double strictly inside the bracket
+        s = next;
     }
     return s;
 }

@@ -2,7 +2,8 @@
 // The exact nearest point of an ellipsoid's surface to a point, by Eberly's robust bisection
 // ("Distance from a Point to an Ellipse, an Ellipsoid, or a Hyperellipsoid", Geometric Tools,
 // 2013): the nearest point x of the surface to y satisfies x_i = e_i^2 y_i / (t + e_i^2) for the
-// root t of one monotone function, found by bisection to machine precision. Private to the
+// root t of one monotone function, found to machine precision inside Eberly's bracket (by
+// Newton steps where they stay inside it, bisection otherwise). Private to the
 // contact layer. Everything is in the ellipsoid frame S, semi-axes e along x_S, y_S, z_S (m).
 
 #include <simbody/Simbody.h>

@@ -37,7 +37,7 @@ public:
         int vertex0 = 0, vertex1 = 0;  ///< indices into getVertices()
         int face0 = 0, face1 = 0;      ///< indices into getFaces(), face0 < face1
     };
-    /// A mesh triangle and the face (plane) it lies in.
+    /// A mesh triangle and the face (plane) it lies in (getTriangles() lists them by face).
     struct Triangle {
         std::array<SimTK::Vec3, 3> corners;
         int face = 0;
@@ -88,7 +88,8 @@ private:
     std::vector<SimTK::Vec3> vertices_;
     std::vector<Face> faces_;
     std::vector<Edge> edges_;
-    std::vector<Triangle> triangles_;
+    std::vector<Triangle> triangles_;  // grouped by face
+    std::vector<int> firstTriangle_;   // face f's triangles: [firstTriangle_[f], firstTriangle_[f + 1])
     double boundingRadius_ = 0;
 };
 
