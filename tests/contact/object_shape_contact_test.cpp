@@ -313,6 +313,49 @@ TEST(ObjectShapeContact, PalmBoxFaceOnEllipsoidPole) {
     EXPECT_NEAR(corner[0].radius, combine(0.005, b * c / a), 1e-15);
 }
 
+// ---- integrated: a fingertip resting on each object ------------------------------------
+
+// A 50 g fingertip sphere on a vertical Slider, resting under gravity on `object` fixed in
+// Ground with its top surface point at y = top and the surface's Hertz radius R there. Damped,
+// it settles where the Hertz force carries its weight: depth (3 m g / (4 E* sqrt(R')))^(2/3)
+// with R' the fingertip's radius combined with R.
+void expectSettlesAtStaticHertzDepth(const ContactShape& object, const Transform& X_GO, double top,
+                                     double objectRadius) {
+    constexpr double kMass = 0.05, kG = 9.81;
+    test::Scene scene;
+    SimTK::Force::Gravity gravity(scene.forces, scene.matter, Vec3(0, -kG, 0));
+    SimTK::MobilizedBody::Slider tip = scene.addSlider(SimTK::YAxis, kMass, kTip);
+    const ContactMaterial material = test::makeMaterial(kEStar, 20);
+    CompliantContactForce force(
+        scene.forces, {{test::makeSurface(tip, "tip", ContactShape::sphere(kTip), material),
+                        {scene.matter.updGround(), "ground", "object", object, X_GO, material}}});
+    SimTK::State state = scene.system.realizeTopology();
+    tip.setOneQ(state, 0, top + kTip);  // touching, at rest
+    SimTK::RungeKuttaMersonIntegrator integrator(scene.system);
+    integrator.setAccuracy(1e-8);
+    SimTK::TimeStepper stepper(scene.system, integrator);
+    stepper.initialize(state);
+    stepper.stepTo(0.3);
+    const double depth = top + kTip - tip.getOneQ(integrator.getState(), 0);
+    const double radius = std::isinf(objectRadius) ? kTip : combine(kTip, objectRadius);
+    const double expected = test::calcStaticHertzDepth(kMass * kG, kEStar, radius);
+    EXPECT_NEAR(depth, expected, 0.01 * expected);
+    EXPECT_GT(expected, 1e-4);
+}
+
+TEST(ObjectShapeContact, FingertipRestsOnEachObjectAtTheStaticHertzDepth) {
+    // Cylinder lying along x: top line at y = 0.03, radius 0.03 across.
+    expectSettlesAtStaticHertzDepth(kCylinder, Transform(Rotation(SimTK::Pi / 2, SimTK::YAxis), Vec3(0)),
+                                    0.03, 0.03);
+    // Ellipsoid with its c axis up (z turned onto y): the pole, Gaussian radius a b / c.
+    expectSettlesAtStaticHertzDepth(kEllipsoid, Transform(Rotation(-SimTK::Pi / 2, SimTK::XAxis), Vec3(0)),
+                                    kSemiAxes[2], kSemiAxes[0] * kSemiAxes[1] / kSemiAxes[2]);
+    // Mesh box lying flat: a flat face.
+    expectSettlesAtStaticHertzDepth(test::makeMeshShape(test::makeBoxMesh(kPhone)),
+                                    Transform(Rotation(-SimTK::Pi / 2, SimTK::XAxis), Vec3(0.005, 0, 0.01)),
+                                    kPhone[2], SimTK::Infinity);
+}
+
 // ---- half-space, rejected pairs, rigid geometry -----------------------------------------
 
 TEST(ObjectShapeContact, ObjectsOnAFloor) {
