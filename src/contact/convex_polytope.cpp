@@ -315,7 +315,9 @@ ConvexPolytope::Surface ConvexPolytope::findSurface(const SimTK::Vec3& p_S) cons
     }
     const Face& first = faces_[surface.tiedFaces.front()];
     surface.p_SP = p_S - (SimTK::dot(first.normal, p_S) - first.offset) * first.normal;
-    surface.n_S = SimTK::UnitVec3(sum);  // distinct, pairwise not opposite: never zero
+    // Tied normals may still cancel (the three sides of a triangular prism at its axis); the
+    // first face's normal then.
+    surface.n_S = sum.norm() > 1e-9 ? SimTK::UnitVec3(sum) : first.normal;
     return surface;
 }
 

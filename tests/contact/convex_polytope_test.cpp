@@ -71,6 +71,31 @@ TEST(ConvexPolytope, SignedDistanceEqualsTheBoxOnes) {
     }
 }
 
+// A triangular prism (an equilateral triangle extruded along z): on its axis the three sides
+// are equally deep and their normals cancel; the normal is then the first face's, not NaN.
+TEST(ConvexPolytope, CancellingTiedNormalsFallBackToTheFirstFace) {
+    model::TriangleMesh prism;
+    for (int k = 0; k < 3; ++k) {
+        const double a = 2 * SimTK::Pi * k / 3;
+        prism.vertices.push_back({0.02 * std::cos(a), 0.02 * std::sin(a), -0.05});
+        prism.vertices.push_back({0.02 * std::cos(a), 0.02 * std::sin(a), 0.05});
+    }
+    for (int k = 0; k < 3; ++k) {
+        const int b0 = 2 * k, t0 = b0 + 1, b1 = 2 * ((k + 1) % 3), t1 = b1 + 1;
+        prism.triangles.push_back({b0, b1, t1});
+        prism.triangles.push_back({b0, t1, t0});
+    }
+    prism.triangles.push_back({1, 3, 5});
+    prism.triangles.push_back({0, 4, 2});
+    const auto polytope = ConvexPolytope::build(prism, "prism");
+    EXPECT_EQ(polytope->getFaces().size(), 5u);
+    const ConvexPolytope::Surface s = polytope->findSurface(Vec3(0, 0, 0.001));
+    // Oracle: the inradius of the triangle, r cos 60 deg = 0.01 m.
+    EXPECT_NEAR(s.distance, -0.01, 1e-15);
+    EXPECT_TRUE(s.n_S.isFinite());
+    EXPECT_NEAR(s.n_S.norm(), 1, 1e-15);
+}
+
 TEST(ConvexPolytope, BadMeshesAreRejectedNamingTheProblem) {
     model::TriangleMesh open = test::makeBoxMesh(kHalf);
     open.triangles.pop_back();
