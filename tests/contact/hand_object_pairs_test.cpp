@@ -108,17 +108,19 @@ TEST(HandObjectPairs, BadObjectChoicesAreRejected) {
     EXPECT_THROW(makeHandObjectPairs(model, isHandSegmentBody, "ball", bad, m), InputError);
 }
 
-TEST(HandObjectPairs, CylinderGeometryIsRejectedNamingBodyAndGeometry) {
+TEST(HandObjectPairs, UnloadedMeshGeometryIsRejectedNamingBodyAndGeometry) {
     model::ModelDescription description = makeHandWithBall();
-    description.updBody("index_proximal")->geometry[0].type = model::Geometry::Type::Cylinder;
+    model::Geometry& geometry = description.updBody("index_proximal")->geometry[0];
+    geometry.type = model::Geometry::Type::Mesh;
+    geometry.meshFile = "phalanx.stl";
     const system::MultibodyModel model(description);
     try {
         makeHandObjectPairs(model, isHandSegmentBody, "ball", {}, {});
-        FAIL() << "cylinder accepted";
+        FAIL() << "mesh without triangles accepted";
     } catch (const InputError& e) {
         EXPECT_EQ(std::string(e.what()),
-                  "body 'index_proximal' geometry 'index_capsule': type cylinder has no contact "
-                  "support; use sphere, capsule or box");
+                  "body 'index_proximal' geometry 'index_capsule': mesh 'phalanx.stl' has no "
+                  "loaded triangles; contact needs the mesh read from its file");
     }
 }
 
