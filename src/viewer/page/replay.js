@@ -61,6 +61,8 @@
       var geometry = new THREE.BufferGeometry();
       geometry.setAttribute("position", new THREE.Float32BufferAttribute(g.verts, 3));
       geometry.setIndex(g.tris);
+      // One normal per face (the mesh is a convex polyhedron of flat faces), not smoothed over corners.
+      geometry = geometry.toNonIndexed();
       geometry.computeVertexNormals();
       mesh = new THREE.Mesh(geometry, material);
     } else {
