@@ -7,6 +7,7 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -22,11 +23,18 @@ std::string formatNumber(double value) {
     return text.str();
 }
 
+void checkFinite(const Vec3& v, const std::string& what) {
+    if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2])) {
+        throw InputError(what + " has a vertex that is not a finite number (" + formatNumber(v[0]) + ", " +
+                         formatNumber(v[1]) + ", " + formatNumber(v[2]) + "); give finite coordinates");
+    }
+}
+
 // Triangles of every mesh in the scene, vertices of equal position joined. assimp's
 // JoinIdenticalVertices keeps apart vertices whose normals differ (every corner of an STL file,
 // which stores one normal per face), so positions are joined here as well: closedness is a
 // property of positions.
-TriangleMesh collectTriangles(const aiScene& scene, const Vec3& scale) {
+TriangleMesh collectTriangles(const aiScene& scene, const Vec3& scale, const std::string& what) {
     TriangleMesh mesh;
     std::map<Vec3, int> indexOf;
     for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
@@ -38,6 +46,7 @@ TriangleMesh collectTriangles(const aiScene& scene, const Vec3& scale) {
             for (int k = 0; k < 3; ++k) {
                 const aiVector3D& v = part.mVertices[face.mIndices[k]];
                 const Vec3 p{v.x * scale[0], v.y * scale[1], v.z * scale[2]};
+                checkFinite(p, what);  // before the map, which cannot order NaN
                 const auto [it, added] = indexOf.emplace(p, static_cast<int>(mesh.vertices.size()));
                 if (added) mesh.vertices.push_back(p);
                 triangle[k] = it->second;
@@ -52,6 +61,7 @@ TriangleMesh collectTriangles(const aiScene& scene, const Vec3& scale) {
 
 void checkSolidConvexMesh(const TriangleMesh& mesh, const std::string& what) {
     if (mesh.triangles.empty()) throw InputError(what + " has no triangles; give a closed convex STL or OBJ mesh");
+    for (const Vec3& v : mesh.vertices) checkFinite(v, what);
     if (const auto edge = findOpenEdge(mesh)) {
         const Vec3& a = mesh.vertices[edge->first];
         const Vec3& b = mesh.vertices[edge->second];
@@ -69,7 +79,8 @@ void checkSolidConvexMesh(const TriangleMesh& mesh, const std::string& what) {
     const double hullVolume = calcConvexHullVolume(mesh, what);
     if (hullVolume > volume * (1 + kConvexVolumeTolerance)) {
         throw InputError(what + " is not convex: its convex hull has volume " + formatNumber(hullVolume) +
-                         " m^3 vs " + formatNumber(volume) + "; pass a convex mesh (e.g. the hull)");
+                         " m^3 vs " + formatNumber(volume) +
+                         " m^3 for the mesh; pass a convex mesh (e.g. the hull)");
     }
 }
 
@@ -101,7 +112,7 @@ TriangleMesh parseMeshBytes(const std::string& bytes, const std::string& format,
         throw InputError(what + " cannot be read as a mesh (assimp: " + foldToOneLine(importer.GetErrorString()) +
                          "); give an STL (ASCII or binary) or OBJ file");
     }
-    TriangleMesh mesh = collectTriangles(*scene, scale);
+    TriangleMesh mesh = collectTriangles(*scene, scale, what);
     checkSolidConvexMesh(mesh, what);
     return mesh;
 }

@@ -11,6 +11,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 
 using namespace graspsim::model;
 
@@ -81,6 +82,16 @@ TEST(MeshFile, ScaleIsAppliedPerAxis) {
 TEST(MeshFile, TetrahedronHasItsClosedFormVolume) {
     EXPECT_NEAR(calcMeshMassProperties(readMeshFile(kMeshDir + "tetrahedron.stl", {1, 1, 1}, "test")).mass,
                 0.03 * 0.03 * 0.03 / 6, 1e-6 * 4.5e-6);
+}
+
+TEST(MeshFile, NonFiniteVertexIsRefused) {
+    // A binary STL can hold NaN; it must not slip through the volume comparisons.
+    TriangleMesh box = readMeshFile(kMeshDir + "box.obj", {1, 1, 1}, "test");
+    box.vertices[3][1] = std::numeric_limits<double>::quiet_NaN();
+    const std::string path = (std::filesystem::temp_directory_path() / "graspsim_mesh_file_test_nan.stl").string();
+    writeBinaryStl(path, box);
+    EXPECT_NE(readError(path).find("not a finite number"), std::string::npos) << readError(path);
+    std::filesystem::remove(path);
 }
 
 struct BadMesh {
