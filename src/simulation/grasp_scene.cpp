@@ -275,6 +275,8 @@ SimTK::State GraspScene::makeInitialState() {
     }
     controller_->setGoals(goals);
     controller_->updateTargets(state);
+    setupCheck_ = calcSetupCheck(*this, state);
+    requireSetup(setupCheck_, scenario_.name);
     return state;
 }
 
