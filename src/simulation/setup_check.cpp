@@ -68,8 +68,8 @@ SetupCheck calcSetupCheck(const GraspScene& scene, const SimTK::State& state) {
     return check;
 }
 
-void requireSetup(const SetupCheck& check, const std::string& scenarioName) {
-    const std::string prefix = "scenario '" + scenarioName + "': at t = 0 ";
+void requireSetup(const SetupCheck& check, const std::string& where) {
+    const std::string prefix = where + ": at t = 0 ";
     if (check.initialPenetration > kMaxInitialPenetration) {
         const SegmentOverlap& o = check.overlaps.front();
         throw InputError(prefix + "segment '" + o.body + "' (geometry " + o.geometry + ") is " + formatMm(o.depth) +
@@ -87,7 +87,7 @@ void requireSetup(const SetupCheck& check, const std::string& scenarioName) {
 
 SetupCheck checkScenarioSetup(const scenario::Scenario& scenario, const SimulationOptions& options) {
     GraspScene scene(scenario, options);
-    scene.makeInitialState();
+    scene.makeInitialState();  // checks the initial state
     return scene.getSetupCheck();
 }
 

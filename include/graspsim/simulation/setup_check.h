@@ -69,9 +69,9 @@ struct SetupCheck {
 SetupCheck calcSetupCheck(const GraspScene& scene, const SimTK::State& state);
 
 /// Throws when `check` fails: one line naming the deepest segment and its depth, or the farthest
-/// goal and its distance, with the limit.
+/// goal and its distance, with the limit, after `where` (the scenario's file, or its name).
 /// @throws graspsim::InputError (exit code 2 in the CLI).
-void requireSetup(const SetupCheck& check, const std::string& scenarioName);
+void requireSetup(const SetupCheck& check, const std::string& where);
 
 /// Builds the scenario's scene with `options`, makes its initial state and checks it: what a
 /// command calls before it writes anything. Returns what was measured.
