@@ -211,3 +211,17 @@ TEST_F(SimulateCommand, GraspThatStartsInsideTheObjectIsRefused) {
     }
     EXPECT_FALSE(fs::exists(dir_ / "out"));
 }
+
+// A goal on the ball's surface but on top of it, where the palm covers the ball: the index finger
+// cannot get there from the grasp pose. One line naming the goal, exit 2, no output folder.
+TEST_F(SimulateCommand, GoalOutOfReachIsRefused) {
+    extraFiles_ = 1;
+    const std::string file = write("far.yaml", ballScenarioWith("index_tip: [0.0199, 0.0001, -0.0403]", "index_tip: [0, 0.045, 0]"));
+    const RunResult r = run("simulate " + file + " --out " + (dir_ / "out").string());
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    for (const char* f : {"far.yaml", "goal 'index_tip' is out of reach", "mm from it"}) {
+        EXPECT_NE(r.err.find(f), std::string::npos) << "missing '" << f << "' in " << r.err;
+    }
+    EXPECT_FALSE(fs::exists(dir_ / "out"));
+}
