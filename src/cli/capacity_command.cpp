@@ -7,6 +7,7 @@
 #include "graspsim/error.h"
 #include "graspsim/scenario/scenario_file.h"
 #include "graspsim/simulation/multi_attachment_switch.h"
+#include "graspsim/simulation/setup_check.h"
 
 #include <cmath>
 #include <cstdio>
@@ -154,6 +155,7 @@ int CapacityCommand::run() const {
     const scenario::Scenario scenario = scenario::loadScenario(o.scenario);
     simulation::checkApproxAttach(scenario, plan.simulation);
     for (const capacity::GraspCapacityRequest& r : plan.requests) capacity::checkLoadResistible(scenario, r);
+    simulation::checkScenarioSetup(scenario, plan.simulation);  // before the folder exists
     if (!o.out.empty()) prepareFolder(o.out);
     std::vector<capacity::GraspCapacity> measurements;
     for (capacity::GraspCapacityRequest r : plan.requests) {

@@ -9,6 +9,7 @@
 #include "graspsim/scenario/scenario_file.h"
 #include "graspsim/simulation/grasp_simulation.h"
 #include "graspsim/viewer/replay_page.h"
+#include "graspsim/simulation/setup_check.h"
 
 #include <cmath>
 #include <cstdio>
@@ -188,6 +189,7 @@ int SimulateCommand::run(const std::vector<std::string>& commandLine) const {
     checkPerturbation(o.perturbation, scenario);
     options.perturbation = o.perturbation;
     simulation::checkApproxAttach(scenario, options);
+    simulation::checkScenarioSetup(scenario, options);  // refuses a grasp that cannot start before the folder exists
     prepareFolder(o.out);
     ProgressMeter meter("simulating", o.quiet);
     const simulation::SimulationResult result = simulation::runGraspSimulation(scenario, options, makeProgress(meter));

@@ -7,6 +7,7 @@
 #include "graspsim/scenario/scenario_file.h"
 #include "graspsim/validation/plot_script.h"
 #include "graspsim/validation/validation_report.h"
+#include "graspsim/simulation/setup_check.h"
 
 #include <cmath>
 #include <filesystem>
@@ -104,6 +105,10 @@ int ValidateCommand::run() const {
         }
     }
     const std::vector<validation::ValidationRun> runs = validation::makeValidationPlan(plan);
+    // Every run's grasp must be able to start (setup_check.h) before the report folder exists.
+    for (const validation::ValidationRun& run : runs) {
+        simulation::checkScenarioSetup(scenario::findBuiltinScenario(run.scenario), run.options);
+    }
     prepareFolder(o.out);
     ProgressMeter meter("validating", o.quiet);
     SuiteProgress progress(meter, runs);

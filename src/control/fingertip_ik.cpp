@@ -98,8 +98,11 @@ SimTK::Vector FingertipIk::solve(const SimTK::State& state, const std::vector<Si
     }
     const SimTK::State& solved = assembler_->getInternalState();
     double sumSquares = 0;
+    lastDistances_.clear();
     for (SimTK::Markers::MarkerIx m(0); m < markers_->getNumMarkers(); ++m) {
-        sumSquares += markers_->findCurrentMarkerErrorSquared(m);
+        const double squared = markers_->findCurrentMarkerErrorSquared(m);
+        sumSquares += squared;
+        lastDistances_.push_back(std::sqrt(squared));
     }
     lastError_ = std::sqrt(sumSquares / std::max(1, markers_->getNumMarkers()));
     SimTK::Vector q(static_cast<int>(movingBodies_.size()));

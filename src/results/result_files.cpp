@@ -101,6 +101,7 @@ std::string formatSummaryJson(const simulation::SimulationSummary& s) {
     j["settle_time_s"] = s.settleTime;
     j["object_displacement_m"] = s.objectDisplacement;
     j["max_penetration_m"] = s.maxPenetration;
+    j["initial_penetration_m"] = s.initialPenetration;
     j["max_grasp_quality_n"] = s.maxGraspQuality;
     j["held"] = s.held;
     j["max_fingertip_goal_distance_m"] = s.maxFingertipGoalDistance;

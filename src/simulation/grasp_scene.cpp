@@ -287,6 +287,8 @@ SimTK::State GraspScene::makeInitialState() {
     }
     controller_->setGoals(goals);
     controller_->updateTargets(state);
+    setupCheck_ = calcSetupCheck(*this, state);
+    requireSetup(setupCheck_, scenario_.source.empty() ? "scenario " + scenario_.name : scenario_.source);
     return state;
 }
 

@@ -280,6 +280,7 @@ void runScene(GraspScene& scene, AnyStepper& stepper, double duration, const cha
               const ProgressCallback& progress, const SampleObserver& observer, SimulationResult& result) {
     Recorder recorder(scene, result);
     stepper.initialize(scene.makeInitialState());
+    result.summary.initialPenetration = scene.getSetupCheck().initialPenetration;
     recorder.record(stepper.getState());
     std::string lastEvent = "start";
     PhaseTimer phases(scene);

@@ -81,7 +81,7 @@ TEST_F(SimulateCommand, ShortRunWritesTheSummary) {
     const std::string summary = slurp(fs::path(out) / "summary.json");
     for (const char* key : {"\"scenario\"", "\"contact\"", "\"mode\"", "\"sim_time_s\"", "\"wall_time_s\"", "\"steps\"",
                             "\"mean_step_us\"", "\"ik_us_per_step\"", "\"dynamics_us_per_step\"",
-                            "\"object_displacement_m\"", "\"max_penetration_m\"", "\"held\"", "\"complete\": true"}) {
+                            "\"object_displacement_m\"", "\"max_penetration_m\"", "\"initial_penetration_m\"", "\"held\"", "\"complete\": true"}) {
         EXPECT_NE(summary.find(key), std::string::npos) << key;
     }
 }
@@ -221,4 +221,40 @@ TEST_F(SimulateCommand, RejectsBadObjectShapesAndMeshes) {
     check(meshScenario("open_box.stl"), {"object.mesh", "open_box.stl", "not closed"});
     check(meshScenario("l_shape.obj"), {"object.mesh", "l_shape.obj", "not convex", "convex hull has volume"});
     check(meshScenario("inverted_box.stl"), {"object.mesh", "inverted_box.stl", "inverted normals"});
+}
+
+// The set-up check (setup_check.h): the reference scenario on a 50 kg, 1.52 m woman with its
+// hand-found pose starts with a finger inside the ball. One line naming the file, the segment and
+// the depth (the depth itself is checked against a closed form in setup_check_test), exit 2, and
+// no output folder.
+TEST_F(SimulateCommand, GraspThatStartsInsideTheObjectIsRefused) {
+    extraFiles_ = 1;
+    std::string text = ballScenarioWith("sex: male ", "sex: female ");
+    for (const auto& [from, to] : {std::pair<std::string, std::string>{"mass: 73.0 ", "mass: 50.0 "}, {"stature: 1.741 ", "stature: 1.52 "}}) {
+        const std::size_t at = text.find(from);
+        ASSERT_NE(at, std::string::npos) << from;
+        text.replace(at, from.size(), to);
+    }
+    const std::string file = write("small.yaml", text);
+    const RunResult r = run("simulate " + file + " --out " + (dir_ / "out").string());
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    for (const char* f : {"small.yaml", "segment 'middle_distal'", "mm inside the object"}) {
+        EXPECT_NE(r.err.find(f), std::string::npos) << "missing '" << f << "' in " << r.err;
+    }
+    EXPECT_FALSE(fs::exists(dir_ / "out"));
+}
+
+// A goal on the ball's surface but on top of it, where the palm covers the ball: the index finger
+// cannot get there from the grasp pose. One line naming the goal, exit 2, no output folder.
+TEST_F(SimulateCommand, GoalOutOfReachIsRefused) {
+    extraFiles_ = 1;
+    const std::string file = write("far.yaml", ballScenarioWith("index_tip: [0.0199, 0.0001, -0.0403]", "index_tip: [0, 0.045, 0]"));
+    const RunResult r = run("simulate " + file + " --out " + (dir_ / "out").string());
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    for (const char* f : {"far.yaml", "goal 'index_tip' is out of reach", "mm from it"}) {
+        EXPECT_NE(r.err.find(f), std::string::npos) << "missing '" << f << "' in " << r.err;
+    }
+    EXPECT_FALSE(fs::exists(dir_ / "out"));
 }

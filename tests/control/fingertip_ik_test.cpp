@@ -99,3 +99,28 @@ TEST(FingertipIk, IgnoresConstraintsItCannotMove) {
     const SimTK::State solved = solveForTipsOf(model, ik, joints, known, s);
     EXPECT_DOUBLE_EQ(box.getBodyOriginLocation(solved)[0], 0.3 + 1e-5);
 }
+
+// Oracle: the per-goal distances are those of the returned pose, measured by forward kinematics.
+// The index goal is moved 20 cm off, out of reach: its distance is large, the others stay met.
+TEST(FingertipIk, LastDistancesAreThoseOfTheSolution) {
+    const model::ModelDescription arm = model::buildBodyModel(model::BuildOptions{});
+    system::MultibodyModel model(arm);
+    SimTK::State s = model.realizeTopology();
+    model.setJointPosition(s, "elbow_flexion", 1.4);
+    model.getSystem().realize(s, SimTK::Stage::Position);
+    const std::vector<std::string> joints = fingerJoints(arm);
+    std::vector<SimTK::Vec3> goals;
+    for (const std::string& tip : kTips) goals.push_back(model.findEndEffectorLocationInGround(s, tip));
+    goals[1] += SimTK::Vec3(0, 0.2, 0);
+    control::FingertipIk ik(model, kTips, joints);
+    const SimTK::Vector q = ik.solve(s, goals);
+    SimTK::State solved = s;
+    for (std::size_t k = 0; k < joints.size(); ++k) model.setJointPosition(solved, joints[k], q[static_cast<int>(k)]);
+    model.getSystem().realize(solved, SimTK::Stage::Position);
+    ASSERT_EQ(ik.getLastDistances().size(), kTips.size());
+    for (std::size_t k = 0; k < kTips.size(); ++k) {
+        const double d = (model.findEndEffectorLocationInGround(solved, kTips[k]) - goals[k]).norm();
+        EXPECT_NEAR(ik.getLastDistances()[k], d, 1e-9) << kTips[k];
+    }
+    EXPECT_GT(ik.getLastDistances()[1], 0.05);
+}

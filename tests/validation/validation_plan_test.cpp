@@ -5,6 +5,7 @@
 
 #include "graspsim/error.h"
 #include "graspsim/scenario/scenario_file.h"
+#include "graspsim/simulation/setup_check.h"
 
 #include <gtest/gtest.h>
 
@@ -75,4 +76,14 @@ TEST(ValidationPlan, UnknownNamesAreRejectedNamingTheOption) {
     options.experiments.clear();
     options.variants = {"approx-glue"};
     EXPECT_THROW(validation::makeValidationPlan(options), InputError);
+}
+
+// Every run of the full suite starts a grasp the set-up check accepts (setup_check.h), so
+// `graspsim validate` never refuses its own plan.
+TEST(ValidationPlan, EveryRunPassesTheSetUpCheck) {
+    for (const validation::ValidationRun& run : validation::makeValidationPlan(validation::PlanOptions{})) {
+        const simulation::SetupCheck check =
+            simulation::checkScenarioSetup(scenario::findBuiltinScenario(run.scenario), run.options);
+        EXPECT_LE(check.initialPenetration, simulation::kMaxInitialPenetration) << run.id;
+    }
 }

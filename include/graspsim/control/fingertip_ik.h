@@ -36,6 +36,10 @@ public:
     /// Root-mean-square distance between end-effectors and goals after the last solve (m).
     double getLastError() const { return lastError_; }
 
+    /// Distance between each end-effector and its goal after the last solve (m), in the order of
+    /// `endEffectors`: how far the least-squares fit left each one short.
+    const std::vector<double>& getLastDistances() const { return lastDistances_; }
+
 private:
     const system::MultibodyModel& model_;
     std::vector<std::string> movingJoints_;
@@ -43,6 +47,7 @@ private:
     std::unique_ptr<SimTK::Assembler> assembler_;
     SimTK::Markers* markers_ = nullptr;  // owned by assembler_
     double lastError_ = 0;
+    std::vector<double> lastDistances_;
 };
 
 }  // namespace graspsim::control

@@ -54,6 +54,9 @@ public:
     /// Runs one IK update on `state` now (the simulation calls it once at t = 0).
     void updateTargets(SimTK::State& state) const;
 
+    /// The IK solver (its last solution's fingertip-goal distances, for the set-up check).
+    const FingertipIk& getIk() const { return ik_; }
+
 private:
     const JointPdController& pd_;
     FingertipIk& ik_;

@@ -35,6 +35,7 @@
 #include "graspsim/grasp/multi_attachment.h"
 #include "graspsim/scenario/scenario.h"
 #include "graspsim/simulation/perturbation_force.h"
+#include "graspsim/simulation/setup_check.h"
 #include "graspsim/simulation/simulation_options.h"
 #include "graspsim/system/implicit_joint_impedance.h"
 #include "graspsim/system/multibody_model.h"
@@ -118,7 +119,11 @@ public:
     const RampLoad* getLoadRamp() const { return loadRamp_.get(); }
 
     /// The state at t = 0: grasp pose, object at its initial pose and held, IK targets set.
+    /// Checks it (setup_check.h) and keeps what the check measured (getSetupCheck()).
+    /// @throws graspsim::InputError when a segment starts inside the object or a goal is out of reach.
     SimTK::State makeInitialState();
+    /// What the set-up check measured in the last makeInitialState() (empty before it).
+    const SetupCheck& getSetupCheck() const { return setupCheck_; }
     /// Releases the object (unlocks its mobilizer, or disables the Ground weld that holds it): an
     /// Instance-stage change.
     void releaseObject(SimTK::State& state) const;
@@ -162,6 +167,7 @@ private:
     std::unique_ptr<RampLoad> loadRamp_;
     std::vector<std::string> goalEndEffectors_;
     std::vector<SimTK::Vec3> surfaceGoals_;
+    SetupCheck setupCheck_;
 };
 
 }  // namespace graspsim::simulation

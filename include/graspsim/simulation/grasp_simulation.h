@@ -52,6 +52,7 @@ struct SimulationSummary {
     double settleTime = 0;          ///< when the grasp counts as settled (s)
     double objectDisplacement = 0;  ///< |p_GO(end) - p_GO(settle)| (m)
     double maxPenetration = 0;      ///< deepest contact over the output samples (m)
+    double initialPenetration = 0;  ///< deepest segment-object overlap at t = 0 (m; setup_check.h), 0 if none
     double maxGraspQuality = 0;     ///< largest grasp quality over the output samples (N)
     bool held = false;              ///< at the end every goal's fingertip is within the held tolerance of its goal
     double maxFingertipGoalDistance = 0;  ///< at the end (m)
