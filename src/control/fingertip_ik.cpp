@@ -160,16 +160,22 @@ void formNormalEquations(const std::vector<double>& J, const std::vector<SimTK::
     }
 }
 
-// The Levenberg-Marquardt step: solves (A + mu diag(A)) dq = -g for the free joints (the others
-// stay where they are) by Cholesky. The tiny absolute term keeps a joint no goal depends on at rest.
+// The Levenberg step: solves (A + mu a I) dq = -g for the free joints (the others stay where they
+// are) by Cholesky, with a the mean diagonal of A. The damping is the same on every joint (not
+// Marquardt's diag(A)) because then the step J^T (J J^T + mu a I)^-1 r lies in the row space of J:
+// a finger with more joints than its goal constrains does not drift in its null space from one
+// solve to the next, it moves as little as the fit needs, as a gradient method does.
 std::vector<double> solveDampedStep(const std::vector<double>& A, const std::vector<double>& g,
                                     const std::vector<int>& free, int n, double mu) {
     const int m = static_cast<int>(free.size());
+    double meanDiagonal = 0;
+    for (int i = 0; i < m; ++i) meanDiagonal += A[free[i] * n + free[i]] / m;
+    const double damping = mu * meanDiagonal + 1e-14;  // the absolute term keeps a joint no goal depends on at rest
     std::vector<double> L(static_cast<std::size_t>(m) * m, 0.0), x(m);
     for (int i = 0; i < m; ++i) {
         for (int j = 0; j <= i; ++j) {
             double v = A[free[i] * n + free[j]];
-            if (i == j) v = v * (1 + mu) + 1e-14;
+            if (i == j) v += damping;
             for (int k = 0; k < j; ++k) v -= L[i * m + k] * L[j * m + k];
             L[i * m + j] = i == j ? std::sqrt(std::max(v, 1e-300)) : v / L[j * m + j];
         }
