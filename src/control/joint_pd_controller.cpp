@@ -2,6 +2,9 @@
 
 #include "graspsim/error.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace graspsim::control {
 
 using SimTK::MobilizedBodyIndex;
@@ -15,6 +18,16 @@ MobilizedBodyIndex findJointBody(const system::MultibodyModel& model, const std:
     model.getJointQIndex(joint);  // throws InputError for an unknown or fixed joint
     return model.getMobilizedBody(model.getDescription().findJoint(joint)->child).getMobilizedBodyIndex();
 }
+
+}  // namespace
+
+namespace {
+
+// Targets moving from `from` to `to` (rad) over [start, start + duration] (s); none when duration is 0.
+struct TargetRamp {
+    Vector from, to;
+    double start = 0, duration = 0;
+};
 
 }  // namespace
 
@@ -33,19 +46,29 @@ public:
     void realizeTopology(State& state) const override {
         Vector initial(static_cast<int>(jointBodies_.size()), 0.0);
         targetsIndex_ = matter_.allocateDiscreteVariable(state, SimTK::Stage::Dynamics, new SimTK::Value<Vector>(initial));
+        // Report: a ramp starts at the targets' present value, so it changes nothing computed at its start.
+        rampIndex_ = matter_.allocateDiscreteVariable(state, SimTK::Stage::Report, new SimTK::Value<TargetRamp>());
     }
 
-    const Vector& getTargets(const State& s) const {
-        return SimTK::Value<Vector>::downcast(matter_.getDiscreteVariable(s, targetsIndex_)).get();
+    Vector getTargets(const State& s) const {
+        const TargetRamp& ramp = SimTK::Value<TargetRamp>::downcast(matter_.getDiscreteVariable(s, rampIndex_)).get();
+        if (!(ramp.duration > 0)) return SimTK::Value<Vector>::downcast(matter_.getDiscreteVariable(s, targetsIndex_)).get();
+        const double tau = std::clamp((s.getTime() - ramp.start) / ramp.duration, 0.0, 1.0);
+        return ramp.from + (tau * tau * (3 - 2 * tau)) * (ramp.to - ramp.from);
     }
     void setTargets(State& s, const Vector& targets) const {
         SimTK::Value<Vector>::updDowncast(matter_.updDiscreteVariable(s, targetsIndex_)).upd() = targets;
+        SimTK::Value<TargetRamp>::updDowncast(matter_.updDiscreteVariable(s, rampIndex_)).upd() = TargetRamp();
+    }
+    void rampTargets(State& s, const Vector& targets, double duration) const {
+        TargetRamp ramp{getTargets(s), targets, s.getTime(), duration};
+        SimTK::Value<TargetRamp>::updDowncast(matter_.updDiscreteVariable(s, rampIndex_)).upd() = std::move(ramp);
     }
     double findAngle(const State& s, std::size_t k) const { return matter_.getMobilizedBody(jointBodies_[k]).getOneQ(s, 0); }
 
     void calcForce(const State& s, SimTK::Vector_<SimTK::SpatialVec>&, SimTK::Vector_<SimTK::Vec3>&,
                    Vector& mobilityForces) const override {
-        const Vector& target = getTargets(s);
+        const Vector target = getTargets(s);
         const Vector holding = calcGravityHoldingForces(s);
         for (std::size_t k = 0; k < jointBodies_.size(); ++k) {
             const SimTK::MobilizedBody& mobod = matter_.getMobilizedBody(jointBodies_[k]);
@@ -80,7 +103,7 @@ private:
     std::vector<MobilizedBodyIndex> jointBodies_;
     std::vector<PdGains> gains_;
     std::vector<MobilizedBodyIndex> weighedBodies_;
-    mutable SimTK::DiscreteVariableIndex targetsIndex_;
+    mutable SimTK::DiscreteVariableIndex targetsIndex_, rampIndex_;
 };
 
 JointPdController::JointPdController(system::MultibodyModel& model, const std::vector<ControlledJoint>& joints,
@@ -102,7 +125,15 @@ void JointPdController::setTargets(SimTK::State& state, const SimTK::Vector& tar
     impl_->setTargets(state, targets);
 }
 
-const SimTK::Vector& JointPdController::getTargets(const SimTK::State& state) const { return impl_->getTargets(state); }
+void JointPdController::rampTargets(SimTK::State& state, const SimTK::Vector& targets, double duration) const {
+    if (targets.size() != static_cast<int>(jointNames_.size()) || !(duration > 0) || !std::isfinite(duration)) {
+        throw Error("JointPdController::rampTargets: got " + std::to_string(targets.size()) + " targets for " +
+                    std::to_string(jointNames_.size()) + " joints over " + std::to_string(duration) + " s (needs > 0)");
+    }
+    impl_->rampTargets(state, targets, duration);
+}
+
+SimTK::Vector JointPdController::getTargets(const SimTK::State& state) const { return impl_->getTargets(state); }
 
 SimTK::Vector JointPdController::findJointAngles(const SimTK::State& state) const {
     Vector q(static_cast<int>(jointNames_.size()));

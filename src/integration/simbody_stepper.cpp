@@ -56,7 +56,10 @@ void SimbodyCpodesStepper::advanceTo(double time) {
     handleDueScheduledEvents();  // those due where the last call stopped
     while (!integrator_->isSimulationOver() && integrator_->getTime() < time) {
         const ScheduledTimes next = findScheduledTimes(system_, integrator_->getState(), false, false);
-        const SimTK::Integrator::SuccessfulStepStatus status = integrator_->stepTo(std::min({time, next.event, next.report}));
+        // Not past the next scheduled event: its handler then works on the integrator's own
+        // advanced state, and a change that leaves the right-hand side continuous (Stage::Report,
+        // such as a ramp of the PD targets) lets the integrator go on without a restart.
+        const SimTK::Integrator::SuccessfulStepStatus status = integrator_->stepTo(std::min({time, next.event, next.report}), next.event);
         if (status == SimTK::Integrator::EndOfSimulation) {
             handleEvents(integrator_->updAdvancedState(), SimTK::Event::Cause::Termination, {});
             return;
@@ -94,8 +97,12 @@ void SimbodyCpodesStepper::handleDueScheduledEvents() {
     const bool terminate = results.getExitStatus() == SimTK::HandleEventsResults::ShouldTerminate;
     if (results.getLowestModifiedStage() == SimTK::Stage::Infinity && !terminate) return;
     // Even a Report-stage change restarts when `now` is interpolated: the integrator is ahead of it.
-    if (&now != &integrator_->getAdvancedState()) integrator_->updAdvancedState() = now;
-    restartIntegrator(std::min(results.getLowestModifiedStage(), SimTK::Stage(SimTK::Stage::Acceleration)), terminate);
+    if (&now != &integrator_->getAdvancedState()) {
+        integrator_->updAdvancedState() = now;
+        restartIntegrator(std::min(results.getLowestModifiedStage(), SimTK::Stage(SimTK::Stage::Acceleration)), terminate);
+        return;
+    }
+    restartIntegrator(results.getLowestModifiedStage(), terminate);
 }
 
 // TimeStepper's way for the events the integrator stopped at: handled on its advanced state.
