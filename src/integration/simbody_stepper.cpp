@@ -56,10 +56,7 @@ void SimbodyCpodesStepper::advanceTo(double time) {
     handleDueScheduledEvents();  // those due where the last call stopped
     while (!integrator_->isSimulationOver() && integrator_->getTime() < time) {
         const ScheduledTimes next = findScheduledTimes(system_, integrator_->getState(), false, false);
-        // Not past the next scheduled event: its handler then works on the integrator's own
-        // advanced state, and a change that leaves the right-hand side continuous (Stage::Report,
-        // such as a ramp of the PD targets) lets the integrator go on without a restart.
-        const SimTK::Integrator::SuccessfulStepStatus status = integrator_->stepTo(std::min({time, next.event, next.report}), next.event);
+        const SimTK::Integrator::SuccessfulStepStatus status = integrator_->stepTo(std::min({time, next.event, next.report}));
         if (status == SimTK::Integrator::EndOfSimulation) {
             handleEvents(integrator_->updAdvancedState(), SimTK::Event::Cause::Termination, {});
             return;
@@ -95,14 +92,27 @@ void SimbodyCpodesStepper::handleDueScheduledEvents() {
     ++scheduledEvents_;
     const SimTK::HandleEventsResults results = callHandlers(now, SimTK::Event::Cause::Scheduled, due.eventIds);
     const bool terminate = results.getExitStatus() == SimTK::HandleEventsResults::ShouldTerminate;
-    if (results.getLowestModifiedStage() == SimTK::Stage::Infinity && !terminate) return;
-    // Even a Report-stage change restarts when `now` is interpolated: the integrator is ahead of it.
-    if (&now != &integrator_->getAdvancedState()) {
-        integrator_->updAdvancedState() = now;
-        restartIntegrator(std::min(results.getLowestModifiedStage(), SimTK::Stage(SimTK::Stage::Acceleration)), terminate);
+    if (results.getLowestModifiedStage() == SimTK::Stage::Infinity && !terminate) {
+        // Nothing the integrator computed changed, but a Report-stage change (Simbody does not
+        // report it here) such as a ramp of the PD targets planned to start later must reach the
+        // integrator's own state, which may be ahead of the interpolated `now`.
+        if (&now != &integrator_->getAdvancedState()) carryOverToAdvancedState(now);
         return;
     }
-    restartIntegrator(results.getLowestModifiedStage(), terminate);
+    // A change below Stage::Report restarts from `now`, even when the integrator is ahead of it.
+    if (&now != &integrator_->getAdvancedState()) integrator_->updAdvancedState() = now;
+    restartIntegrator(std::min(results.getLowestModifiedStage(), SimTK::Stage(SimTK::Stage::Acceleration)), terminate);
+}
+
+// The advanced state becomes `handled` (its discrete variables) at the advanced time, position
+// and velocity: the integrator goes on from where it was.
+void SimbodyCpodesStepper::carryOverToAdvancedState(const SimTK::State& handled) {
+    SimTK::State merged = handled;
+    const SimTK::State& advanced = integrator_->getAdvancedState();
+    merged.updTime() = advanced.getTime();
+    merged.updY() = advanced.getY();
+    system_.realize(merged, SimTK::Stage::Acceleration);
+    integrator_->updAdvancedState() = std::move(merged);
 }
 
 // TimeStepper's way for the events the integrator stopped at: handled on its advanced state.
