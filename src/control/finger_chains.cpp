@@ -32,42 +32,48 @@ FingerChains::FingerChains(const system::MultibodyModel& model, const std::vecto
         movingBodies_.push_back(model.getMobilizedBody(j->child).getMobilizedBodyIndex());
         joints_.push_back(j->hasLimits() ? MovingJoint{j->lower, j->upper} : MovingJoint{-inf, inf});
     }
-    const SimTK::SimbodyMatterSubsystem& matter = model.getMatter();
     for (const std::string& name : endEffectors) {
         const model::EndEffector* e = d.findEndEffector(name);
         if (!e) throw InputError("IK: no end-effector named '" + name + "'");
-        Chain chain;
-        chain.p_BE = SimTK::Vec3(e->p_BE[0], e->p_BE[1], e->p_BE[2]);
-        // The path from the end-effector's body inward; the chain starts at its innermost moving joint.
-        std::vector<Link> path;
-        std::size_t innermostMoving = 0;
-        for (const SimTK::MobilizedBody* b = &model.getMobilizedBody(e->body); !b->isGround(); b = &b->getParentMobilizedBody()) {
-            Link link;
-            link.body = b->getMobilizedBodyIndex();
-            const auto it = std::find(movingBodies_.begin(), movingBodies_.end(), link.body);
-            if (it != movingBodies_.end()) {
-                link.moving = static_cast<int>(it - movingBodies_.begin());
-                innermostMoving = path.size() + 1;
-            }
-            path.push_back(link);
-        }
-        path.resize(innermostMoving);  // links inboard of every moving joint only carry the base
-        std::reverse(path.begin(), path.end());
-        chain.base = path.empty() ? model.getMobilizedBody(e->body).getMobilizedBodyIndex()
-                                  : matter.getMobilizedBody(path.front().body).getParentMobilizedBody().getMobilizedBodyIndex();
-        for (Link& link : path) {
-            const SimTK::MobilizedBody& mobod = matter.getMobilizedBody(link.body);
-            if (SimTK::MobilizedBody::Pin::isInstanceOf(mobod)) link.kind = Kind::Pin;
-            else if (SimTK::MobilizedBody::Slider::isInstanceOf(mobod)) link.kind = Kind::Slider;
-            else if (SimTK::MobilizedBody::Weld::isInstanceOf(mobod)) link.kind = Kind::Weld;
-            else throw Error("IK: the mobilizer of body " + std::to_string(link.body) + " on the path of '" + name +
-                             "' is not a pin, slider or weld");
-            link.X_PF = mobod.getDefaultInboardFrame();
-            link.X_MB = ~mobod.getDefaultOutboardFrame();
-        }
-        chain.links = std::move(path);
-        chains_.push_back(std::move(chain));
+        chains_.push_back(makeChain(model.getMobilizedBody(e->body), SimTK::Vec3(e->p_BE[0], e->p_BE[1], e->p_BE[2]), name));
     }
+}
+
+// The path from the end-effector's body inward, cut at its innermost moving joint: the links
+// further in only carry the chain's base, whose pose capture() reads from the state.
+FingerChains::Chain FingerChains::makeChain(const SimTK::MobilizedBody& body, const SimTK::Vec3& p_BE,
+                                            const std::string& name) const {
+    Chain chain;
+    chain.p_BE = p_BE;
+    std::vector<Link> path;
+    std::size_t innermostMoving = 0;
+    for (const SimTK::MobilizedBody* b = &body; !b->isGround(); b = &b->getParentMobilizedBody()) {
+        Link link;
+        link.body = b->getMobilizedBodyIndex();
+        const auto it = std::find(movingBodies_.begin(), movingBodies_.end(), link.body);
+        if (it != movingBodies_.end()) {
+            link.moving = static_cast<int>(it - movingBodies_.begin());
+            innermostMoving = path.size() + 1;
+        }
+        path.push_back(link);
+    }
+    path.resize(innermostMoving);
+    std::reverse(path.begin(), path.end());
+    const SimTK::SimbodyMatterSubsystem& matter = model_.getMatter();
+    chain.base = path.empty() ? body.getMobilizedBodyIndex()
+                              : matter.getMobilizedBody(path.front().body).getParentMobilizedBody().getMobilizedBodyIndex();
+    for (Link& link : path) {
+        const SimTK::MobilizedBody& mobod = matter.getMobilizedBody(link.body);
+        if (SimTK::MobilizedBody::Pin::isInstanceOf(mobod)) link.kind = Kind::Pin;
+        else if (SimTK::MobilizedBody::Slider::isInstanceOf(mobod)) link.kind = Kind::Slider;
+        else if (SimTK::MobilizedBody::Weld::isInstanceOf(mobod)) link.kind = Kind::Weld;
+        else throw Error("IK: the mobilizer of body " + std::to_string(link.body) + " on the path of '" + name +
+                         "' is not a pin, slider or weld");
+        link.X_PF = mobod.getDefaultInboardFrame();
+        link.X_MB = ~mobod.getDefaultOutboardFrame();
+    }
+    chain.links = std::move(path);
+    return chain;
 }
 
 void FingerChains::capture(const SimTK::State& state) {

@@ -52,6 +52,8 @@ private:
     };
     struct MovingJoint { double lower, upper; };
 
+    Chain makeChain(const SimTK::MobilizedBody& body, const SimTK::Vec3& p_BE, const std::string& name) const;
+
     const system::MultibodyModel& model_;
     std::vector<SimTK::MobilizedBodyIndex> movingBodies_;
     std::vector<MovingJoint> joints_;
