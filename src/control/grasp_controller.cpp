@@ -26,7 +26,10 @@ void GraspController::updateTargets(SimTK::State& state) const {
     const SimTK::Vector q = ik_.solve(state, goals_G);
     SimTK::Vector targets = pd_.getTargets(state);
     for (std::size_t k = 0; k < targetSlots_.size(); ++k) targets[targetSlots_[k]] = q[static_cast<int>(k)];
-    pd_.setTargets(state, targets);
+    // Ramped over one interval, one interval from now, rather than set: the torques stay
+    // continuous, and an integrator that has stepped up to an interval past this instant need
+    // not restart (joint_pd_controller.h).
+    pd_.rampTargets(state, targets, getEventInterval(), getEventInterval());
     timing_.solves += 1;
     timing_.totalSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     timing_.lastError = ik_.getLastError();

@@ -2,6 +2,10 @@
 
 #include "graspsim/error.h"
 
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
 namespace graspsim::control {
 
 using SimTK::MobilizedBodyIndex;
@@ -15,6 +19,42 @@ MobilizedBodyIndex findJointBody(const system::MultibodyModel& model, const std:
     model.getJointQIndex(joint);  // throws InputError for an unknown or fixed joint
     return model.getMobilizedBody(model.getDescription().findJoint(joint)->child).getMobilizedBodyIndex();
 }
+
+}  // namespace
+
+namespace {
+
+// One smoothstep of the targets from `from` to `to` (rad) over [start, start + duration] (s).
+struct RampSegment {
+    Vector from, to;
+    double start = 0, duration = 0;
+    double findEnd() const { return start + duration; }
+};
+
+// Targets as a function of time: `base` until the first segment starts, then each segment in turn
+// (they do not overlap), holding the last one's end value. None while `segments` is empty.
+struct TargetRamp {
+    bool active = false;  // false: the targets last set (setTargets) hold
+    Vector base;
+    std::vector<RampSegment> segments;
+
+    Vector findValue(double t) const {
+        Vector value = base;
+        for (const RampSegment& r : segments) {
+            if (t <= r.start) break;
+            const double tau = std::min(1.0, (t - r.start) / r.duration);
+            value = r.from + (tau * tau * (3 - 2 * tau)) * (r.to - r.from);
+        }
+        return value;
+    }
+    // Drops the segments over by `t`, folding their end value into the base.
+    void forgetBefore(double t) {
+        while (!segments.empty() && segments.front().findEnd() <= t) {
+            base = segments.front().to;
+            segments.erase(segments.begin());
+        }
+    }
+};
 
 }  // namespace
 
@@ -33,19 +73,36 @@ public:
     void realizeTopology(State& state) const override {
         Vector initial(static_cast<int>(jointBodies_.size()), 0.0);
         targetsIndex_ = matter_.allocateDiscreteVariable(state, SimTK::Stage::Dynamics, new SimTK::Value<Vector>(initial));
+        // Report: a ramp starts at the targets' present value, so it changes nothing computed at its start.
+        rampIndex_ = matter_.allocateDiscreteVariable(state, SimTK::Stage::Report, new SimTK::Value<TargetRamp>());
     }
 
-    const Vector& getTargets(const State& s) const {
-        return SimTK::Value<Vector>::downcast(matter_.getDiscreteVariable(s, targetsIndex_)).get();
+    Vector getTargets(const State& s) const {
+        const TargetRamp& ramp = SimTK::Value<TargetRamp>::downcast(matter_.getDiscreteVariable(s, rampIndex_)).get();
+        if (!ramp.active) return SimTK::Value<Vector>::downcast(matter_.getDiscreteVariable(s, targetsIndex_)).get();
+        return ramp.findValue(s.getTime());
     }
     void setTargets(State& s, const Vector& targets) const {
         SimTK::Value<Vector>::updDowncast(matter_.updDiscreteVariable(s, targetsIndex_)).upd() = targets;
+        SimTK::Value<TargetRamp>::updDowncast(matter_.updDiscreteVariable(s, rampIndex_)).upd() = TargetRamp();
+    }
+    // The new segment starts after `delay` and after every segment already planned, from the value
+    // the targets have then, so the targets do not change before it starts.
+    void rampTargets(State& s, const Vector& targets, double duration, double delay) const {
+        TargetRamp ramp = SimTK::Value<TargetRamp>::downcast(matter_.getDiscreteVariable(s, rampIndex_)).get();
+        if (!ramp.active) ramp.base = getTargets(s);
+        ramp.active = true;
+        ramp.forgetBefore(s.getTime());
+        double start = s.getTime() + delay;
+        if (!ramp.segments.empty()) start = std::max(start, ramp.segments.back().findEnd());
+        ramp.segments.push_back(RampSegment{ramp.findValue(start), targets, start, duration});
+        SimTK::Value<TargetRamp>::updDowncast(matter_.updDiscreteVariable(s, rampIndex_)).upd() = std::move(ramp);
     }
     double findAngle(const State& s, std::size_t k) const { return matter_.getMobilizedBody(jointBodies_[k]).getOneQ(s, 0); }
 
     void calcForce(const State& s, SimTK::Vector_<SimTK::SpatialVec>&, SimTK::Vector_<SimTK::Vec3>&,
                    Vector& mobilityForces) const override {
-        const Vector& target = getTargets(s);
+        const Vector target = getTargets(s);
         const Vector holding = calcGravityHoldingForces(s);
         for (std::size_t k = 0; k < jointBodies_.size(); ++k) {
             const SimTK::MobilizedBody& mobod = matter_.getMobilizedBody(jointBodies_[k]);
@@ -80,7 +137,7 @@ private:
     std::vector<MobilizedBodyIndex> jointBodies_;
     std::vector<PdGains> gains_;
     std::vector<MobilizedBodyIndex> weighedBodies_;
-    mutable SimTK::DiscreteVariableIndex targetsIndex_;
+    mutable SimTK::DiscreteVariableIndex targetsIndex_, rampIndex_;
 };
 
 JointPdController::JointPdController(system::MultibodyModel& model, const std::vector<ControlledJoint>& joints,
@@ -102,7 +159,17 @@ void JointPdController::setTargets(SimTK::State& state, const SimTK::Vector& tar
     impl_->setTargets(state, targets);
 }
 
-const SimTK::Vector& JointPdController::getTargets(const SimTK::State& state) const { return impl_->getTargets(state); }
+void JointPdController::rampTargets(SimTK::State& state, const SimTK::Vector& targets, double duration, double delay) const {
+    const bool timesOk = duration > 0 && std::isfinite(duration) && delay >= 0 && std::isfinite(delay);
+    if (targets.size() != static_cast<int>(jointNames_.size()) || !timesOk) {
+        throw Error("JointPdController::rampTargets: got " + std::to_string(targets.size()) + " targets for " +
+                    std::to_string(jointNames_.size()) + " joints over " + std::to_string(duration) + " s after " +
+                    std::to_string(delay) + " s (needs a duration > 0 and a delay >= 0)");
+    }
+    impl_->rampTargets(state, targets, duration, delay);
+}
+
+SimTK::Vector JointPdController::getTargets(const SimTK::State& state) const { return impl_->getTargets(state); }
 
 SimTK::Vector JointPdController::findJointAngles(const SimTK::State& state) const {
     Vector q(static_cast<int>(jointNames_.size()));

@@ -104,7 +104,11 @@ bool CvodeIntegrator::handleDueScheduledEvents() {
                          SimTK::HandleEventsOptions(getConstraintTolerance()), results);
     lastEventTime_ = t;
     events_.scheduledEvents = std::max(events_.scheduledEvents, 0L) + 1;
-    if (applyHandlerResults(results)) restart();
+    if (applyHandlerResults(results)) {
+        restart();
+    } else {
+        solver_->carryDiscreteVariables(state_);
+    }
     return true;
 }
 

@@ -39,6 +39,9 @@ public:
     // (Re)starts CVODE at `s` (realized through Instance): tolerances, triggers and sizes are
     // read from it anew, and the method restarts at order 1.
     void start(const SimTK::State& s);
+    // Hands the callbacks `s`'s discrete variables without restarting CVODE: for a Report-stage
+    // change, which nothing CVODE has computed depends on (a ramp of the PD targets planned ahead).
+    void carryDiscreteVariables(const SimTK::State& s) { context_.work = s; }
     // Integrates to tStop, or to the first trigger zero crossing before it. Writes the time and
     // y reached into `s`; returns true when it stopped at a crossing.
     bool advance(double tStop, SimTK::State& s);

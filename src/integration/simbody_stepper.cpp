@@ -90,12 +90,33 @@ void SimbodyCpodesStepper::handleDueScheduledEvents() {
     if (due.event > t) return;
     lastEventTime_ = t;
     ++scheduledEvents_;
+    // Realized through Report, a change to a Report-stage variable shows in the results.
+    system_.realize(now, SimTK::Stage::Report);
     const SimTK::HandleEventsResults results = callHandlers(now, SimTK::Event::Cause::Scheduled, due.eventIds);
     const bool terminate = results.getExitStatus() == SimTK::HandleEventsResults::ShouldTerminate;
-    if (results.getLowestModifiedStage() == SimTK::Stage::Infinity && !terminate) return;
-    // Even a Report-stage change restarts when `now` is interpolated: the integrator is ahead of it.
+    if (results.getLowestModifiedStage() >= SimTK::Stage::Report && !terminate) {
+        // Nothing the integrator computed changed, but a Report-stage change (such as a ramp of
+        // the PD targets planned to start later) must reach the integrator's own state, which
+        // may be ahead of the interpolated `now`.
+        const bool changed = results.getLowestModifiedStage() == SimTK::Stage::Report;
+        if (changed && &now != &integrator_->getAdvancedState()) carryOverToAdvancedState(now);
+        return;
+    }
+    // A change below Stage::Report restarts from `now`, even when the integrator is ahead of it.
     if (&now != &integrator_->getAdvancedState()) integrator_->updAdvancedState() = now;
     restartIntegrator(std::min(results.getLowestModifiedStage(), SimTK::Stage(SimTK::Stage::Acceleration)), terminate);
+}
+
+// The advanced state becomes `handled` (its discrete variables) at the advanced time, position
+// and velocity: the integrator goes on from where it was. It realizes nothing: the integrator
+// realizes its advanced state before using it.
+void SimbodyCpodesStepper::carryOverToAdvancedState(const SimTK::State& handled) {
+    SimTK::State& advanced = integrator_->updAdvancedState();
+    const double t = advanced.getTime();
+    const SimTK::Vector y = advanced.getY();
+    advanced = handled;
+    advanced.updTime() = t;
+    advanced.updY() = y;
 }
 
 // TimeStepper's way for the events the integrator stopped at: handled on its advanced state.

@@ -124,3 +124,96 @@ TEST(FingertipIk, LastDistancesAreThoseOfTheSolution) {
     }
     EXPECT_GT(ik.getLastDistances()[1], 0.05);
 }
+
+namespace {
+
+struct IkAnswer {
+    std::vector<SimTK::Vec3> tips;
+    double error = 0;
+};
+
+IkAnswer solveAndPlace(const system::MultibodyModel& model, control::FingertipIk& ik, const std::vector<std::string>& joints,
+                       const SimTK::State& start, const std::vector<SimTK::Vec3>& goals) {
+    const SimTK::Vector q = ik.solve(start, goals);
+    SimTK::State solved = start;
+    for (std::size_t k = 0; k < joints.size(); ++k) {
+        const model::Joint& joint = *model.getDescription().findJoint(joints[k]);
+        EXPECT_GE(q[static_cast<int>(k)], joint.lower - 1e-12) << joints[k];
+        EXPECT_LE(q[static_cast<int>(k)], joint.upper + 1e-12) << joints[k];
+        model.setJointPosition(solved, joints[k], q[static_cast<int>(k)]);
+    }
+    model.getSystem().realize(solved, SimTK::Stage::Position);
+    IkAnswer answer{{}, ik.getLastError()};
+    for (const std::string& tip : kTips) answer.tips.push_back(model.findEndEffectorLocationInGround(solved, tip));
+    return answer;
+}
+
+// A random finger pose inside the middle of each joint's range, from an arm pose in front of the body.
+SimTK::State makeRandomPose(const system::MultibodyModel& model, SimTK::State s, const std::vector<std::string>& joints,
+                            std::mt19937& rng, double spread) {
+    model.setJointPosition(s, "elbow_flexion", 1.4);
+    model.setJointPosition(s, "shoulder_flexion", 0.6);
+    for (const std::string& j : joints) {
+        const model::Joint& joint = *model.getDescription().findJoint(j);
+        const double mid = 0.5 * (joint.lower + joint.upper), half = 0.5 * spread * (joint.upper - joint.lower);
+        model.setJointPosition(s, j, std::uniform_real_distribution<double>(mid - half, mid + half)(rng));
+    }
+    model.getSystem().realize(s, SimTK::Stage::Position);
+    return s;
+}
+
+}  // namespace
+
+// Second independent method as oracle: on random reachable goals (made by a random pose, solved
+// from another random pose) damped least squares puts every fingertip within 1 um of its goal,
+// inside each joint's range, and fits at least as well as Simbody's Assembler (which stops at its
+// accuracy 1e-6, up to about half a millimetre from the goal here).
+TEST(FingertipIk, AgreesWithTheAssemblerOnReachableGoals) {
+    const model::ModelDescription arm = model::buildBodyModel(model::BuildOptions{});
+    system::MultibodyModel model(arm);
+    const SimTK::State initial = model.realizeTopology();
+    const std::vector<std::string> joints = fingerJoints(arm);
+    control::FingertipIk fast(model, kTips, joints);
+    control::FingertipIk reference(model, kTips, joints, control::IkMethod::Assembler);
+    std::mt19937 rng(11);
+    for (int trial = 0; trial < 10; ++trial) {
+        const SimTK::State known = makeRandomPose(model, initial, joints, rng, 0.8);
+        const SimTK::State start = makeRandomPose(model, initial, joints, rng, 0.3);
+        std::vector<SimTK::Vec3> goals;
+        for (const std::string& tip : kTips) goals.push_back(model.findEndEffectorLocationInGround(known, tip));
+        const IkAnswer a = solveAndPlace(model, fast, joints, start, goals), b = solveAndPlace(model, reference, joints, start, goals);
+        for (std::size_t e = 0; e < kTips.size(); ++e) {
+            EXPECT_LT((a.tips[e] - goals[e]).norm(), 1e-6) << "trial " << trial << " " << kTips[e];
+            EXPECT_LT((b.tips[e] - goals[e]).norm(), 1e-3) << "trial " << trial << " " << kTips[e];
+        }
+        EXPECT_LE(a.error, b.error + 1e-9) << "trial " << trial;
+    }
+}
+
+// Unreachable goals (each pushed 3 cm beyond a reachable one, into the palm's side or out of
+// reach): both methods return a least-squares closest pose. Oracle: the Assembler's answer; the
+// fingertips agree within 0.1 mm and the residual within 1 um, or the fast one is the better fit.
+TEST(FingertipIk, FindsTheClosestPoseForUnreachableGoalsAsTheAssemblerDoes) {
+    const model::ModelDescription arm = model::buildBodyModel(model::BuildOptions{});
+    system::MultibodyModel model(arm);
+    const SimTK::State initial = model.realizeTopology();
+    const std::vector<std::string> joints = fingerJoints(arm);
+    control::FingertipIk fast(model, kTips, joints);
+    control::FingertipIk reference(model, kTips, joints, control::IkMethod::Assembler);
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    for (int trial = 0; trial < 10; ++trial) {
+        const SimTK::State known = makeRandomPose(model, initial, joints, rng, 0.8);
+        const SimTK::State start = makeRandomPose(model, initial, joints, rng, 0.3);
+        std::vector<SimTK::Vec3> goals;
+        for (const std::string& tip : kTips) {
+            const SimTK::UnitVec3 away(unit(rng), unit(rng), unit(rng));
+            goals.push_back(model.findEndEffectorLocationInGround(known, tip) + 0.03 * away);
+        }
+        const IkAnswer a = solveAndPlace(model, fast, joints, start, goals), b = solveAndPlace(model, reference, joints, start, goals);
+        EXPECT_GT(b.error, 1e-3) << "trial " << trial << ": the goals were meant to be out of reach";
+        if (a.error < b.error - 1e-6) continue;  // a better least-squares fit than the reference found
+        EXPECT_NEAR(a.error, b.error, 1e-6) << "trial " << trial;
+        for (std::size_t e = 0; e < kTips.size(); ++e) EXPECT_LT((a.tips[e] - b.tips[e]).norm(), 1e-4) << "trial " << trial << " " << kTips[e];
+    }
+}

@@ -62,6 +62,31 @@ TEST(JointPdController, SettlesOnTheTargetUnderGravity) {
     EXPECT_NEAR(model.getJointPosition(stepper.getState(), "pin"), 1.2, 1e-6);
 }
 
+// Oracle: the smoothstep in closed form. A ramp planned after a delay leaves the targets as they
+// were until it starts (what lets an integrator that is ahead go on), then follows
+// a + (b - a)(3 tau^2 - 2 tau^3); a second ramp starts where the first ends.
+TEST(JointPdController, RampsTargetsAlongASmoothstepAfterTheDelay) {
+    system::MultibodyModel model(pendulum());
+    control::JointPdController pd(model, {{"pin", {5.0, 1.0}}}, {"bob"});
+    SimTK::State s = model.realizeTopology();
+    pd.setTargets(s, SimTK::Vector(1, 0.2));
+    s.updTime() = 1.0;
+    pd.rampTargets(s, SimTK::Vector(1, 0.6), 0.01, 0.01);  // from 0.2 over [1.01, 1.02]
+    pd.rampTargets(s, SimTK::Vector(1, 1.0), 0.01, 0.005);  // queued: over [1.02, 1.03]
+    const auto targetAt = [&](double t) {
+        s.updTime() = t;
+        return pd.getTargets(s)[0];
+    };
+    EXPECT_DOUBLE_EQ(targetAt(1.0), 0.2);
+    EXPECT_DOUBLE_EQ(targetAt(1.01), 0.2);
+    const double tau = 0.3;
+    EXPECT_NEAR(targetAt(1.01 + tau * 0.01), 0.2 + 0.4 * (3 * tau * tau - 2 * tau * tau * tau), 1e-12);
+    EXPECT_NEAR(targetAt(1.02), 0.6, 1e-12);
+    EXPECT_NEAR(targetAt(1.025), 0.8, 1e-12);  // the smoothstep's midpoint
+    EXPECT_NEAR(targetAt(2.0), 1.0, 1e-12);
+    EXPECT_THROW(pd.rampTargets(s, SimTK::Vector(1, 1.0), 0.0, 0.01), Error);
+}
+
 TEST(JointPdController, UnknownJointIsNamed) {
     system::MultibodyModel model(pendulum());
     EXPECT_THROW(control::JointPdController(model, {{"elbow", {1, 1}}}, {}), InputError);

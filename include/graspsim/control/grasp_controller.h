@@ -5,7 +5,9 @@
 ///
 /// Every `ikInterval` seconds (a Simbody periodic event) the goals, fixed in a goal frame F, are
 /// carried to ground with that frame's current pose, IK solves for the finger joints, and the PD
-/// targets are updated; the arm joints keep their grasp-pose targets. Goals sit inside the
+/// targets move to the new solution along a smoothstep over the next interval (a first-order hold
+/// that keeps the torques continuous, so the integrator goes on without restarting); the arm
+/// joints keep their grasp-pose targets. Goals sit inside the
 /// object's surface, so the fingers press and contact force builds up.
 ///
 /// Which frame: the goals are points on the object as it sits when the grasp is formed, held

@@ -17,7 +17,10 @@ namespace graspsim::integration {
 /// SimTK::CPodesIntegrator(BDF, Newton) stepped by SimTK::TimeStepper's loop, with two changes.
 /// First, a scheduled event is handled on the integrator's state interpolated at the event time
 /// (the values TimeStepper's handlers see, where the integrator backs its state up to the event
-/// time), and the integrator is restarted from that state only when a handler changed it.
+/// time), and the integrator is restarted from that state only when a handler changed it below
+/// Stage::Report. A Report-stage change (a discrete variable that nothing computed up to the
+/// integrator's advanced time depends on, such as control::JointPdController::rampTargets) is
+/// carried over to the advanced state and the integrator goes on without a restart.
 /// Second, the integrator returns after every internal step (setReturnEveryInternalStep), so
 /// that CPodes checks the System's event triggers (witness functions) at the ends of its steps
 /// only: asked to stop at a report inside a step, it evaluates every trigger there too, and each
@@ -67,6 +70,7 @@ private:
     SimTK::HandleEventsResults callHandlers(SimTK::State& state, SimTK::Event::Cause cause,
                                             const SimTK::Array_<SimTK::EventId>& ids) const;
     void restartIntegrator(SimTK::Stage lowestModified, bool terminate);
+    void carryOverToAdvancedState(const SimTK::State& handled);
 
     const SimTK::System& system_;
     double accuracy_;
