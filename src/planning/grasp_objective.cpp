@@ -4,6 +4,7 @@
 #include "graspsim/contact/surface_point.h"
 #include "graspsim/grasp/grasp_quality.h"
 #include "graspsim/model/body_model.h"
+#include "graspsim/model/hand_model.h"
 
 #include <algorithm>
 #include <cmath>
@@ -21,6 +22,7 @@ constexpr double kPenetrationWeight = 10;
 constexpr double kStartWeight = 1.0;
 constexpr double kOppositionWeight = 20;
 constexpr double kCouplingWeight = 5;
+constexpr double kCentreWeight = 0.005;
 // Segments are kept this far off the object (m), so a planned pose touches it only with the pads.
 constexpr double kClearance = 0.001;
 // Friction coefficient of the closure check: the default skin-plastic dynamic friction.
@@ -90,12 +92,12 @@ double calcObjectWidth(const contact::ContactShape& shape) {
 }
 
 GraspObjective::GraspObjective(const GraspRequest& request, const GraspTemplate& graspTemplate)
-    : m_request(request), m_arm(model::buildBodyModel(request.bodyOptions)) {
+    : m_request(request), m_template(graspTemplate), m_arm(model::buildBodyModel(request.bodyOptions)) {
     for (const std::string& effector : graspTemplate.goalEffectors) m_pads.push_back(findPad(m_arm, effector));
     for (const SegmentShape& s : m_arm.getSegmentShapes()) m_inflated.push_back(inflate(s.shape, kClearance));
     setUpVariables(graspTemplate);
-    placeObjectAtStart();
     m_objectWidth = calcObjectWidth(request.shape);
+    placeObjectAtStart();
     calcHandSpan(request.type);
 }
 
@@ -130,6 +132,20 @@ void GraspObjective::setUpVariables(const GraspTemplate& graspTemplate) {
     }
 }
 
+SimTK::Vec3 GraspObjective::findThesisBallCentre() const {
+    const model::BuildOptions thesisOptions = scenario::Scenario::makeDefaultBodyOptions();
+    const ArmKinematics thesisArm(model::buildBodyModel(thesisOptions));
+    std::vector<double> q(thesisArm.getModel().joints.size(), 0.0);
+    for (const auto& [name, angle] : m_template.startPose) q[thesisArm.findJointIndex(name)] = angle;
+    std::vector<SimTK::Transform> X_GB;
+    thesisArm.calcBodyPoses(q, X_GB);
+    const SimTK::Transform& X_GH0 = X_GB[thesisArm.findBodyIndex("palm")];
+    const SimTK::Vec3 p_GO(m_template.ballPosition[0], m_template.ballPosition[1], m_template.ballPosition[2]);
+    const double scale = model::calcHandLength(m_request.bodyOptions.subject) / model::calcHandLength(thesisOptions.subject);
+    const SimTK::Vec3 p_HO = scale * (~X_GH0 * p_GO) + SimTK::Vec3(m_objectWidth / 2 - m_template.ballRadius, 0, 0);
+    return m_X_GB[m_arm.findBodyIndex("palm")] * p_HO;  // x_H is palmar
+}
+
 void GraspObjective::placeObjectAtStart() {
     m_arm.calcBodyPoses(m_baseAngles, m_X_GB);
     std::vector<SimTK::Vec3> p;
@@ -138,7 +154,7 @@ void GraspObjective::placeObjectAtStart() {
         p.push_back(m_X_GB[pad.body] * pad.p_BE);
         n.push_back(m_X_GB[pad.body].R() * pad.n_B);
     }
-    const SimTK::Vec3 p_GC = findNormalsMeet(p, n);
+    const SimTK::Vec3 p_GC = m_template.startUnderPalm ? findThesisBallCentre() : findNormalsMeet(p, n);
     SimTK::Rotation R_GS;  // identity: a sphere's orientation does not matter
     const contact::ContactShape& shape = m_request.shape;
     const SimTK::Rotation& R_GH = m_X_GB[m_arm.findBodyIndex("palm")].R();
@@ -202,9 +218,10 @@ double GraspObjective::calcOppositionCost(const SimTK::Vec3& p_thumb, const SimT
     const SimTK::Vec3 squeeze = p_fingers - p_thumb;
     const double length = squeeze.norm();
     const double offAxis = length > 0 ? (cross(squeeze / length, n_thumb)).normSqr() : 0;
-    // A power grasp wraps the object: Q from five contacts, not opposition, holds it.
-    if (m_pads.size() > 3) return 0;
-    return kOppositionWeight * ((n_thumb + n_fingers).normSqr() + offAxis);
+    // The squeeze should pass near the centre of mass, so gravity twists the grasp little.
+    const SimTK::Vec3 p_SO = ~m_request.X_OS * SimTK::Vec3(0);
+    const double offCentre = ((p_thumb + p_fingers) / 2 - p_SO).norm() / kMillimetre;
+    return kOppositionWeight * ((n_thumb + n_fingers).normSqr() + offAxis) + kCentreWeight * offCentre * offCentre;
 }
 
 // Distal and proximal interphalangeal joints of a finger move together, DIP about 2/3 of PIP

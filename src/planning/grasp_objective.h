@@ -55,7 +55,10 @@ private:
     double calcCouplingCost(const double* x) const;
     std::vector<SimTK::Transform> calcBodyPoses(const std::map<std::string, double>& angles) const;
 
+    SimTK::Vec3 findThesisBallCentre() const;
+
     GraspRequest m_request;
+    GraspTemplate m_template;
     ArmKinematics m_arm;
     std::vector<Pad> m_pads;
     std::vector<contact::ContactShape> m_inflated;  // segment shapes grown by the clearance

@@ -8,8 +8,6 @@
 #include <nlopt.hpp>
 
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <sstream>
 
 namespace graspsim::planning {
@@ -110,12 +108,11 @@ GraspPlan planGrasp(const GraspRequest& request, const PlanTolerances& tolerance
     plan.diagnostics.evaluations = evaluations;
     plan.diagnostics.cost = objective.evaluate(x.data());
     const std::string failed = findFailedCheck(plan.diagnostics, request.type, tolerances);
-    if (std::getenv("GRASPSIM_PLAN_DEBUG")) {
-        for (const auto& g : plan.diagnostics.goals) std::fprintf(stderr, "%s %.2f mm %.1f deg\n", g.effector.c_str(), g.gap * 1e3, g.misalignment * 57.3);
-        for (const auto& [j, a] : plan.jointAngles) if (a != 0) std::fprintf(stderr, "%s=%.1f ", j.c_str(), a * 57.3);
-        std::fprintf(stderr, "\nQ %g pen %g %s evals %d cost %g\n", plan.diagnostics.quality, plan.diagnostics.maxPenetration, plan.diagnostics.deepestSegment.c_str(), evaluations, plan.diagnostics.cost);
+    if (!failed.empty()) {
+        throw NoGraspError("no " + toString(request.type) + " grasp found: " + failed + " (object width " +
+                           formatMm(objective.getObjectWidth()) + ", the hand's " + objective.getSpanName() + " span " +
+                           formatMm(objective.getHandSpan()) + ")");
     }
-    if (!failed.empty()) throw NoGraspError("no " + toString(request.type) + " grasp found: " + failed);
     return plan;
 }
 

@@ -49,6 +49,7 @@ GraspTemplate findGraspTemplate(GraspType type) {
             t.startPose = toRadians(kBallClutch);
             t.goalEffectors = {"thumb_tip", "index_tip", "middle_tip", "ring_tip", "little_tip"};
             t.kp = 10;  // as ball-clutch.yaml: five fingers hold a 9.5 N pull
+            t.startUnderPalm = true;
             break;
         case GraspType::Pinch:
         case GraspType::Lateral:

@@ -91,7 +91,7 @@ struct GraspPlan {
 struct PlanTolerances {
     double minGap = 0.0;          ///< pads must not be inside the object
     double maxGap = 0.005;        ///< "within a few mm of the surface"
-    double maxMisalignment = 0.785; ///< pad facing the surface: within 45 deg (the thesis's hand-found ball clutch has 62)
+    double maxMisalignment = 1.134; ///< pad facing the surface: within 65 deg (the thesis's hand-found ball clutch, which holds, has 62)
     double maxPenetration = 0.001;///< no segment deeper than 1 mm in the object
 };
 

@@ -17,6 +17,13 @@ struct GraspTemplate {
     std::map<std::string, double> startPose;   ///< arm posture (kept) and finger start (optimized)
     std::vector<std::string> goalEffectors;    ///< end-effectors on the object, thumb first
     double kp = 5;                             ///< finger PD gain for the scenario (N m/rad)
+    /// Power grasps: the object starts where the thesis's ball sits under the palm of the
+    /// start pose (ball-clutch.yaml: centre p_GO at this point in G for the male reference
+    /// subject, radius ballRadius), scaled with the hand length and moved palmar by the
+    /// difference in radius. Otherwise the object starts where the goal pads' normals meet.
+    bool startUnderPalm = false;
+    double ballPosition[3] = {0.455, -0.169, -0.025};  ///< m, in G
+    double ballRadius = 0.045;                         ///< m
 };
 
 /// The template of `type`: power-sphere and power-cylinder start from the thesis's ball-clutch
