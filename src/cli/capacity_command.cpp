@@ -2,6 +2,7 @@
 
 #include "number_option.h"
 
+#include "graspsim/planning/planned_scenario.h"
 #include "graspsim/capacity/capacity_files.h"
 #include "graspsim/capacity/load_direction.h"
 #include "graspsim/error.h"
@@ -147,7 +148,7 @@ void CapacityCommand::checkOptions() const { makePlan(); }
 int CapacityCommand::run() const {
     const Options& o = *options_;
     const Plan plan = makePlan();
-    const scenario::Scenario scenario = scenario::loadScenario(o.scenario);
+    const scenario::Scenario scenario = planning::loadScenario(o.scenario);
     simulation::checkApproxAttach(scenario, plan.simulation);
     if (!o.out.empty()) prepareFolder(o.out);
     std::vector<capacity::GraspCapacity> measurements;

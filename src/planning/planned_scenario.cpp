@@ -1,5 +1,6 @@
 #include "graspsim/planning/planned_scenario.h"
 
+#include "graspsim/scenario/scenario_file.h"
 #include "graspsim/scenario/scenario_writer.h"
 
 #include <cstdio>
@@ -24,6 +25,25 @@ scenario::Scenario applyPlan(const scenario::Scenario& base, const GraspPlan& pl
 
 scenario::Scenario planScenario(const scenario::Scenario& base, GraspType type) {
     return applyPlan(base, planGrasp(makeGraspRequest(base, type)));
+}
+
+void completeScenario(scenario::Scenario& scenario) {
+    if (scenario.graspType.empty()) return;
+    const GraspType type = parseGraspType(scenario.graspType, scenario.source + ": field 'grasp.type'");
+    try {
+        const double kp = scenario.controller.kp;  // the file's (or the default) gain stays
+        scenario = planScenario(scenario, type);
+        scenario.controller.kp = kp;
+    } catch (const NoGraspError& e) {
+        throw NoGraspError(scenario.source + ": " + e.what());
+    }
+    scenario.graspType.clear();
+}
+
+scenario::Scenario loadScenario(const std::string& nameOrPath) {
+    scenario::Scenario scenario = scenario::loadScenario(nameOrPath);
+    completeScenario(scenario);
+    return scenario;
 }
 
 std::string formatPlannedScenario(const scenario::Scenario& planned, const GraspPlan& plan) {
