@@ -23,6 +23,7 @@ constexpr double kStartWeight = 1.0;
 constexpr double kOppositionWeight = 20;
 constexpr double kCouplingWeight = 5;
 constexpr double kCentreWeight = 0.005;
+constexpr double kGravityWeight = 50;
 // Segments are kept this far off the object (m), so a planned pose touches it only with the pads.
 constexpr double kClearance = 0.001;
 // Friction coefficient of the closure check: the default skin-plastic dynamic friction.
@@ -224,6 +225,16 @@ double GraspObjective::calcOppositionCost(const SimTK::Vec3& p_thumb, const SimT
     return kOppositionWeight * ((n_thumb + n_fingers).normSqr() + offAxis) + kCentreWeight * offCentre * offCentre;
 }
 
+// The pads together must not push the object along gravity (contacts above its equator, the
+// fingers on top of a ball): the mean inward normal's component along gravity is penalized.
+double GraspObjective::calcGravityCost(const SimTK::Transform& X_GS, const SimTK::Vec3& sumOutward_S) const {
+    const double g = m_request.gravity.norm();
+    if (g == 0) return 0;
+    const SimTK::Vec3 down_S = ~X_GS.R() * (m_request.gravity / g);
+    const double push = -dot(sumOutward_S, down_S) / double(m_pads.size());
+    return push > 0 ? kGravityWeight * push * push : 0;
+}
+
 // Distal and proximal interphalangeal joints of a finger move together, DIP about 2/3 of PIP
 // (tendon coupling), so the fingers curl as hands do.
 double GraspObjective::calcCouplingCost(const double* x) const {
@@ -252,6 +263,7 @@ double GraspObjective::evaluate(const double* x) {
         (i == 0 ? n_thumb : n_fingers) += share * SimTK::Vec3(surface.n_S);
     }
     cost += calcOppositionCost(p_thumb, n_thumb, p_fingers, n_fingers);
+    cost += calcGravityCost(X_GS, n_thumb + double(m_pads.size() - 1) * n_fingers);
     cost += calcCouplingCost(x);
     const auto& shapes = m_arm.getSegmentShapes();
     for (size_t i = 0; i < shapes.size(); ++i) {

@@ -53,6 +53,7 @@ private:
     double calcOppositionCost(const SimTK::Vec3& p_thumb, const SimTK::Vec3& n_thumb, const SimTK::Vec3& p_fingers,
                               const SimTK::Vec3& n_fingers) const;
     double calcCouplingCost(const double* x) const;
+    double calcGravityCost(const SimTK::Transform& X_GS, const SimTK::Vec3& sumOutward_S) const;
     std::vector<SimTK::Transform> calcBodyPoses(const std::map<std::string, double>& angles) const;
 
     SimTK::Vec3 findThesisBallCentre() const;

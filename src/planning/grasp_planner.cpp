@@ -84,6 +84,7 @@ GraspRequest makeGraspRequest(const scenario::Scenario& scenario, GraspType type
     request.shape = contact::ContactShape::fromGeometry(geometry);
     request.X_OS = contact::findGeometryPose(geometry);
     request.type = type;
+    request.gravity = SimTK::Vec3(scenario.world.gravity[0], scenario.world.gravity[1], scenario.world.gravity[2]);
     return request;
 }
 

@@ -64,6 +64,9 @@ GraspTemplate findGraspTemplate(GraspType type) {
             tripod["middle_mcp_abduction"] = -8;
             t.startPose = toRadians(tripod);
             t.goalEffectors = {"thumb_tip", "index_tip", "middle_tip"};
+            // At 5 (the pinch's gain) the index and middle pads stop short of their goals on a
+            // small ball (0.05 N at the index) and the thumb alone pushes it out when released.
+            t.kp = 10;
             break;
         }
     }

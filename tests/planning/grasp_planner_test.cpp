@@ -206,3 +206,13 @@ TEST(GraspPlanner, ThePlannedBallClutchIsNearTheThesisHandFoundOne) {
     const double centre = norm(subtract({plan.X_GO.p()[0], plan.X_GO.p()[1], plan.X_GO.p()[2]}, X_GO.p));
     std::cout << "ball centre " << centre * 1000 << " mm from the thesis's\n";
 }
+
+// Any contact shape plans: a capsule (a cylinder with round ends) in a medium wrap, its axis
+// across the fingers.
+TEST(GraspPlanner, ThePowerCylinderWrapsACapsule) {
+    const model::BuildOptions body = scenario::Scenario::makeDefaultBodyOptions();
+    const GraspPlan plan = planGrasp(makeRequest(contact::ContactShape::capsule(0.02, 0.1), GraspType::PowerCylinder, body));
+    EXPECT_GT(plan.diagnostics.quality, 0);
+    EXPECT_LE(plan.diagnostics.maxPenetration, 0.001);
+    for (const GoalCheck& g : plan.diagnostics.goals) std::cout << g.effector << " " << g.gap * 1000 << " mm, " << g.misalignment * 180 / SimTK::Pi << " deg\n";
+}
