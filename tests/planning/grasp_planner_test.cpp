@@ -216,3 +216,19 @@ TEST(GraspPlanner, ThePowerCylinderWrapsACapsule) {
     EXPECT_LE(plan.diagnostics.maxPenetration, 0.001);
     for (const GoalCheck& g : plan.diagnostics.goals) std::cout << g.effector << " " << g.gap * 1000 << " mm, " << g.misalignment * 180 / SimTK::Pi << " deg\n";
 }
+
+// The phone pinch, for docs/planning.md: distances of the planned goals from the thesis's
+// hand-found ones, in G; both pinch the phone across its thickness, thumb on the -z face.
+TEST(GraspPlanner, ThePlannedPhonePinchIsAcrossTheThicknessAsTheThesisOne) {
+    const scenario::Scenario thesis = scenario::findBuiltinScenario("phone-pinch");
+    const GraspPlan plan = planGrasp(makeGraspRequest(thesis, GraspType::Pinch));
+    const Transform X_GO = thesis.object.findPose();
+    for (const auto& [effector, goal] : plan.goals) {
+        const SimTK::Vec3 planned = plan.X_GO * goal;
+        const Vec3 handFound = X_GO.shiftFrameStationToBase(thesis.goals.at(effector));
+        std::cout << effector << ": planned goal " << norm(subtract({planned[0], planned[1], planned[2]}, handFound)) * 1000
+                  << " mm from the thesis's; on face z = " << goal[2] * 1000 << " mm (thesis "
+                  << thesis.goals.at(effector)[2] * 1000 << " mm)\n";
+        EXPECT_NEAR(goal[2], thesis.goals.at(effector)[2], 1e-4) << effector;  // the same face
+    }
+}
