@@ -108,7 +108,7 @@ GraspPlan planGrasp(const GraspRequest& request, const PlanTolerances& tolerance
     plan.diagnostics = calcPlanDiagnostics(request, plan);
     plan.diagnostics.evaluations = evaluations;
     plan.diagnostics.cost = objective.evaluate(x.data());
-    const std::string failed = findFailedCheck(plan.diagnostics, request.type, tolerances);
+    const std::string failed = findFailedCheck(plan.diagnostics, tolerances);
     if (!failed.empty()) {
         throw NoGraspError("no " + toString(request.type) + " grasp found: " + failed + " (object width " +
                            formatMm(objective.getObjectWidth()) + ", the hand's " + objective.getSpanName() + " span " +
@@ -117,7 +117,7 @@ GraspPlan planGrasp(const GraspRequest& request, const PlanTolerances& tolerance
     return plan;
 }
 
-std::string findFailedCheck(const PlanDiagnostics& d, GraspType type, const PlanTolerances& tolerances) {
+std::string findFailedCheck(const PlanDiagnostics& d, const PlanTolerances& tolerances) {
     for (const GoalCheck& goal : d.goals) {
         if (goal.gap < tolerances.minGap || goal.gap > tolerances.maxGap) {
             return "the " + goal.effector + " pad ends " + formatMm(goal.gap) + " from the surface (accepted: " +
@@ -135,14 +135,14 @@ std::string findFailedCheck(const PlanDiagnostics& d, GraspType type, const Plan
         return "segment '" + d.deepestSegment + "' is " + formatMm(d.maxPenetration) + " inside the object (accepted: " +
                formatMm(tolerances.maxPenetration) + ")";
     }
-    const bool closure = d.goals.size() == 2 ? d.antipodal : d.quality > 1e-6;
-    if (!closure) {
+    if (d.goals.size() == 2 && !d.antipodal) {
+        return "the goal contacts do not hold the object (not antipodal: the line between them leaves a friction cone)";
+    }
+    if (d.goals.size() > 2 && !(d.quality > 1e-6)) {
         std::ostringstream out;
-        out << "the goal contacts do not hold the object (" << (d.goals.size() == 2 ? "not antipodal" : "Q = ")
-            << (d.goals.size() == 2 ? "" : std::to_string(d.quality)) << ")";
+        out << "the goal contacts do not hold the object (grasp quality Q = " << d.quality << ", not > 0)";
         return out.str();
     }
-    (void)type;
     return "";
 }
 

@@ -111,6 +111,6 @@ GraspRequest makeGraspRequest(const scenario::Scenario& scenario, GraspType type
 PlanDiagnostics calcPlanDiagnostics(const GraspRequest& request, const GraspPlan& plan);
 
 /// The first failed check of `diagnostics`, as one line with its numbers, or "" if all pass.
-std::string findFailedCheck(const PlanDiagnostics& diagnostics, GraspType type, const PlanTolerances& tolerances);
+std::string findFailedCheck(const PlanDiagnostics& diagnostics, const PlanTolerances& tolerances);
 
 }  // namespace graspsim::planning
