@@ -54,19 +54,22 @@ Pad findPad(const ArmKinematics& arm, const std::string& effector) {
     throw InputError("end-effector '" + effector + "' is not on a capsule segment");
 }
 
+// Built element by element: GCC 12 misreads Simbody's diagonal fill (Mat33(1)) as out of bounds.
+SimTK::Mat33 makeDiagonal(double d) { return SimTK::Mat33(d, 0, 0, 0, d, 0, 0, 0, d); }
+
 // The point nearest (least squares) to every pad's normal line, pulled slightly toward the
 // pads' centroid so that antiparallel normals (a pinch) still give one point.
 SimTK::Vec3 findNormalsMeet(const std::vector<SimTK::Vec3>& p, const std::vector<SimTK::UnitVec3>& n) {
-    SimTK::Mat33 A(0);
+    SimTK::Mat33 A = makeDiagonal(0);
     SimTK::Vec3 b(0), centroid(0);
     for (size_t i = 0; i < p.size(); ++i) centroid += p[i] / double(p.size());
     for (size_t i = 0; i < p.size(); ++i) {
-        const SimTK::Mat33 P = SimTK::Mat33(1) - SimTK::Vec3(n[i]) * ~SimTK::Vec3(n[i]);
+        const SimTK::Mat33 P = makeDiagonal(1) - SimTK::Vec3(n[i]) * ~SimTK::Vec3(n[i]);
         A += P;
         b += P * p[i];
     }
     const double pull = 0.05;
-    A += SimTK::Mat33(pull);
+    A += makeDiagonal(pull);
     b += pull * centroid;
     return A.invert() * b;
 }
@@ -156,7 +159,7 @@ void GraspObjective::placeObjectAtStart() {
         n.push_back(m_X_GB[pad.body].R() * pad.n_B);
     }
     const SimTK::Vec3 p_GC = m_template.startUnderPalm ? findThesisBallCentre() : findNormalsMeet(p, n);
-    SimTK::Rotation R_GS;  // identity: a sphere's orientation does not matter
+    SimTK::Rotation R_GS(makeDiagonal(1), true);  // identity: a sphere's orientation does not matter
     const contact::ContactShape& shape = m_request.shape;
     const SimTK::Rotation& R_GH = m_X_GB[m_arm.findBodyIndex("palm")].R();
     if (shape.type == contact::ContactShape::Type::Capsule) {
@@ -171,11 +174,12 @@ void GraspObjective::placeObjectAtStart() {
         std::array<int, 3> axis{0, 1, 2};
         std::sort(axis.begin(), axis.end(), [&](int a, int b) { return shape.halfLengths[a] < shape.halfLengths[b]; });
         const SimTK::UnitVec3 longest(out - dot(out, squeeze) * squeeze);
-        SimTK::Mat33 R_SG;  // rows: S's axes in G
-        R_SG[axis[0]] = ~SimTK::Vec3(squeeze);
-        R_SG[axis[2]] = ~SimTK::Vec3(longest);
-        R_SG[axis[1]] = ~SimTK::Vec3(cross(longest, squeeze));
-        if (det(R_SG) < 0) R_SG[axis[1]] *= -1;
+        std::array<SimTK::Vec3, 3> axes_G;  // S's axes in G
+        axes_G[axis[0]] = SimTK::Vec3(squeeze);
+        axes_G[axis[2]] = SimTK::Vec3(longest);
+        axes_G[axis[1]] = cross(longest, squeeze);
+        if (dot(cross(axes_G[0], axes_G[1]), axes_G[2]) < 0) axes_G[axis[1]] *= -1;
+        const SimTK::Mat33 R_SG(~axes_G[0], ~axes_G[1], ~axes_G[2]);
         R_GS = SimTK::Rotation(~R_SG, true);
     }
     const SimTK::Transform X_GS(R_GS, p_GC);

@@ -31,8 +31,8 @@ void roundPlan(GraspPlan& plan) {
     for (auto& [joint, angle] : plan.jointAngles) angle = roundTo(angle / degree, 0.1) * degree;
     SimTK::Vec3 xyz = plan.X_GO.R().convertRotationToBodyFixedXYZ();
     for (int i = 0; i < 3; ++i) xyz[i] = roundTo(xyz[i] / degree, 0.1) * degree;
-    SimTK::Rotation R;
-    R.setRotationToBodyFixedXYZ(xyz);
+    const SimTK::Rotation R(SimTK::BodyRotationSequence, xyz[0], SimTK::XAxis, xyz[1], SimTK::YAxis, xyz[2],
+                            SimTK::ZAxis);
     SimTK::Vec3 p = plan.X_GO.p();
     for (int i = 0; i < 3; ++i) p[i] = roundTo(p[i], 1e-4);
     plan.X_GO = SimTK::Transform(R, p);
