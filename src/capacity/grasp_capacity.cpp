@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <iterator>
 
 namespace graspsim::capacity {
 
@@ -53,14 +55,14 @@ public:
                                  std::to_string(getState().getTime()) + " s; use --mode full or lower --q-threshold");
         }
         reference_ = findGoalPointsInPalm();
-        q_PO_reference_ = findObjectInPalm().R().convertRotationToQuaternion().asVec4();
+        q_HO_reference_ = findObjectInPalm().R().convertRotationToQuaternion().asVec4();
     }
 
     CapacitySample sampleNow() override {
         CapacitySample s;
         const std::vector<SimTK::Vec3> now = findGoalPointsInPalm();
-        const SimTK::Rotation R_PO0{SimTK::Quaternion(q_PO_reference_)};
-        const SimTK::Rotation R_change = ~R_PO0 * findObjectInPalm().R();
+        const SimTK::Rotation R_HO0{SimTK::Quaternion(q_HO_reference_)};
+        const SimTK::Rotation R_change = ~R_HO0 * findObjectInPalm().R();
         s.rotation = std::abs(R_change.convertRotationToAngleAxis()[0]);
         for (std::size_t k = 0; k < now.size(); ++k) s.slip = std::max(s.slip, (now[k] - reference_[k]).norm());
         if (const simulation::GraspSwitch* grasp = scene_.getGraspSwitch()) s.engaged = grasp->isEngaged(getState()) ? 1 : 0;
@@ -108,11 +110,11 @@ private:
         return ~scene_.getPalm().getBodyTransform(s) * scene_.getObject().getBodyTransform(s);
     }
 
-    // The goal points (object material points where the fingertips press), in the palm frame P.
+    // The goal points (object material points where the fingertips press), in the palm frame H.
     std::vector<SimTK::Vec3> findGoalPointsInPalm() const {
-        const SimTK::Transform X_PO = findObjectInPalm();
+        const SimTK::Transform X_HO = findObjectInPalm();
         std::vector<SimTK::Vec3> points;
-        for (const SimTK::Vec3& p_OG : scene_.getSurfaceGoals()) points.push_back(X_PO * p_OG);
+        for (const SimTK::Vec3& p_OT : scene_.getSurfaceGoals()) points.push_back(X_HO * p_OT);
         return points;
     }
 
@@ -120,7 +122,7 @@ private:
     std::unique_ptr<integration::Stepper> stepper_;
     std::unique_ptr<simulation::RigidStepper> rigid_;
     std::vector<SimTK::Vec3> reference_;
-    SimTK::Vec4 q_PO_reference_{1, 0, 0, 0};  // R_PO at the reference, as a quaternion
+    SimTK::Vec4 q_HO_reference_{1, 0, 0, 0};  // R_HO at the reference, as a quaternion
 };
 
 GraspCapacity makeHeader(const simulation::SimulationOptions& options, const GraspCapacityRequest& request,
@@ -155,6 +157,22 @@ double findDefaultRate(const scenario::Scenario& scenario, bool torque) {
         lever = std::max(lever, std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]));
     }
     return force * lever;
+}
+
+void checkLoadResistible(const scenario::Scenario& scenario, const GraspCapacityRequest& request) {
+    if (!request.torque || scenario.goals.size() != 2) return;
+    const auto first = scenario.goals.begin(), second = std::next(first);
+    const model::Transform X_GO = scenario.object.findPose();
+    const model::Vec3 a = X_GO.xformFrameVecToBase(first->second), b = X_GO.xformFrameVecToBase(second->second);
+    const SimTK::Vec3 line(b[0] - a[0], b[1] - a[1], b[2] - a[2]);
+    if (!(line.norm() > 0)) return;
+    const double angle = std::acos(std::min(1.0, std::abs(~SimTK::Vec3(request.direction) * line) / line.norm()));
+    if (angle > kPinchAxisTolerance) return;
+    char degrees[32];
+    std::snprintf(degrees, sizeof degrees, "%.3g", angle * 180 / SimTK::Pi);
+    throw InputError("--direction " + request.directionName + " --torque: the axis is " + degrees + " deg from the line through the goals " +
+                     first->first + " and " + second->first + "; two point contacts cannot resist a torque about it (no torsional "
+                     "friction), so there is no capacity to measure; choose an axis more than 5 deg away");
 }
 
 double findLoadStart(const scenario::Scenario& scenario) { return scenario.simulation.settleTime + kLoadStartDelay; }

@@ -32,6 +32,7 @@ struct CapacityCommand::Options {
     std::string releaseSlide;
     std::string qMinimum;
     std::string limitsFriction = "dynamic";
+    std::string limits = "thesis";
     std::string out;
 };
 
@@ -68,6 +69,8 @@ CapacityCommand::CapacityCommand(CLI::App& app) : options_(std::make_shared<Opti
     command_->add_option("--q-minimum", o.qMinimum, "approx: grasp quality Q_M (N) below which to release (default: 0.5 x Q_Th)");
     command_->add_option("--limits-friction", o.limitsFriction,
                          "approx: the friction coefficient of the constraint's limits, dynamic (default) or static");
+    command_->add_option("--limits", o.limits,
+                         "approx: the constraint's friction limits, thesis (default: one box) or contact (per axis)");
     command_->add_option("--out", o.out, "output folder; receives capacity.json and capacity.csv (default: none written)");
 }
 
@@ -126,6 +129,7 @@ CapacityCommand::Plan CapacityCommand::makePlan() const {
         throw InputError("--limits-friction: value '" + o.limitsFriction + "' is not accepted; use dynamic or static");
     }
     plan.simulation.approx.staticFrictionLimits = o.limitsFriction == "static";
+    plan.simulation.approx.limitModel = grasp::parseFrictionLimitModel(o.limits, "--limits");
     if (o.method != "ramp" && o.method != "bisection") {
         throw InputError("--method: value '" + o.method + "' is not accepted; use ramp or bisection");
     }
@@ -150,6 +154,7 @@ int CapacityCommand::run() const {
     const Plan plan = makePlan();
     const scenario::Scenario scenario = planning::loadScenario(o.scenario);
     simulation::checkApproxAttach(scenario, plan.simulation);
+    for (const capacity::GraspCapacityRequest& r : plan.requests) capacity::checkLoadResistible(scenario, r);
     if (!o.out.empty()) prepareFolder(o.out);
     std::vector<capacity::GraspCapacity> measurements;
     for (capacity::GraspCapacityRequest r : plan.requests) {

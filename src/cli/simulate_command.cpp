@@ -30,6 +30,7 @@ struct SimulateCommand::Options {
     std::string integrator = "simbody";
     std::string accuracy;
     std::string qThreshold, qMinimum;
+    std::string limits = "thesis";
     std::string out = "out";
     bool view = false;
     bool quiet = false;
@@ -53,6 +54,9 @@ SimulateCommand::SimulateCommand(CLI::App& app) : options_(std::make_shared<Opti
     command_->add_option("--accuracy", o.accuracy, "integrator relative accuracy in (0, 1) (default: the scenario's)");
     command_->add_option("--q-threshold", o.qThreshold, "approx: grasp quality Q_Th (N) to engage (default: 0.8 x the settled grasp's)");
     command_->add_option("--q-minimum", o.qMinimum, "approx: grasp quality Q_M (N) below which to release (default: 0.5 x Q_Th)");
+    command_->add_option("--limits", o.limits,
+                         "approx: the constraint's friction limits, thesis (default: one box, eq. 4.1-4.3) or contact "
+                         "(per axis, from each contact's normal and position)");
     command_->add_option("--out", o.out,
                          "output folder (default out); receives trajectory.csv, contacts.csv, summary.json, scenario.yaml, "
                          "model.urdf, provenance.json (and events.csv, constraint.csv in approx mode), and for OpenSim "
@@ -133,6 +137,7 @@ simulation::SimulationOptions SimulateCommand::parseOptions() const {
     options.approx.attach = simulation::parseApproxAttach(o.attach, "--attach");
     options.approx.qThreshold = parseQuality(o.qThreshold, "--q-threshold");
     options.approx.qMinimum = parseQuality(o.qMinimum, "--q-minimum");
+    options.approx.limitModel = grasp::parseFrictionLimitModel(o.limits, "--limits");
     if (options.approx.qThreshold > 0 && options.approx.qMinimum >= options.approx.qThreshold) {
         throw InputError("--q-minimum: value " + o.qMinimum + " is not accepted; Q_M must be below --q-threshold " + o.qThreshold);
     }
@@ -170,6 +175,7 @@ results::RunProvenance makeRunProvenance(const std::vector<std::string>& command
         run.run["attach"] = simulation::toString(options.approx.attach);
         run.run["q_threshold_n"] = formatOverride(options.approx.qThreshold);
         run.run["q_minimum_n"] = formatOverride(options.approx.qMinimum);
+        run.run["limits"] = grasp::toString(options.approx.limitModel);
     }
     return run;
 }

@@ -94,16 +94,16 @@ std::function<void(const study::RunProgress&)> makeProgressBar() {
     };
 }
 
-// The study file, its base scenario and every value checked; nothing written.
+// The study file, its base scenarios and every value checked; nothing written.
 struct LoadedStudy {
     study::StudySpec spec;
-    scenario::ScenarioText base;
+    std::vector<scenario::ScenarioText> bases;
 };
 
 LoadedStudy loadStudy(const std::string& path) {
     LoadedStudy loaded{study::loadStudyFile(path), {}};
-    loaded.base = scenario::readScenarioText(loaded.spec.base);
-    study::checkStudyValues(loaded.spec, loaded.base);
+    loaded.bases = study::readBaseScenarios(loaded.spec);
+    study::checkStudyValues(loaded.spec, loaded.bases);
     return loaded;
 }
 
@@ -152,10 +152,10 @@ int StudyCommand::runCases() const {
     if (!o.shard.empty()) settings.shard = study::parseShard(o.shard);
     settings.retryFailed = o.retryFailed;
     const LoadedStudy loaded = loadStudy(o.study);
-    study::prepareStudyFolder(o.out, loaded.spec, loaded.base.text);
+    study::prepareStudyFolder(o.out, loaded.spec, study::joinBaseTexts(loaded.bases));
     settings.executable = findExecutable();
     settings.progress = makeProgressBar();
-    const study::RunReport report = study::runStudyCases(loaded.spec, loaded.base, settings);
+    const study::RunReport report = study::runStudyCases(loaded.spec, loaded.bases, settings);
     if (settings.shard.count > 1) {
         std::cout << "shard " << o.shard << ": " << report.total << " cases (" << report.skipped << " already finished, "
                   << report.ran << " run now), " << report.failed << " failed or incomplete; merge the shards with "
@@ -170,7 +170,7 @@ int StudyCommand::submit() const {
     const LoadedStudy loaded = loadStudy(o.study);
     const int cases = static_cast<int>(study::expandCases(loaded.spec).size());
     const int arraySize = o.arraySize.empty() ? std::min(cases, 100) : std::min(cases, parseCount(o.arraySize, "--array-size"));
-    study::prepareStudyFolder(o.out, loaded.spec, loaded.base.text);
+    study::prepareStudyFolder(o.out, loaded.spec, study::joinBaseTexts(loaded.bases));
     study::SlurmJob job;
     job.name = loaded.spec.name;
     job.executable = findExecutable();

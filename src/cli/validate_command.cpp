@@ -17,6 +17,7 @@ namespace graspsim::cli {
 
 struct ValidateCommand::Options {
     bool quick = false;
+    bool capacity = true;
     bool plots = true;
     std::vector<std::string> experiments, modes;
     std::string longHold;
@@ -34,6 +35,9 @@ ValidateCommand::ValidateCommand(CLI::App& app) : options_(std::make_shared<Opti
     command_->add_option("--mode", o.modes, "full or an approximation variant, e.g. approx-bushing-merged (repeatable; default all)");
     command_->add_option("--long-hold", o.longHold, "simulated seconds of the long approximation hold (default 600; 0 skips it)");
     command_->add_flag("!--no-plots", o.plots, "skip the plots (no Python needed)");
+    command_->add_flag("!--no-capacity", o.capacity,
+                       "skip the holding-capacity comparison (full contact against each approximation variant, nine loads "
+                       "per experiment; --quick: the -y force only)");
     command_->add_option("--out", o.out, "output folder (default out/validation)");
     command_->add_flag("-q,--quiet", o.quiet, "no progress display (it appears only on a terminal anyway)");
 }
@@ -103,9 +107,18 @@ int ValidateCommand::run() const {
     prepareFolder(o.out);
     ProgressMeter meter("validating", o.quiet);
     SuiteProgress progress(meter, runs);
-    const validation::ValidationResults results =
+    validation::ValidationResults results =
         validation::runValidation(runs, o.out, progress.makeRunStart(), progress.makeWithinRun());
     progress.finish();
+    if (o.capacity) {
+        ProgressMeter capacityMeter("capacity", o.quiet);
+        results.capacity = validation::runCapacityComparison(
+            {o.experiments.empty() && o.quick ? std::vector<std::string>{"ball-clutch"} : o.experiments, o.modes, o.quick},
+            [&](std::size_t index, std::size_t count, const std::string& label) {
+                capacityMeter.update(static_cast<double>(index), static_cast<double>(count), label);
+            });
+        capacityMeter.finish();
+    }
     meter.finish();
     // The tables first, so that a plotting failure still leaves the numbers.
     validation::writeValidationReport(o.out, results, {});
@@ -119,7 +132,8 @@ int ValidateCommand::run() const {
                   << c.bound << ")\n";
     }
     std::cout << "validation: " << results.runs.size() << " runs, " << results.checks.size() << " checks, " << failed
-              << " failed, " << plots.size() << " plots; report in " << o.out << "/report.md\n";
+              << " failed, " << results.capacity.size() << " capacity ramps, " << plots.size() << " plots; report in " << o.out
+              << "/report.md\n";
     return failed == 0 ? 0 : 4;
 }
 

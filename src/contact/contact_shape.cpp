@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 #include "graspsim/error.h"
 
@@ -55,6 +56,31 @@ ContactShape ContactShape::halfSpace() {
     return shape;
 }
 
+ContactShape ContactShape::cylinder(double radius, double length, double cornerRadius) {
+    ContactShape shape;
+    shape.type = Type::Cylinder;
+    shape.radius = radius;
+    shape.length = length;
+    shape.cornerRadius = cornerRadius;
+    return shape;
+}
+
+ContactShape ContactShape::ellipsoid(const SimTK::Vec3& semiAxes) {
+    ContactShape shape;
+    shape.type = Type::Ellipsoid;
+    shape.semiAxes = semiAxes;
+    return shape;
+}
+
+ContactShape ContactShape::convexMesh(std::shared_ptr<const ConvexPolytope> polytope,
+                                      double cornerRadius) {
+    ContactShape shape;
+    shape.type = Type::ConvexMesh;
+    shape.polytope = std::move(polytope);
+    shape.cornerRadius = cornerRadius;
+    return shape;
+}
+
 ContactShape ContactShape::fromGeometry(const model::Geometry& geometry) {
     const std::string what = "geometry '" + geometry.name + "'";
     ContactShape shape;
@@ -71,10 +97,21 @@ ContactShape ContactShape::fromGeometry(const model::Geometry& geometry) {
             break;
         }
         case model::Geometry::Type::Cylinder:
+            shape = cylinder(geometry.radius, geometry.length);
+            break;
+        case model::Geometry::Type::Ellipsoid: {
+            const model::Vec3& e = geometry.semiAxes;
+            shape = ellipsoid(SimTK::Vec3(e[0], e[1], e[2]));
+            break;
+        }
         case model::Geometry::Type::Mesh:
-        case model::Geometry::Type::Ellipsoid:
-            throw InputError(what + ": type " + model::toString(geometry.type) +
-                             " has no contact support; use sphere, capsule or box");
+            if (!geometry.mesh) {
+                throw InputError(what + ": mesh '" + geometry.meshFile +
+                                 "' has no loaded triangles; contact needs the mesh read from "
+                                 "its file");
+            }
+            shape = convexMesh(ConvexPolytope::build(*geometry.mesh, what));
+            break;
     }
     shape.validate(what);
     return shape;
@@ -99,6 +136,20 @@ void ContactShape::validate(const std::string& what) const {
             break;
         case Type::HalfSpace:
             break;
+        case Type::Cylinder:
+            checkPositive(what, "radius", radius);
+            checkPositive(what, "length", length);
+            checkPositive(what, "cornerRadius", cornerRadius);
+            break;
+        case Type::Ellipsoid:
+            checkPositive(what, "semiAxes[0]", semiAxes[0]);
+            checkPositive(what, "semiAxes[1]", semiAxes[1]);
+            checkPositive(what, "semiAxes[2]", semiAxes[2]);
+            break;
+        case Type::ConvexMesh:
+            if (!polytope) throw InputError(what + ": convex mesh has no polytope");
+            checkPositive(what, "cornerRadius", cornerRadius);
+            break;
     }
 }
 
@@ -112,6 +163,12 @@ double ContactShape::calcBoundingRadius() const {
             return halfLengths.norm();
         case Type::HalfSpace:
             return SimTK::Infinity;
+        case Type::Cylinder:
+            return std::hypot(radius, 0.5 * length);
+        case Type::Ellipsoid:
+            return std::max({semiAxes[0], semiAxes[1], semiAxes[2]});
+        case Type::ConvexMesh:
+            return polytope ? polytope->getBoundingRadius() : SimTK::Infinity;
     }
     return SimTK::Infinity;
 }

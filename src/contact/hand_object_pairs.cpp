@@ -4,7 +4,7 @@
 
 namespace graspsim::contact {
 
-bool isHandSegmentBody(const model::Body& body) { return body.segment == "hand"; }
+bool isHandSegmentBody(const model::Body& body) { return body.role != model::BodyRole::Other; }
 
 std::vector<ContactPair> makeHandObjectPairs(const system::MultibodyModel& hand,
                                              const BodyFilter& isHandBody,

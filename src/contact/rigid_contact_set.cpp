@@ -6,8 +6,9 @@ namespace graspsim::contact {
 
 namespace {
 
+// Not a sphere or capsule: a box, half-space, cylinder, ellipsoid or convex mesh.
 bool isSolid(const ContactShape& s) {
-    return s.type == ContactShape::Type::Box || s.type == ContactShape::Type::HalfSpace;
+    return s.type != ContactShape::Type::Sphere && s.type != ContactShape::Type::Capsule;
 }
 
 // The 8 rounded corners of `box`'s surface as spheres inside the corners (see the header).
@@ -45,7 +46,8 @@ std::vector<ContactPair> makeRigidContactPairs(const ContactPair& pair) {
     if (pair.b.shape.type == ContactShape::Type::Box) {
         for (const ContactSurface& c : makeCornerSpheres(pair.b)) add(pair.a, c);
     }
-    // Two half-spaces remain unsupported: RigidContact rejects the pair with its reason.
+    // Pairs of two solids without a box (two half-spaces, an object solid on a half-space)
+    // remain unsupported: RigidContact rejects the pair with its reason.
     if (pairs.empty() && isSolid(pair.a.shape) && isSolid(pair.b.shape)) return {pair};
     return pairs;
 }

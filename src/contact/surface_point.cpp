@@ -1,6 +1,7 @@
 #include "graspsim/contact/surface_point.h"
 
 #include "box_signed_distance.h"
+#include "object_solid_surface.h"
 
 #include <algorithm>
 
@@ -39,6 +40,21 @@ SurfacePoint findBoxSurfacePoint(const SimTK::Vec3& h, const SimTK::Vec3& p_SQ) 
     return result;
 }
 
+// Cylinder, ellipsoid, convex mesh. Where a point inside is equally deep below two faces the
+// contact normal is their normalized sum; here the normal is that of the face P lies on, so
+// that Q - P is along it.
+SurfacePoint findObjectSurfacePoint(const ContactShape& shape, const SimTK::Vec3& p_SQ) {
+    const ObjectSurface object = findObjectSurface(shape, p_SQ);
+    SurfacePoint result;
+    result.distance = object.distance;
+    result.p_SP = object.p_SP;
+    const SimTK::Vec3 r_PQ = p_SQ - object.p_SP;
+    result.n_S = object.distance != 0 && r_PQ.norm() > 0
+                     ? SimTK::UnitVec3(r_PQ / object.distance)
+                     : object.n_S;
+    return result;
+}
+
 }  // namespace
 
 SurfacePoint findSurfacePoint(const ContactShape& shape, const SimTK::Vec3& p_SQ) {
@@ -58,6 +74,10 @@ SurfacePoint findSurfacePoint(const ContactShape& shape, const SimTK::Vec3& p_SQ
             result.n_S = SimTK::UnitVec3(0, 0, 1);
             return result;
         }
+        case ContactShape::Type::Cylinder:
+        case ContactShape::Type::Ellipsoid:
+        case ContactShape::Type::ConvexMesh:
+            return findObjectSurfacePoint(shape, p_SQ);
     }
     return {};
 }

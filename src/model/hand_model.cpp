@@ -46,6 +46,7 @@ struct Builder {
         Body body;
         body.name = named(name);
         body.segment = "hand";
+        body.role = BodyRole::Digit;
         Geometry capsule;
         capsule.type = Geometry::Type::Capsule;
         capsule.name = body.name + "_capsule";
@@ -88,6 +89,7 @@ void Builder::addPalm(const std::string& parent, const Transform& X_PW) {
     Body palm;
     palm.name = named("palm");
     palm.segment = "hand";
+    palm.role = BodyRole::Palm;
     palm.geometry.push_back(makeBox(palm.name + "_proximal_box", {-T / 2, -littleDepth, -B / 2}, {T / 2, 0, B / 2}));
     palm.geometry.push_back(makeBox(palm.name + "_distal_box", {-T / 2, -ringDepth, zUlnar}, {T / 2, -littleDepth, B / 2}));
     handBodies.push_back(palm.name);

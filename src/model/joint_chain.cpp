@@ -17,6 +17,7 @@ void addRevoluteChain(ModelDescription& model, const std::string& parent, const 
             Body virtualBody;
             virtualBody.name = child.name + "__" + dof.name;
             virtualBody.segment = child.segment;
+            virtualBody.role = child.role;
             model.bodies.push_back(virtualBody);
             outboard = virtualBody.name;
         }

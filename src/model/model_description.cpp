@@ -231,6 +231,15 @@ void ModelDescription::validate(const std::string& source) const {
     validateTree(source, *this);
 }
 
+std::string toString(BodyRole role) {
+    switch (role) {
+        case BodyRole::Other: return "other";
+        case BodyRole::Palm: return "palm";
+        case BodyRole::Digit: return "digit";
+    }
+    return "other";
+}
+
 std::string toString(Geometry::Type type) {
     switch (type) {
         case Geometry::Type::Sphere: return "sphere";

@@ -15,10 +15,6 @@ void scaleMass(Body& body, double newMass) {
     for (double* c : {&I.xx, &I.yy, &I.zz, &I.xy, &I.xz, &I.yz}) *c *= ratio;
 }
 
-bool endsWith(const std::string& text, const std::string& tail) {
-    return text.size() >= tail.size() && text.compare(text.size() - tail.size(), tail.size(), tail) == 0;
-}
-
 // The side prefix of a body ("", "r_" or "l_"): what precedes its anatomical part name.
 std::string prefixOf(const Body& body, const std::string& part) {
     return body.name.substr(0, body.name.size() - part.size());
@@ -30,7 +26,7 @@ void applyThesisPreset(ModelDescription& model) {
     std::set<std::string> sides;  // side prefixes ("", "r_", "l_") of every hand in the model
     for (Body& body : model.bodies) {
         if (body.segment != "hand" || body.isVirtual()) continue;
-        const bool palm = endsWith(body.name, "palm");
+        const bool palm = body.role == BodyRole::Palm;
         scaleMass(body, palm ? kThesisPalmMass : kThesisFingerSegmentMass);
         if (palm) sides.insert(prefixOf(body, "palm"));
     }

@@ -34,6 +34,11 @@ public:
         return value;
     }
 
+    std::string getOptionalText(const char* name, const std::string& defaultValue) const {
+        const char* value = element_.Attribute(name);
+        return value ? value : defaultValue;
+    }
+
     double getNumber(const char* name, double defaultValue, bool nonNegative) const {
         if (!element_.Attribute(name)) return defaultValue;
         const std::string text = getText(name);
@@ -90,6 +95,10 @@ void applyLink(const ExtensionElement& e, std::set<std::string>& seen, const Urd
     if (!body) source.reject(e.getLine(), "<" + e.getTag() + "> name", quoted(name), "must name a <link> of the file");
     checkFirstEntry(seen, name, e, source);
     body->segment = e.getText("segment");
+    const std::string role = e.getOptionalText("role", "other");
+    if (role == "palm") body->role = BodyRole::Palm;
+    else if (role == "digit") body->role = BodyRole::Digit;
+    else if (role != "other") source.reject(e.getLine(), "<" + e.getTag() + " name=" + quoted(name) + "> role", quoted(role), "palm, digit or other");
 }
 
 void applyJoint(const ExtensionElement& e, std::set<std::string>& seen, const UrdfSource& source, ModelDescription& model) {
@@ -120,6 +129,7 @@ void appendGraspsimExtensions(const ModelDescription& model, TiXmlElement& robot
         auto* e = new TiXmlElement(kPrefix + "link");
         e->SetAttribute("name", body.name);
         e->SetAttribute("segment", body.segment);
+        if (body.role != BodyRole::Other) e->SetAttribute("role", toString(body.role));
         robot.LinkEndChild(e);
     }
     for (const Joint& joint : model.joints) {
@@ -147,7 +157,7 @@ void applyGraspsimExtensions(const TiXmlElement& robot, const UrdfSource& source
         if (tag.rfind(prefix, 0) != 0) continue;
         const std::string local = tag.substr(prefix.size());
         if (local == "link") {
-            applyLink(ExtensionElement(*child, tag, {"name", "segment"}, source), links, source, model);
+            applyLink(ExtensionElement(*child, tag, {"name", "segment", "role"}, source), links, source, model);
         } else if (local == "joint") {
             applyJoint(ExtensionElement(*child, tag, {"name", "stiffness", "rest_angle"}, source), joints, source, model);
         } else if (local == "end_effector") {

@@ -82,7 +82,7 @@ double EngagedGraspTracker::calcQuality(const SimTK::State& state) const {
 double EngagedGraspTracker::measurePenetration(const SimTK::State& state) {
     // Only the pairs the approximation has switched off: those in ordinary contact (with multi,
     // the palm and digits without a goal) compress under load as they would in full contact.
-    const contact::CompliantContactForce& pairs = scene_.getContacts();
+    const contact::CompliantContactForce& pairs = scene_.getCompliantContacts();
     std::vector<int> replaced;
     for (int k = 0; k < pairs.getNumPairs(); ++k) {
         if (!pairs.isPairEnabled(state, k)) replaced.push_back(k);

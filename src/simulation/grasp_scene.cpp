@@ -18,7 +18,6 @@ system::SystemOptions makeSystemOptions(const scenario::Scenario& s) {
 }
 
 // The body that carries the fingertip goals (see grasp_controller.h).
-const char* const kPalm = "palm";
 
 SimTK::Vec3 toVec3(const model::Vec3& v) { return SimTK::Vec3(v[0], v[1], v[2]); }
 
@@ -45,7 +44,7 @@ contact::ContactMaterial makeSurfaceMaterial(const scenario::ContactSpec& c) {
 std::vector<std::string> findFingerJoints(const model::ModelDescription& d, const std::string& endEffector) {
     std::vector<std::string> joints;
     std::string body = d.findEndEffector(endEffector)->body;
-    const auto isPalm = [](const std::string& name) { return name.size() >= 4 && name.compare(name.size() - 4, 4, "palm") == 0; };
+    const auto isPalm = [&](const std::string& name) { return d.findBody(name)->role == model::BodyRole::Palm; };
     while (!isPalm(body)) {
         const model::Joint* j = d.findParentJoint(body);
         if (!j) throw Error("end-effector '" + endEffector + "' does not hang from a palm");
@@ -55,12 +54,25 @@ std::vector<std::string> findFingerJoints(const model::ModelDescription& d, cons
     return joints;
 }
 
+// The palm: the one massive body the model builder gave the palm role.
+std::string findPalmBody(const model::ModelDescription& d) {
+    std::string palm;
+    for (const model::Body& b : d.bodies) {
+        if (b.role != model::BodyRole::Palm || b.isVirtual()) continue;
+        if (!palm.empty()) throw InputError("model '" + d.name + "': two palms ('" + palm + "', '" + b.name + "'); a grasp scene needs one hand");
+        palm = b.name;
+    }
+    if (palm.empty()) throw InputError("model '" + d.name + "': no body has the palm role; a grasp scene needs a hand");
+    return palm;
+}
+
 }  // namespace
 
 GraspScene::GraspScene(const scenario::Scenario& scenario, const SimulationOptions& options)
     : scenario_(scenario),
       model_(model::buildBodyModel(scenario.bodyOptions), makeSystemOptions(scenario)),
-      contactModel_(options.contact) {
+      contactModel_(options.contact),
+      palmBody_(findPalmBody(model_.getDescription())) {
     if (options.contact == ContactModel::Rigid && options.mode == SimulationMode::Approx) {
         throw InputError("--mode approx: not available with --contact rigid (the grasp switch is an event handler, "
                          "and the rigid stepper runs none); use --mode full or --contact compliant");
@@ -115,7 +127,7 @@ void GraspScene::addContacts() {
     const contact::ContactMaterial material = makeSurfaceMaterial(scenario_.contact);
     std::vector<contact::ContactPair> pairs;
     for (const model::Body& hand : model_.getDescription().bodies) {
-        if (hand.segment != "hand" || hand.isVirtual()) continue;
+        if (hand.role == model::BodyRole::Other || hand.isVirtual()) continue;
         const SimTK::MobilizedBody& handMobod = model_.getMobilizedBody(hand.name);
         for (const model::Geometry& g : hand.geometry) {
             for (const model::Geometry& o : objectBody.geometry) {
@@ -210,7 +222,7 @@ void GraspScene::addMultiAttachment() {
     attachment_ = multi_.get();
 }
 
-const SimTK::MobilizedBody& GraspScene::getPalm() const { return model_.getMobilizedBody(kPalm); }
+const SimTK::MobilizedBody& GraspScene::getPalm() const { return model_.getMobilizedBody(palmBody_); }
 
 SimTK::MobilizedBody& GraspScene::updPalm() { return model_.updMatter().updMobilizedBody(getPalm().getMobilizedBodyIndex()); }
 
@@ -220,7 +232,7 @@ void GraspScene::addController(const SimulationOptions& options) {
     std::vector<std::string> armBodies;
     for (const model::Joint& j : d.joints) {
         if (j.type == model::Joint::Type::Fixed) continue;
-        const bool finger = d.findBody(j.child)->segment == "hand" && j.name.find("wrist") == std::string::npos;
+        const bool finger = d.findBody(j.child)->role == model::BodyRole::Digit;
         joints.push_back({j.name, finger ? control::PdGains{scenario_.controller.kp, scenario_.controller.kd}
                                          : control::PdGains{kArmKp, kArmKd}});
         if (finger) fingerMobilizers_.push_back(model_.getMobilizedBody(j.child).getMobilizedBodyIndex());
@@ -264,7 +276,7 @@ SimTK::State GraspScene::makeInitialState() {
     model_.getSystem().realize(state, SimTK::Stage::Position);
     // The goals T: the scenario's points on the object, pressed in along the inward normal, as they
     // sit in the palm frame now that hand and object are in place.
-    const SimTK::Transform X_HG = ~model_.getMobilizedBody(kPalm).getBodyTransform(state);
+    const SimTK::Transform X_HG = ~model_.getMobilizedBody(palmBody_).getBodyTransform(state);
     const SimTK::Transform& X_GO = object_.getBodyTransform(state);
     std::vector<control::FingertipGoal> goals;
     for (std::size_t k = 0; k < goalEndEffectors_.size(); ++k) {

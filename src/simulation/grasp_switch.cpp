@@ -39,6 +39,28 @@ SimTK::Vec6 calcFrictionLimits(const std::vector<contact::ContactReport>& report
     return SimTK::Vec6(angular, angular, angular, linear, linear, linear);
 }
 
+// The per-axis limits of the constraint frame M (orientation R_GM, origin p_GM) from each contact's
+// normal and position (grasp/friction_limits.h), rotation first as calcFrictionLimits.
+SimTK::Vec6 calcContactGeometryLimits(const std::vector<contact::ContactReport>& reports, double mu,
+                                      const SimTK::Rotation& R_GM, const SimTK::Vec3& p_GM) {
+    std::vector<grasp::GraspContact> contacts;
+    for (const contact::ContactReport& c : reports) {
+        grasp::GraspContact g;
+        g.p_GC = Eigen::Vector3d(c.p_G[0], c.p_G[1], c.p_G[2]);
+        g.n_G = Eigen::Vector3d(c.n_G[0], c.n_G[1], c.n_G[2]);
+        g.normalForce = c.normalForce;
+        contacts.push_back(g);
+    }
+    Eigen::Matrix3d R;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) R(i, j) = R_GM.asMat33()(i, j);
+    const Eigen::Matrix<double, 6, 1> limits =
+        grasp::calcContactGeometryLimits(contacts, mu, R, Eigen::Vector3d(p_GM[0], p_GM[1], p_GM[2]));
+    SimTK::Vec6 result;
+    for (int k = 0; k < 6; ++k) result[k] = limits[k];
+    return result;
+}
+
 // Centroid of the contact points (Ground, m): where the friction acts, so where the constraint does.
 SimTK::Vec3 findContactCentroid(const std::vector<contact::ContactReport>& reports) {
     SimTK::Vec3 centroid(0);
@@ -139,7 +161,7 @@ void GraspSwitch::handleEvent(SimTK::State& state, SimTK::Real accuracy, bool& s
 
 double GraspSwitch::calcQuality(const SimTK::State& state) const {
     scene_.getSystem().realize(state, SimTK::Stage::Velocity);
-    return calcQualityOf(state, scene_.getContacts().findContactReports(state));
+    return calcQualityOf(state, scene_.getCompliantContacts().findContactReports(state));
 }
 
 double GraspSwitch::calcQualityOf(const SimTK::State& state, const std::vector<contact::ContactReport>& reports) const {
@@ -169,7 +191,7 @@ double GraspSwitch::calcEngagedQuality(const SimTK::State& state) const {
         // Multi: the fingers move on their own and the palm-fixed tracker does not apply; Q is that
         // of the contacts every pair would produce in `state`, switched on or not.
         scene_.getSystem().realize(state, SimTK::Stage::Velocity);
-        q = calcQualityOf(state, scene_.getContacts().findContactReports(state, scene_.getContacts().findAllPairIndices()));
+        q = calcQualityOf(state, scene_.getCompliantContacts().findContactReports(state, scene_.getCompliantContacts().findAllPairIndices()));
     }
     qualityMemo_ = {state.getTime(), state.getY(), q};
     return q;
@@ -195,7 +217,7 @@ bool GraspSwitch::isSticking(const std::vector<contact::ContactReport>& reports)
 // One set of contact reports serves every test of the check and the engagement itself.
 void GraspSwitch::checkEngage(SimTK::State& state) const {
     scene_.getSystem().realize(state, SimTK::Stage::Velocity);
-    const std::vector<contact::ContactReport> reports = scene_.getContacts().findContactReports(state);
+    const std::vector<contact::ContactReport> reports = scene_.getCompliantContacts().findContactReports(state);
     if (!isFullContact(reports)) return;
     const double q = calcQualityOf(state, reports);
     if (qThreshold_ == 0) {
@@ -211,6 +233,16 @@ void GraspSwitch::checkEngage(SimTK::State& state) const {
     if (q > 0 && q >= qThreshold_) engage(state, q, reports);
 }
 
+// The engage event's text: the threshold and the limits (one force and one torque for the thesis's
+// box, every axis for per-axis limits).
+std::string GraspSwitch::describeEngagement(const SimTK::Vec6& limits) const {
+    if (options_.limitModel == grasp::FrictionLimitModel::Thesis) {
+        return format("Q >= Q_Th = %.6g N; limits %.6g N", qThreshold_, limits[3]) + format(", %.6g N m", limits[0]);
+    }
+    return format("Q >= Q_Th = %.6g N; contact limits %.6g", qThreshold_, limits[3]) + format(" %.6g", limits[4]) +
+           format(" %.6g N, ", limits[5]) + format("%.6g %.6g", limits[0], limits[1]) + format(" %.6g N m", limits[2]);
+}
+
 void GraspSwitch::engage(SimTK::State& state, double quality, const std::vector<contact::ContactReport>& reports) const {
     qualityMemo_ = {};
     tracker_.capture(state, reports);  // penetration, for both attachments; Q tracking is merged's
@@ -221,19 +253,22 @@ void GraspSwitch::engage(SimTK::State& state, double quality, const std::vector<
     }
     grasp::AttachmentEngagement engagement;
     const scenario::ContactSpec& contact = scene_.getScenario().contact;
-    engagement.limits = calcFrictionLimits(reports, options_.staticFrictionLimits ? contact.staticFriction : contact.dynamicFriction);
+    const double mu = options_.staticFrictionLimits ? contact.staticFriction : contact.dynamicFriction;
     const SimTK::Vec3 p_GC = findContactCentroid(reports);
     placeConstraintFrames(state, p_GC, engagement);
+    if (options_.limitModel == grasp::FrictionLimitModel::Thesis) {
+        engagement.limits = calcFrictionLimits(reports, mu);
+    } else {
+        engagement.limits = calcContactGeometryLimits(reports, mu, scene_.getObject().getBodyTransform(state).R(), p_GC);
+    }
     engagement.leverArm = findLeverArm(reports, p_GC);
     engagement.penetrationBound = options_.maxEngagedPenetration;
     for (int k = 0; k < 6; ++k) engagement.lockedAxes[k] = !(*options_.relaxedAxes)[k];
-    scene_.getContacts().setPairsEnabled(state, scene_.getContacts().findAllPairIndices(), false);  // (b)
+    scene_.getCompliantContacts().setPairsEnabled(state, scene_.getCompliantContacts().findAllPairIndices(), false);  // (b)
     setFingersMerged(state, true);                                                        // (c)
     attachment_.engage(state, engagement);                                                // (d)
     X_HO_engaged_ = ~scene_.getPalm().getBodyTransform(state) * scene_.getObject().getBodyTransform(state);
-    events_.push_back({state.getTime(), GraspEventKind::Engage, quality,
-                       format("Q >= Q_Th = %.6g N; limits %.6g N", qThreshold_, engagement.limits[3]) +
-                           format(", %.6g N m", engagement.limits[0])});  // (e)
+    events_.push_back({state.getTime(), GraspEventKind::Engage, quality, describeEngagement(engagement.limits)});  // (e)
 }
 
 // F on the palm and M on the object coincide at the contact centroid, with O's orientation.
@@ -283,7 +318,7 @@ void GraspSwitch::release(SimTK::State& state, double quality, const std::string
     const SimTK::Vec3 v_before = scene_.getObject().getBodyOriginVelocity(state);
     attachment_.release(state);
     if (!multi_) setFingersMerged(state, false);  // multi never merges them
-    scene_.getContacts().setPairsEnabled(state, scene_.getContacts().findAllPairIndices(), true);
+    scene_.getCompliantContacts().setPairsEnabled(state, scene_.getCompliantContacts().findAllPairIndices(), true);
     events_.push_back({state.getTime(), GraspEventKind::Release, quality, reason, findVelocityJump(state, v_before)});
 }
 

@@ -19,13 +19,11 @@ namespace {
 // One point contact (or none) cannot hold an object against a general load.
 constexpr int kMinAttachedFingers = 2;
 
-bool isPalm(const std::string& name) { return name.size() >= 4 && name.compare(name.size() - 4, 4, "palm") == 0; }
-
 // The bodies from an end-effector's body up to (not including) the palm.
 std::vector<std::string> findDigitBodies(const model::ModelDescription& d, const std::string& endEffector) {
     std::vector<std::string> bodies;
     std::string body = d.findEndEffector(endEffector)->body;
-    while (!isPalm(body)) {
+    while (d.findBody(body)->role != model::BodyRole::Palm) {
         bodies.push_back(body);
         const model::Joint* j = d.findParentJoint(body);
         if (!j) throw Error("end-effector '" + endEffector + "' does not hang from a palm");
@@ -68,7 +66,7 @@ grasp::FingerLoad calcFingerLoad(const std::vector<const contact::ContactReport*
 MultiAttachmentSwitch::MultiAttachmentSwitch(const GraspScene& scene, double slideLimit, double penetrationBound)
     : scene_(scene), slideLimit_(slideLimit), penetrationBound_(penetrationBound) {
     const model::ModelDescription& d = scene.getModel().getDescription();
-    const contact::CompliantContactForce& contacts = scene.getContacts();
+    const contact::CompliantContactForce& contacts = scene.getCompliantContacts();
     for (const std::string& endEffector : scene.getGoalEndEffectors()) {
         fingerBodies_.push_back(findDigitBodies(d, endEffector));
         fingerPairs_.emplace_back();
@@ -105,7 +103,7 @@ std::string MultiAttachmentSwitch::engage(SimTK::State& state, const std::vector
     // Only the goal digits' pairs: the palm and digits without a goal stay in ordinary contact.
     std::vector<int> replaced;
     for (const std::vector<int>& pairs : fingerPairs_) replaced.insert(replaced.end(), pairs.begin(), pairs.end());
-    scene_.getContacts().setPairsEnabled(state, replaced, false);
+    scene_.getCompliantContacts().setPairsEnabled(state, replaced, false);
     grasp::AttachmentEngagement engagement;
     engagement.mu = scene_.getScenario().contact.dynamicFriction;
     engagement.penetrationBound = penetrationBound_;
@@ -132,7 +130,7 @@ std::string MultiAttachmentSwitch::update(SimTK::State& state, double quality, s
     }
     for (const auto& [i, reason] : leaving) {
         multi.detach(state, i);
-        scene_.getContacts().setPairsEnabled(state, fingerPairs_[static_cast<std::size_t>(i)], true);
+        scene_.getCompliantContacts().setPairsEnabled(state, fingerPairs_[static_cast<std::size_t>(i)], true);
         events.push_back({state.getTime(), GraspEventKind::Detach, quality, scene_.getGoalEndEffectors()[static_cast<std::size_t>(i)] + ": " + reason});
     }
     const int attached = multi.countAttached(state);
@@ -166,7 +164,7 @@ double MultiAttachmentSwitch::findSmallestPressing(const SimTK::State& state) co
 
 void MultiAttachmentSwitch::release(SimTK::State& state) const {
     scene_.getMultiAttachment()->detachAll(state);
-    const contact::CompliantContactForce& contacts = scene_.getContacts();
+    const contact::CompliantContactForce& contacts = scene_.getCompliantContacts();
     contacts.setPairsEnabled(state, contacts.findAllPairIndices(), true);
 }
 

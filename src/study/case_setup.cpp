@@ -125,32 +125,57 @@ std::string place(const StudySpec& spec, int line) { return spec.source + ":" + 
 
 }  // namespace
 
-CaseSetup makeCaseSetup(const StudySpec& spec, const scenario::ScenarioText& base, const StudyCase& studyCase) {
-    std::vector<Assignment> assignments = listFixed(spec);
-    for (std::size_t a = 0; a < spec.axes.size(); ++a) {
-        assignments.push_back({spec.axes[a].name, spec.axes[a].isRunOption, studyCase.values[a]});
-    }
-    return applyAssignments(base, assignments);
+std::vector<scenario::ScenarioText> readBaseScenarios(const StudySpec& spec) {
+    std::vector<scenario::ScenarioText> bases;
+    for (const std::string& base : spec.bases) bases.push_back(scenario::readScenarioText(base));
+    return bases;
 }
 
-void checkStudyValues(const StudySpec& spec, const scenario::ScenarioText& base) {
-    const std::vector<Assignment> fixed = listFixed(spec);
-    try {
-        applyAssignments(base, fixed);
-    } catch (const InputError& e) {
-        throw InputError(place(spec, spec.fixed.empty() ? 1 : spec.fixed.front().line) + "base '" + base.source +
-                         "' with the 'set' values: " + e.what());
+std::string joinBaseTexts(const std::vector<scenario::ScenarioText>& bases) {
+    std::string text;
+    for (std::size_t b = 0; b < bases.size(); ++b) text += (b == 0 ? "" : std::string(1, '\0')) + bases[b].text;
+    return text;
+}
+
+CaseSetup makeCaseSetup(const StudySpec& spec, const std::vector<scenario::ScenarioText>& bases,
+                        const StudyCase& studyCase) {
+    std::vector<Assignment> assignments = listFixed(spec);
+    std::size_t base = 0;
+    for (std::size_t a = 0; a < spec.axes.size(); ++a) {
+        const StudyAxis& axis = spec.axes[a];
+        if (axis.isBase) {
+            base = static_cast<std::size_t>(std::find(axis.values.begin(), axis.values.end(), studyCase.values[a]) -
+                                            axis.values.begin());
+            continue;
+        }
+        assignments.push_back({axis.name, axis.isRunOption, studyCase.values[a]});
     }
-    for (const StudyAxis& axis : spec.axes) {
-        std::vector<std::string> values = axis.values;
-        if (axis.isRange) values = {formatEnd(axis.range.from), formatEnd(axis.range.to)};
-        for (const std::string& value : values) {
-            std::vector<Assignment> assignments = fixed;
-            assignments.push_back({axis.name, axis.isRunOption, value});
-            try {
-                applyAssignments(base, assignments);
-            } catch (const InputError& e) {
-                throw InputError(place(spec, axis.line) + "axis '" + axis.name + "': " + e.what());
+    if (base >= bases.size()) throw InputError("case " + std::to_string(studyCase.index) + ": its base is not one of the study's");
+    return applyAssignments(bases[base], assignments);
+}
+
+void checkStudyValues(const StudySpec& spec, const std::vector<scenario::ScenarioText>& bases) {
+    const std::vector<Assignment> fixed = listFixed(spec);
+    for (const scenario::ScenarioText& base : bases) {
+        try {
+            applyAssignments(base, fixed);
+        } catch (const InputError& e) {
+            throw InputError(place(spec, spec.fixed.empty() ? 1 : spec.fixed.front().line) + "base '" + base.source +
+                             "' with the 'set' values: " + e.what());
+        }
+        for (const StudyAxis& axis : spec.axes) {
+            if (axis.isBase) continue;
+            std::vector<std::string> values = axis.values;
+            if (axis.isRange) values = {formatEnd(axis.range.from), formatEnd(axis.range.to)};
+            for (const std::string& value : values) {
+                std::vector<Assignment> assignments = fixed;
+                assignments.push_back({axis.name, axis.isRunOption, value});
+                try {
+                    applyAssignments(base, assignments);
+                } catch (const InputError& e) {
+                    throw InputError(place(spec, axis.line) + "axis '" + axis.name + "'" +
+                                     (bases.size() > 1 ? " on base '" + base.source + "'" : "") + ": " + e.what());
+                }
             }
         }
     }

@@ -70,8 +70,8 @@ CaseRecord judgeCase(const RunningCase& running, const ProcessEnd& end) {
 
 class CaseScheduler {
 public:
-    CaseScheduler(const StudySpec& spec, const scenario::ScenarioText& base, const RunSettings& settings)
-        : spec_(spec), base_(base), settings_(settings), start_(std::chrono::steady_clock::now()) {}
+    CaseScheduler(const StudySpec& spec, const std::vector<scenario::ScenarioText>& bases, const RunSettings& settings)
+        : spec_(spec), bases_(bases), settings_(settings), start_(std::chrono::steady_clock::now()) {}
 
     RunReport run() {
         queueCases();
@@ -110,7 +110,7 @@ private:
         fs::create_directories(tmp);
         CaseSetup setup;
         try {
-            setup = makeCaseSetup(spec_, base_, studyCase);
+            setup = makeCaseSetup(spec_, bases_, studyCase);
         } catch (const InputError& e) {
             record(tmp, {studyCase.index, CaseStatus::Failed, e.what(), studyCase.values});
             return;
@@ -152,7 +152,7 @@ private:
     }
 
     const StudySpec& spec_;
-    const scenario::ScenarioText& base_;
+    const std::vector<scenario::ScenarioText>& bases_;
     const RunSettings& settings_;
     const std::chrono::steady_clock::time_point start_;
     std::deque<StudyCase> pending_;
@@ -162,8 +162,8 @@ private:
 
 }  // namespace
 
-RunReport runStudyCases(const StudySpec& spec, const scenario::ScenarioText& base, const RunSettings& settings) {
-    return CaseScheduler(spec, base, settings).run();
+RunReport runStudyCases(const StudySpec& spec, const std::vector<scenario::ScenarioText>& bases, const RunSettings& settings) {
+    return CaseScheduler(spec, bases, settings).run();
 }
 
 }  // namespace graspsim::study

@@ -168,6 +168,26 @@ std::string resolveBase(const std::string& source, const std::string& base) {
     return (std::filesystem::path(source).parent_path() / path).lexically_normal().string();
 }
 
+// `base: name` or `base: [name, ...]`; a list becomes the first axis, "base".
+void readBases(const std::string& source, const YAML::Node& node, StudySpec& spec) {
+    if (!node.IsSequence()) {
+        spec.bases = {resolveBase(source, readText(source, node, "base"))};
+        return;
+    }
+    StudyAxis axis;
+    axis.name = "base";
+    axis.isBase = true;
+    axis.line = findLine(node);
+    std::set<std::string> seen;
+    for (const auto& item : node) {
+        axis.values.push_back(readText(source, item, "base"));
+        if (!seen.insert(axis.values.back()).second) reject(source, item, "base '" + axis.values.back() + "' is listed twice");
+        spec.bases.push_back(resolveBase(source, axis.values.back()));
+    }
+    if (axis.values.empty()) reject(source, node, "'base' is an empty list; give a scenario or a list of scenarios");
+    spec.axes.insert(spec.axes.begin(), axis);
+}
+
 void readSampling(const std::string& source, const YAML::Node& root, StudySpec& spec) {
     if (root["sampling"]) {
         const std::string sampling = readText(source, root["sampling"], "sampling");
@@ -243,9 +263,9 @@ StudySpec parseStudy(const std::string& yamlText, const std::string& source) {
     spec.name = readText(source, root["name"], "name");
     if (root["description"]) spec.description = readText(source, root["description"], "description");
     if (!root["base"]) throw InputError(source + ": 'base' is missing; give a built-in scenario (" + join(scenario::getBuiltinScenarioNames()) + ") or a scenario file");
-    spec.base = resolveBase(source, readText(source, root["base"], "base"));
     spec.fixed = readFixed(source, root["set"]);
     spec.axes = readAxes(source, root["axes"]);
+    readBases(source, root["base"], spec);
     readSampling(source, root, spec);
     spec.measures = readMeasures(source, root["measures"]);
     for (const FixedValue& f : spec.fixed) {

@@ -33,7 +33,7 @@ SimTK::State makeFloorState(const simulation::GraspScene& scene, const SimTK::St
         matter.getMobilizedBody(finger).lock(floor, SimTK::Motion::Position);
     }
     scene.getObject().lock(floor, SimTK::Motion::Position);
-    scene.getContacts().setPairsEnabled(floor, scene.getContacts().findAllPairIndices(), false);
+    scene.getCompliantContacts().setPairsEnabled(floor, scene.getCompliantContacts().findAllPairIndices(), false);
     return floor;
 }
 

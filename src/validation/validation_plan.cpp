@@ -23,9 +23,19 @@ void checkKnown(const std::vector<std::string>& given, const std::vector<std::st
     }
 }
 
+// The perturbations to run: none, then the scenario's own, in file order.
+std::vector<std::string> findPerturbations(const scenario::Scenario& s, bool quick) {
+    std::vector<std::string> names{"none"};
+    if (quick) return names;
+    for (const scenario::Perturbation& p : s.perturbations) names.push_back(p.name);
+    return names;
+}
+
+}  // namespace
+
 // Variant names: "full", "full-cvode" (full contact on the CVODE reference integrator at
 // kReferenceAccuracy), "full-rigid" (rigid contact), "approx-<constraint>-<attach>".
-simulation::SimulationOptions makeOptions(const std::string& variant, const std::string& perturbation, double duration) {
+simulation::SimulationOptions makeVariantOptions(const std::string& variant, const std::string& perturbation, double duration) {
     simulation::SimulationOptions options;
     options.contact = simulation::ContactModel::Compliant;
     const bool full = variant.rfind("full", 0) == 0;
@@ -41,16 +51,6 @@ simulation::SimulationOptions makeOptions(const std::string& variant, const std:
     options.duration = duration;
     return options;
 }
-
-// The perturbations to run: none, then the scenario's own, in file order.
-std::vector<std::string> findPerturbations(const scenario::Scenario& s, bool quick) {
-    std::vector<std::string> names{"none"};
-    if (quick) return names;
-    for (const scenario::Perturbation& p : s.perturbations) names.push_back(p.name);
-    return names;
-}
-
-}  // namespace
 
 const std::vector<std::string>& getThesisExperiments() {
     static const std::vector<std::string> names{"ball-clutch", "phone-pinch"};
@@ -80,13 +80,13 @@ std::vector<ValidationRun> makeValidationPlan(const PlanOptions& options) {
         for (const std::string& perturbation : findPerturbations(s, options.quick)) {
             const std::string stem = experiment + "_" + perturbation + "_";
             // Every comparison needs its full-contact reference, whether or not "full" was asked for.
-            runs.push_back({stem + "full", experiment, "full", makeOptions("full", perturbation, duration), ""});
+            runs.push_back({stem + "full", experiment, "full", makeVariantOptions("full", perturbation, duration), ""});
             for (const std::string& variant : variants) {
                 if (variant == "full") continue;
                 // The integrator reference once per experiment: without perturbation.
                 if (variant == "full-cvode" && perturbation != "none") continue;
                 // Rigid contact compares with compliant contact: the same stem's "full".
-                runs.push_back({stem + variant, experiment, variant, makeOptions(variant, perturbation, duration), stem + "full"});
+                runs.push_back({stem + variant, experiment, variant, makeVariantOptions(variant, perturbation, duration), stem + "full"});
             }
         }
     }
@@ -94,7 +94,7 @@ std::vector<ValidationRun> makeValidationPlan(const PlanOptions& options) {
     if (!options.quick && options.longHoldDuration > 0 && approx != variants.end()) {
         const std::string experiment = experiments.front();
         ValidationRun hold{experiment + "_none_" + *approx + "_long-hold", experiment, *approx,
-                           makeOptions(*approx, "none", options.longHoldDuration), "", true};
+                           makeVariantOptions(*approx, "none", options.longHoldDuration), "", true};
         runs.push_back(hold);
     }
     return runs;

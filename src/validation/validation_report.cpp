@@ -105,6 +105,7 @@ std::string formatReportMarkdown(const ValidationResults& results, const std::ve
            << (c.pass ? "pass" : "**FAIL**") << " | " << c.source << " |\n";
     }
     appendRunTable(results, md);
+    md << formatCapacityMarkdown(results.capacity);
     if (!plots.empty()) md << "\n## Plots\n\n";
     for (const std::string& p : plots) md << "![" << p << "](" << p << ")\n\n";
     return md.str();
@@ -114,6 +115,7 @@ void writeValidationReport(const std::string& folder, const ValidationResults& r
                            const std::vector<std::string>& plots) {
     io::writeFileAtomically(folder + "/results.csv", formatResultsCsv(results));
     io::writeFileAtomically(folder + "/checks.csv", formatChecksCsv(results));
+    if (!results.capacity.empty()) io::writeFileAtomically(folder + "/capacity.csv", formatCapacityCsv(results.capacity));
     io::writeFileAtomically(folder + "/report.md", formatReportMarkdown(results, plots));
 }
 

@@ -32,6 +32,9 @@ TEST_F(CapacityCommand, BadInputIsOneLineAndWritesNothing) {
     expectRejected("--rate inf", "--rate");
     expectRejected("--method guess", "--method");
     expectRejected("--mode half", "--mode");
+    // About the line through the phone's two goals, R_GO (p_index - p_thumb) normalized (the
+    // scenario's goals and orientation; grasp_capacity_test derives it in code): nothing resists.
+    expectRejected("--torque --direction 0.8866,-0.4599,-0.0500", "--direction");
 }
 
 // A fast ramp on the phone (8 N/s: it drops within 0.6 s of load): the files hold what the last

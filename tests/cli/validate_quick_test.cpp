@@ -5,6 +5,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
 namespace fs = std::filesystem;
 using graspsim::testing::RunResult;
 using graspsim::testing::slurp;
@@ -26,4 +31,22 @@ TEST_F(ValidateQuick, PassesEveryBoundAndWritesReportTablesAndPlots) {
         EXPECT_NE(report.find(plot), std::string::npos) << plot;
     }
     EXPECT_TRUE(fs::exists(out / "runs" / "ball-clutch_none_full" / "trajectory.csv"));
+    // The capacity comparison, quick: the -y pull on full contact and on the default approximation,
+    // whose slip onsets agree within 10 % (the bound; measured +6.8 %).
+    std::istringstream capacity(slurp(out / "capacity.csv"));
+    std::string line;
+    std::vector<std::string> rows;
+    while (std::getline(capacity, line)) rows.push_back(line);
+    ASSERT_EQ(rows.size(), 3u) << slurp(out / "capacity.csv");
+    EXPECT_EQ(rows[1].rfind("ball-clutch,-y,full,N,", 0), 0u) << rows[1];
+    EXPECT_EQ(rows[2].rfind("ball-clutch,-y,approx-bushing-merged,N,", 0), 0u) << rows[2];
+    const std::vector<std::string> fields = [&] {
+        std::vector<std::string> f;
+        std::istringstream in(rows[2]);
+        for (std::string cell; std::getline(in, cell, ',');) f.push_back(cell);
+        return f;
+    }();
+    ASSERT_GT(fields.size(), 12u);
+    EXPECT_LT(std::abs(std::stod(fields[12])), 0.10) << rows[2];  // relative_difference_to_full
+    EXPECT_NE(report.find("## Holding capacity"), std::string::npos);
 }

@@ -1,6 +1,7 @@
 // Cost of one evaluation of the compliant contact force for the anthropometric right hand
-// (17 geometries: 15 phalanx capsules, 2 palm boxes) against a ball or a phone: 17 pairs.
-// Speed is measured here, never asserted in unit tests.
+// (17 geometries: 15 phalanx capsules, 2 palm boxes) against a ball, a phone, or a cylinder,
+// ellipsoid or convex mesh object: 17 pairs. And the cost of one contact query of a fingertip
+// pressed 1 mm into each object shape. Speed is measured here, never asserted in unit tests.
 
 #include <benchmark/benchmark.h>
 #include <simbody/Simbody.h>
@@ -9,6 +10,9 @@
 
 #include "graspsim/contact/compliant_contact_force.h"
 #include "graspsim/contact/hand_object_pairs.h"
+#include "graspsim/contact/shape_contact.h"
+#include "graspsim/contact/surface_point.h"
+#include "test_meshes.h"
 #include "graspsim/model/body_model.h"
 #include "graspsim/model/object_model.h"
 
@@ -84,6 +88,61 @@ void BM_HandPhoneInHand(benchmark::State& s) {
     runForceEvaluation(s, model::buildPhoneModel(), true);
 }
 
+// The ball model with its geometry replaced by `geometry` (same mass and body name).
+model::ModelDescription makeObjectModel(model::Geometry geometry) {
+    model::ModelDescription description = model::buildBallModel();
+    geometry.name = "object";
+    description.bodies.front().geometry = {geometry};
+    return description;
+}
+
+model::Geometry makeGeometry(model::Geometry::Type type) {
+    model::Geometry g;
+    g.type = type;
+    g.radius = 0.03;
+    g.length = 0.12;
+    g.semiAxes = {0.045, 0.035, 0.03};
+    if (type == model::Geometry::Type::Mesh) {
+        g.mesh = std::make_shared<model::TriangleMesh>(contact::test::makeCylinderMesh(0.03, 0.12, 64));
+    }
+    return g;
+}
+
+void BM_HandObjectInHand(benchmark::State& s, model::Geometry::Type type) {
+    runForceEvaluation(s, makeObjectModel(makeGeometry(type)), true);
+}
+
+// A fingertip sphere (8 mm) 1 mm into the object's side: one findContacts call.
+void BM_FingertipContact(benchmark::State& bench, model::Geometry::Type type) {
+    const contact::ContactShape object = contact::ContactShape::fromGeometry(makeGeometry(type));
+    const contact::ContactShape tip = contact::ContactShape::sphere(0.008);
+    const SimTK::Vec3 direction = SimTK::UnitVec3(1, 0.3, 0.2);
+    const double surface = -contact::findSurfacePoint(object, SimTK::Vec3(0)).distance;  // rough
+    SimTK::Vec3 centre = direction * surface;
+    // Move along the direction until the tip is 1 mm deep (surface distance 7 mm).
+    for (int i = 0; i < 50; ++i) {
+        centre += direction * (0.007 - contact::findSurfacePoint(object, centre).distance);
+    }
+    const SimTK::Transform X_GT(centre);
+    std::vector<contact::ContactPoint> contacts;
+    for (auto _ : bench) {
+        contacts.clear();
+        contact::appendContacts(tip, X_GT, object, SimTK::Transform(), contacts);
+        benchmark::DoNotOptimize(contacts.data());
+    }
+    bench.counters["depth_mm"] = contacts.empty() ? 0 : 1000 * contacts[0].depth;
+}
+
+BENCHMARK_CAPTURE(BM_FingertipContact, sphere, model::Geometry::Type::Sphere);
+BENCHMARK_CAPTURE(BM_FingertipContact, cylinder, model::Geometry::Type::Cylinder);
+BENCHMARK_CAPTURE(BM_FingertipContact, ellipsoid, model::Geometry::Type::Ellipsoid);
+BENCHMARK_CAPTURE(BM_FingertipContact, mesh_cylinder_64, model::Geometry::Type::Mesh);
+BENCHMARK_CAPTURE(BM_HandObjectInHand, cylinder, model::Geometry::Type::Cylinder)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_HandObjectInHand, ellipsoid, model::Geometry::Type::Ellipsoid)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_HandObjectInHand, mesh_cylinder_64, model::Geometry::Type::Mesh)
+    ->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_HandBallFar)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_HandBallInHand)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_HandPhoneFar)->Unit(benchmark::kMicrosecond);

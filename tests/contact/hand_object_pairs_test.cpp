@@ -22,10 +22,12 @@ model::Geometry makeGeometry(model::Geometry::Type type, const std::string& name
     return g;
 }
 
-model::Body makeBody(const std::string& name, const std::string& segment, double mass) {
+model::Body makeBody(const std::string& name, const std::string& segment, double mass,
+                     model::BodyRole role = model::BodyRole::Other) {
     model::Body b;
     b.name = name;
     b.segment = segment;
+    b.role = role;
     b.mass = mass;
     b.inertia.xx = b.inertia.yy = b.inertia.zz = mass * 1e-4;
     return b;
@@ -43,22 +45,22 @@ model::Joint makeJoint(const std::string& name, model::Joint::Type type, const s
     return j;
 }
 
-// palm (2 boxes, hand) -> virtual link (massless, no geometry) -> finger (capsule, hand);
-// palm -> ball (sphere, no segment) on a slider; forearm (capsule, not hand) welded to palm.
+// palm (2 boxes, palm role) -> virtual link (massless, no geometry) -> finger (capsule, digit
+// role); palm -> ball (sphere, no role) on a slider; forearm (capsule, no role) welded to palm.
 model::ModelDescription makeHandWithBall() {
     model::ModelDescription m;
     m.name = "toy_hand";
-    model::Body palm = makeBody("palm", "hand", 0.25);
+    model::Body palm = makeBody("palm", "hand", 0.25, model::BodyRole::Palm);
     model::Geometry proximal = makeGeometry(model::Geometry::Type::Box, "palm_proximal_box");
     proximal.X_BG = model::Transform::translation({0, -0.02, 0});
     palm.geometry = {proximal, makeGeometry(model::Geometry::Type::Box, "palm_distal_box")};
-    model::Body finger = makeBody("index_proximal", "hand", 0.02);
+    model::Body finger = makeBody("index_proximal", "hand", 0.02, model::BodyRole::Digit);
     finger.geometry = {makeGeometry(model::Geometry::Type::Capsule, "index_capsule")};
     model::Body forearm = makeBody("forearm", "forearm", 1.0);
     forearm.geometry = {makeGeometry(model::Geometry::Type::Capsule, "forearm_capsule")};
     model::Body ball = makeBody("ball", "", 0.2);
     ball.geometry = {makeGeometry(model::Geometry::Type::Sphere, "ball_sphere")};
-    m.bodies = {palm, makeBody("index_mcp__link", "hand", 0), finger, forearm, ball};
+    m.bodies = {palm, makeBody("index_mcp__link", "hand", 0, model::BodyRole::Digit), finger, forearm, ball};
     m.joints = {
         makeJoint("index_abduction", model::Joint::Type::Revolute, "palm", "index_mcp__link"),
         makeJoint("index_flexion", model::Joint::Type::Revolute, "index_mcp__link",
@@ -106,17 +108,19 @@ TEST(HandObjectPairs, BadObjectChoicesAreRejected) {
     EXPECT_THROW(makeHandObjectPairs(model, isHandSegmentBody, "ball", bad, m), InputError);
 }
 
-TEST(HandObjectPairs, CylinderGeometryIsRejectedNamingBodyAndGeometry) {
+TEST(HandObjectPairs, UnloadedMeshGeometryIsRejectedNamingBodyAndGeometry) {
     model::ModelDescription description = makeHandWithBall();
-    description.updBody("index_proximal")->geometry[0].type = model::Geometry::Type::Cylinder;
+    model::Geometry& geometry = description.updBody("index_proximal")->geometry[0];
+    geometry.type = model::Geometry::Type::Mesh;
+    geometry.meshFile = "phalanx.stl";
     const system::MultibodyModel model(description);
     try {
         makeHandObjectPairs(model, isHandSegmentBody, "ball", {}, {});
-        FAIL() << "cylinder accepted";
+        FAIL() << "mesh without triangles accepted";
     } catch (const InputError& e) {
         EXPECT_EQ(std::string(e.what()),
-                  "body 'index_proximal' geometry 'index_capsule': type cylinder has no contact "
-                  "support; use sphere, capsule or box");
+                  "body 'index_proximal' geometry 'index_capsule': mesh 'phalanx.stl' has no "
+                  "loaded triangles; contact needs the mesh read from its file");
     }
 }
 

@@ -107,5 +107,29 @@ TEST(RigidContactSet, PulledBoxFollowsCoulomb) {
     EXPECT_NEAR(sliding.friction, -limit, 0.01 * limit);
 }
 
+// A palm box against a cylinder, ellipsoid or mesh becomes its 8 corner spheres against the
+// object (each a pair RigidContact takes); an object solid on a half-space stays one pair, which
+// RigidContact then rejects with its reason.
+TEST(RigidContactSet, PalmAgainstObjectSolidsBecomesCornerPairs) {
+    SimTK::MultibodySystem system;
+    SimTK::SimbodyMatterSubsystem matter(system);
+    ContactPair pair;
+    pair.a = {matter.updGround(), "hand", "palm", ContactShape::box(Vec3(0.04, 0.05, 0.01)),
+              Transform(), ContactMaterial{}};
+    for (const ContactShape& object :
+         {ContactShape::cylinder(0.03, 0.1), ContactShape::ellipsoid(Vec3(0.04, 0.03, 0.02))}) {
+        pair.b = {matter.updGround(), "object", "object", object, Transform(), ContactMaterial{}};
+        const std::vector<ContactPair> corners = makeRigidContactPairs(pair);
+        ASSERT_EQ(corners.size(), 8u);
+        for (const ContactPair& c : corners) {
+            EXPECT_EQ(c.a.shape.type, ContactShape::Type::Sphere);
+            EXPECT_TRUE(isRigidContactSupported(c.a.shape, c.b.shape));
+        }
+    }
+    pair.a.shape = ContactShape::halfSpace();
+    EXPECT_EQ(makeRigidContactPairs(pair).size(), 1u);
+    EXPECT_FALSE(isRigidContactSupported(pair.a.shape, pair.b.shape));
+}
+
 }  // namespace
 }  // namespace graspsim::contact

@@ -375,13 +375,21 @@ TEST(ShapeContact, ModelGeometryOverloadUsesTheGivenPoses) {
         findContacts(capsule, Transform(), sphere, Transform(Vec3(0.025, 0, 0)));
     ASSERT_EQ(contacts.size(), 1u);
     EXPECT_NEAR(contacts[0].depth, 0.005, 1e-15);
+    // A cylinder of the capsule's radius and length: its side is where the capsule's is.
     model::Geometry cylinder = capsule;
     cylinder.type = model::Geometry::Type::Cylinder;
+    const std::vector<ContactPoint> cylinderContacts =
+        findContacts(cylinder, Transform(), sphere, Transform(Vec3(0.025, 0, 0)));
+    ASSERT_EQ(cylinderContacts.size(), 1u);
+    EXPECT_NEAR(cylinderContacts[0].depth, 0.005, 1e-15);
+    model::Geometry mesh = capsule;
+    mesh.type = model::Geometry::Type::Mesh;
+    mesh.meshFile = "phalanx.obj";
     try {
-        findContacts(cylinder, Transform(), sphere, Transform());
-        FAIL() << "cylinder accepted";
+        findContacts(mesh, Transform(), sphere, Transform());
+        FAIL() << "mesh without triangles accepted";
     } catch (const InputError& e) {
-        EXPECT_NE(std::string(e.what()).find("geometry 'phalanx': type cylinder"),
+        EXPECT_NE(std::string(e.what()).find("geometry 'phalanx': mesh 'phalanx.obj' has no loaded"),
                   std::string::npos)
             << e.what();
     }

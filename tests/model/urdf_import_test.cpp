@@ -2,6 +2,8 @@
 // bad input giving one InputError line that names the file and the offending field and value,
 // with nothing printed by urdfdom.
 
+#include "graspsim/model/body_model.h"
+#include "graspsim/model/urdf_export.h"
 #include "graspsim/model/urdf_import.h"
 
 #include "graspsim/error.h"
@@ -357,6 +359,25 @@ TEST(UrdfImportErrors, ExtensionWithNegativeStiffness) {
     const std::string xml = makeRobot(makeLink("a") + makeLink("b") + makeJoint("j", "a", "b") +
                                       "<graspsim:joint name=\"j\" stiffness=\"-2\"/>\n");
     EXPECT_CONTAINS(getImportError(xml, "ext_stiffness.urdf"), "stiffness = '-2'");
+}
+
+TEST(UrdfImportErrors, ExtensionWithAnUnknownRole) {
+    const std::string xml = makeRobot(makeLink("a") + makeLink("b") + makeJoint("j", "a", "b") +
+                                      "<graspsim:link name=\"b\" segment=\"hand\" role=\"thumb\"/>\n");
+    EXPECT_CONTAINS(getImportError(xml, "ext_role.urdf"), "role = 'thumb'");
+}
+
+TEST(UrdfImportNames, BodyRolesSurviveTheRoundTrip) {
+    const ModelDescription built = buildBodyModel(BuildOptions{});
+    const ModelDescription read = readUrdf(writeUrdf(built), "roles.urdf");
+    int palms = 0, digits = 0;
+    for (const Body& b : built.bodies) {
+        EXPECT_EQ(toString(b.role), toString(read.findBody(b.name)->role)) << b.name;
+        palms += b.role == BodyRole::Palm && !b.isVirtual();
+        digits += b.role == BodyRole::Digit && !b.isVirtual();
+    }
+    EXPECT_EQ(palms, 1);
+    EXPECT_EQ(digits, 15);  // three phalanges on each of five digits
 }
 
 TEST(UrdfImportNames, RepeatedCollisionNamesAreMadeUnique) {

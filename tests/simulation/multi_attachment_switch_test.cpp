@@ -106,7 +106,7 @@ TEST(MultiAttachmentSwitch, ADetachedFingerCarriesNothingAndReturnsToContactWhil
             detachedForce[name] = std::max(detachedForce[name], std::abs(multi.findPressingForce(state, i)));
             if (!firstDetachedSample.count(name)) firstDetachedSample[name] = state.getTime();
             const std::string body = scene.getModel().getDescription().findEndEffector(name)->body;
-            for (const contact::ContactReport& c : scene.getContacts().findContactReports(state)) {
+            for (const contact::ContactReport& c : scene.getCompliantContacts().findContactReports(state)) {
                 if (c.bodyA == body && c.normalForce > 0) ++contactSamples[name];
             }
         }

@@ -19,7 +19,7 @@ StudySpec makeSpec(const std::string& axes, const std::string& set = "") {
 std::string checkError(const std::string& axes, const std::string& set = "") {
     const StudySpec spec = makeSpec(axes, set);
     try {
-        checkStudyValues(spec, scenario::readScenarioText(spec.base));
+        checkStudyValues(spec, readBaseScenarios(spec));
     } catch (const graspsim::InputError& e) {
         EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos);
         return e.what();
@@ -34,7 +34,7 @@ TEST(CaseSetup, ValuesLandInTheScenarioFields) {
     const StudySpec spec = makeSpec("  subject.stature: [1.6]\n  perturbations.f1.force: [[0, -3, 1]]\n  mode: [approx]\n"
                                     "  contact.static_friction: [0.75]\n",
                                     "set: {perturbation: f1, simulation.duration: 2.5, integrator: cvode}\n");
-    const scenario::ScenarioText base = scenario::readScenarioText(spec.base);
+    const std::vector<scenario::ScenarioText> base = readBaseScenarios(spec);
     checkStudyValues(spec, base);
     const CaseSetup setup = makeCaseSetup(spec, base, expandCases(spec).at(0));
     const scenario::Scenario parsed = scenario::parseScenario(setup.scenarioYaml, "case");
@@ -60,7 +60,7 @@ TEST(CaseSetup, SectionsMissingFromTheBaseAreAdded) {
     ASSERT_NE(section, std::string::npos);
     base.text.resize(section + 1);
     ASSERT_EQ(scenario::parseScenario(base.text, "cut").approximation.qThreshold, 0.0);
-    const CaseSetup setup = makeCaseSetup(spec, base, expandCases(spec).at(0));
+    const CaseSetup setup = makeCaseSetup(spec, {base}, expandCases(spec).at(0));
     EXPECT_EQ(scenario::parseScenario(setup.scenarioYaml, "case").approximation.qThreshold, 2.5);
 }
 
@@ -81,9 +81,31 @@ TEST(CaseSetup, RefusedValuesGetTheReadersMessage) {
 TEST(CaseSetup, CombinationRefusedByTheReaderFailsItsCase) {
     // Alone, each is accepted against the base's 0.9 / 0.7; 0.75 with 0.8 is not.
     const StudySpec spec = makeSpec("  contact.static_friction: [0.75, 0.9]\n  contact.dynamic_friction: [0.8]\n");
-    const scenario::ScenarioText base = scenario::readScenarioText(spec.base);
+    const std::vector<scenario::ScenarioText> base = readBaseScenarios(spec);
     EXPECT_NO_THROW(checkStudyValues(spec, base));
     const std::vector<StudyCase> cases = expandCases(spec);
     EXPECT_THROW(makeCaseSetup(spec, base, cases[0]), graspsim::InputError);
     EXPECT_NO_THROW(makeCaseSetup(spec, base, cases[1]));
+}
+
+// A list of bases is the first axis: each case starts from its own base, the other axes apply to
+// every base.
+TEST(CaseSetup, EachCaseStartsFromTheBaseItsBaseAxisNames) {
+    const StudySpec spec = parseStudy("name: t\nbase: [ball-clutch, phone-pinch]\naxes: {subject.stature: [1.6, 1.8]}\n"
+                                      "measures: [held]\n", "s.yaml");
+    ASSERT_EQ(spec.axes.size(), 2u);
+    EXPECT_TRUE(spec.axes[0].isBase);
+    const std::vector<scenario::ScenarioText> bases = readBaseScenarios(spec);
+    checkStudyValues(spec, bases);
+    const std::vector<StudyCase> cases = expandCases(spec);
+    ASSERT_EQ(cases.size(), 4u);
+    const double ballMass = scenario::findBuiltinScenario("ball-clutch").object.mass;
+    const double phoneMass = scenario::findBuiltinScenario("phone-pinch").object.mass;
+    const double expectedMass[] = {ballMass, ballMass, phoneMass, phoneMass};
+    const double expectedStature[] = {1.6, 1.8, 1.6, 1.8};
+    for (std::size_t c = 0; c < cases.size(); ++c) {
+        const scenario::Scenario parsed = scenario::parseScenario(makeCaseSetup(spec, bases, cases[c]).scenarioYaml, "case");
+        EXPECT_EQ(parsed.object.mass, expectedMass[c]) << c;
+        EXPECT_EQ(parsed.bodyOptions.subject.stature, expectedStature[c]) << c;
+    }
 }

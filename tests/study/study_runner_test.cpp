@@ -66,7 +66,7 @@ TEST_F(StudyRunner, TwoHundredCasesEachCommittedOnceMemoryFlat) {
         heapAtWarmUp = graspsim::testing::findLiveHeapBytes();
         residentAtWarmUp = findResidentBytes();
     };
-    const RunReport report = runStudyCases(spec, base, settings);
+    const RunReport report = runStudyCases(spec, {base}, settings);
     const double heapGrowth = graspsim::testing::findLiveHeapBytes() - heapAtWarmUp;
     const double residentGrowth = findResidentBytes() - residentAtWarmUp;
     EXPECT_EQ(report.total, kCases);
@@ -88,5 +88,5 @@ TEST_F(StudyRunner, TwoHundredCasesEachCommittedOnceMemoryFlat) {
 
     // Run again: everything is finished, nothing runs.
     settings.progress = {};
-    EXPECT_EQ(runStudyCases(spec, base, settings).ran, 0);
+    EXPECT_EQ(runStudyCases(spec, {base}, settings).ran, 0);
 }

@@ -29,7 +29,7 @@ const std::string kHead = "name: t\nbase: ball-clutch\n";
 TEST(StudySpec, ShippedExampleReads) {
     const StudySpec spec = loadStudyFile(std::string(GRASPSIM_SOURCE_DIR) + "/models/studies/stature-friction.yaml");
     EXPECT_EQ(spec.name, "stature-friction");
-    EXPECT_EQ(spec.base, "ball-clutch");
+    EXPECT_EQ(spec.bases, std::vector<std::string>{"ball-clutch"});
     ASSERT_EQ(spec.axes.size(), 3u);
     EXPECT_EQ(spec.axes[0].name, "subject.stature");
     EXPECT_TRUE(spec.axes[1].isRange);
@@ -41,7 +41,18 @@ TEST(StudySpec, ShippedExampleReads) {
 
 TEST(StudySpec, RelativeBaseFileIsFoundBesideTheStudy) {
     const StudySpec spec = parseStudy(kHead.substr(0, 8) + "base: my.yaml\naxes: {mode: [full]}\nmeasures: [held]\n", "dir/s.yaml");
-    EXPECT_EQ(spec.base, "dir/my.yaml");
+    EXPECT_EQ(spec.bases, std::vector<std::string>{"dir/my.yaml"});
+}
+
+TEST(StudySpec, AListOfBasesIsTheFirstAxis) {
+    const StudySpec spec = parseStudy("name: t\nbase: [ball-clutch, my.yaml]\naxes: {mode: [full]}\nmeasures: [held]\n", "dir/s.yaml");
+    EXPECT_EQ(spec.bases, (std::vector<std::string>{"ball-clutch", "dir/my.yaml"}));
+    ASSERT_EQ(spec.axes.size(), 2u);
+    EXPECT_EQ(spec.axes[0].name, "base");
+    EXPECT_TRUE(spec.axes[0].isBase);
+    EXPECT_EQ(spec.axes[0].values, (std::vector<std::string>{"ball-clutch", "my.yaml"}));
+    EXPECT_NE(errorOf("name: t\nbase: []\naxes: {mode: [full]}\nmeasures: [held]\n").find("'base' is an empty list"), std::string::npos);
+    EXPECT_NE(errorOf("name: t\nbase: [a.yaml, a.yaml]\naxes: {mode: [full]}\nmeasures: [held]\n").find("listed twice"), std::string::npos);
 }
 
 TEST(StudySpec, MalformedStudiesGetOneLineNamingTheKey) {

@@ -38,6 +38,16 @@ struct GraspCapacityRequest {
 /// farthest goal's distance from the centre of mass (the lever the fingers hold it with).
 double findDefaultRate(const scenario::Scenario& scenario, bool torque);
 
+/// Largest angle (rad) between a torque's axis and the line through a two-finger pinch's goals for
+/// which the torque is refused: two point contacts carry no torque about the line through them
+/// (graspsim's contacts have no torsional friction), so the object would spin at any load.
+constexpr double kPinchAxisTolerance = 5.0 * 3.14159265358979323846 / 180;
+
+/// Checks, before anything runs, that the grasp can resist the load at all.
+/// @throws graspsim::InputError naming the direction, the goals and the angle, for a torque about
+///         (within kPinchAxisTolerance of) the line through the two goals of a two-goal grasp.
+void checkLoadResistible(const scenario::Scenario& scenario, const GraspCapacityRequest& request);
+
 /// When the load starts (s): settle_time + kLoadStartDelay.
 double findLoadStart(const scenario::Scenario& scenario);
 

@@ -24,7 +24,8 @@ struct ContactSurface {
     ContactMaterial material;
 
     /// The surface of a model geometry on `body`: shape and pose X_BS = geometry.X_BG.
-    /// @throws graspsim::InputError for a Cylinder or Mesh, a bad size or a bad rotation.
+    /// @throws graspsim::InputError for a Mesh without loaded triangles or not closed and
+    ///         convex, a bad size or a bad rotation.
     static ContactSurface fromGeometry(const SimTK::MobilizedBody& body,
                                        const std::string& bodyName, const model::Geometry& geometry,
                                        const ContactMaterial& material);

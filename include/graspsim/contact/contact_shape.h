@@ -1,7 +1,8 @@
 #pragma once
 /// @file
-/// The shapes the contact layer collides: spheres, capsules and boxes (what the hand and the
-/// grasped objects are made of) and half-spaces (floors, tables).
+/// The shapes the contact layer collides: spheres, capsules and boxes (what the hand is made of),
+/// the object shapes (those and cylinders, ellipsoids and convex meshes) and half-spaces
+/// (floors, tables).
 ///
 /// A shape is described in its own frame S; where S is (on a body, or in Ground) is given
 /// separately, as a pose X_BS or X_GS. Conventions in S (m):
@@ -9,6 +10,10 @@
 ///  - Capsule: the points within `radius` of the segment from (0, 0, -length/2) to
 ///    (0, 0, +length/2); `length` excludes the caps, exactly as model::Geometry's capsule.
 ///  - Box: the points with |x| <= halfLengths[0], |y| <= halfLengths[1], |z| <= halfLengths[2].
+///  - Cylinder: the points with x^2 + y^2 <= radius^2 and |z| <= length/2 (flat caps).
+///  - Ellipsoid: the points with sum (x_i / semiAxes[i])^2 <= 1.
+///  - ConvexMesh: the convex polytope `polytope` (vertices and faces in S, see
+///    convex_polytope.h), shared between copies.
 ///  - HalfSpace: the points with z <= 0. Its surface is S's xy plane and its outward normal is
 ///    +z_S. A floor in graspsim's y-up Ground is X_GS = SimTK::Rotation(-SimTK::Pi/2,
 ///    SimTK::XAxis), which turns z_S into +y_G. (Simbody's ContactGeometry::HalfSpace occupies
@@ -16,8 +21,10 @@
 
 #include "graspsim/simbody.h"
 
+#include <memory>
 #include <string>
 
+#include "graspsim/contact/convex_polytope.h"
 #include "graspsim/model/model_description.h"
 
 namespace graspsim::contact {
@@ -32,13 +39,15 @@ constexpr double kDefaultBoxCornerRadius = 0.005;
 
 /// A convex contact shape in its own frame S (see the file comment for the conventions).
 struct ContactShape {
-    enum class Type { Sphere, Capsule, Box, HalfSpace };
+    enum class Type { Sphere, Capsule, Box, HalfSpace, Cylinder, Ellipsoid, ConvexMesh };
     Type type = Type::Sphere;
-    double radius = 0;  ///< Sphere, Capsule: radius (m)
-    double length = 0;  ///< Capsule: axis segment length along z_S, caps excluded (m)
+    double radius = 0;  ///< Sphere, Capsule, Cylinder: radius (m)
+    double length = 0;  ///< Capsule (caps excluded), Cylinder: length along z_S (m)
     SimTK::Vec3 halfLengths{0, 0, 0};  ///< Box: half-lengths along x_S, y_S, z_S (m)
-    double cornerRadius =
-        kDefaultBoxCornerRadius;  ///< Box: Hertz radius of its corners and edges (m)
+    SimTK::Vec3 semiAxes{0, 0, 0};     ///< Ellipsoid: semi-axes along x_S, y_S, z_S (m)
+    std::shared_ptr<const ConvexPolytope> polytope;  ///< ConvexMesh: its polytope, in S
+    /// Box, ConvexMesh: Hertz radius of corners and edges; Cylinder: of its rims (m).
+    double cornerRadius = kDefaultBoxCornerRadius;
 
     /// A sphere of the given radius (m).
     static ContactShape sphere(double radius);
@@ -49,21 +58,33 @@ struct ContactShape {
                             double cornerRadius = kDefaultBoxCornerRadius);
     /// The half-space z_S <= 0.
     static ContactShape halfSpace();
+    /// A cylinder: radius (m) and length along z_S (m), flat caps.
+    static ContactShape cylinder(double radius, double length,
+                                 double cornerRadius = kDefaultBoxCornerRadius);
+    /// An ellipsoid with semi-axes along x_S, y_S, z_S (m).
+    static ContactShape ellipsoid(const SimTK::Vec3& semiAxes);
+    /// A convex mesh (see ConvexPolytope::build()).
+    static ContactShape convexMesh(std::shared_ptr<const ConvexPolytope> polytope,
+                                   double cornerRadius = kDefaultBoxCornerRadius);
 
     /// The shape of a model geometry (its pose X_BG is not part of the shape; see
     /// findGeometryPose()).
-    /// @throws graspsim::InputError naming the geometry for a Cylinder or Mesh (no contact
-    ///         support) or for a non-positive or non-finite size.
+    /// A Mesh becomes a ConvexMesh built from geometry.mesh (ConvexPolytope::build()).
+    /// @throws graspsim::InputError naming the geometry for a non-positive or non-finite size,
+    ///         a Mesh whose triangles are not loaded (geometry.mesh null), or a mesh that is
+    ///         not closed, not convex or inside out.
     static ContactShape fromGeometry(const model::Geometry& geometry);
 
-    /// Checks sizes: radius > 0 for spheres and capsules, length >= 0 for capsules, every
-    /// half-length > 0 and cornerRadius > 0 for boxes, all finite.
+    /// Checks sizes: radius > 0 for spheres, capsules and cylinders, length >= 0 for capsules
+    /// and > 0 for cylinders, every half-length or semi-axis > 0, cornerRadius > 0 for boxes,
+    /// cylinders and meshes, a polytope for meshes, all finite.
     /// @param what names the shape for the message ("geometry 'index_distal_capsule'").
     /// @throws graspsim::InputError naming `what`, the field, its value and what is accepted.
     void validate(const std::string& what) const;
 
     /// Radius (m) of the smallest sphere about S's origin that holds the shape: the bounding
     /// sphere used to skip far-apart pairs. Infinite for a half-space.
+    /// @pre validate() passes (a ConvexMesh has its polytope).
     double calcBoundingRadius() const;
 };
 

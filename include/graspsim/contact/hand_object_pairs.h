@@ -19,8 +19,8 @@ namespace graspsim::contact {
 /// Chooses the bodies of a model description that take part.
 using BodyFilter = std::function<bool(const model::Body&)>;
 
-/// The default hand filter: bodies of anatomical segment "hand" (palm and phalanges of every
-/// hand in the model; filter by name prefix as well for one hand of a humanoid).
+/// The default hand filter: the bodies the model builder gave the palm or digit role (every hand
+/// of the model; filter by name prefix as well for one hand of a humanoid).
 bool isHandSegmentBody(const model::Body& body);
 
 /// Pairs (a = hand geometry, b = object geometry) for every geometry of every body of `hand`'s

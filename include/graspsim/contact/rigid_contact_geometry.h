@@ -14,8 +14,9 @@
 /// and the contact point are the true ones. If the inflated shapes still do not overlap, the
 /// margin is multiplied by 8 and the query repeated.
 ///
-/// Supported pairs: sphere or capsule against sphere, capsule, box or half-space (either
-/// order). Box-box and box-half-space pairs have several simultaneous contacts and are not
+/// Supported pairs: sphere or capsule against sphere, capsule, box, half-space, cylinder,
+/// ellipsoid or convex mesh (either order; the cylinder's, ellipsoid's and polytope's signed
+/// distances are exact outside too). Box-box and box-half-space pairs have several simultaneous contacts and are not
 /// supported by the rigid model (see rigid_contact.h).
 #include "graspsim/simbody.h"
 

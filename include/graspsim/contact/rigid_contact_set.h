@@ -4,8 +4,8 @@
 /// CompliantContactForce's pair list), and their reports.
 ///
 /// Each supported pair (a sphere or a capsule on one side, rigid_contact.h) becomes one
-/// RigidContact. A pair of two solids (box-box, box-half-space), which RigidContact does not
-/// take, becomes corner contacts: each of a box's 8 corners, rounded with the box's
+/// RigidContact. A pair of two solids (box-box, box-half-space, box against a cylinder,
+/// ellipsoid or convex mesh), which RigidContact does not take, becomes corner contacts: each of a box's 8 corners, rounded with the box's
 /// cornerRadius (the radius the compliant model gives box corners, contact_shape.h), is a sphere
 /// of that radius inside the corner, touching the box's three faces there, in contact with the
 /// other solid; for box-box in both directions (16 contacts). What this catches: a box face

@@ -16,7 +16,19 @@
 ///    edge, or lying across one of its faces);
 ///  - box vs half-space: each vertex below the surface.
 ///
-/// Half-space vs half-space is rejected. Cylinders and meshes have no contact support.
+///  - sphere/capsule vs cylinder, ellipsoid or convex mesh: one contact, at the core point
+///    where the solid's exact SDF is least (as for boxes);
+///  - box vs cylinder, ellipsoid or convex mesh: each box vertex inside the solid and each box
+///    edge whose deepest point inside it is interior to the edge; for a convex mesh also its
+///    vertices and edges inside the box, with the box-box edge-edge rule (so a mesh of a box
+///    gives the box's contacts); for a cylinder or ellipsoid, for each box face the solid's
+///    deepest point below it where that face is the nearest (box_object_contact.h);
+///  - cylinder, ellipsoid or convex mesh vs half-space: the mesh's vertices below the surface,
+///    the ellipsoid's lowest point, the cylinder's lowest side line (its middle when lying flat)
+///    or lower cap centre.
+///
+/// Half-space vs half-space and two of cylinder, ellipsoid, convex mesh are rejected (the hand
+/// is made of spheres, capsules and boxes). Method, choices and costs: docs/contact.md.
 ///
 /// Depth, point and normal of one contact: with the deepest core point c (or vertex, or edge
 /// point), its signed distance d to the other solid and that solid's outward normal o there,
@@ -48,7 +60,11 @@
 /// a box or half-space therefore has R = its radius (box edges and corners under a sphere are
 /// treated like the faces they bound); a box vertex or edge pressing into a face has R =
 /// ContactShape::cornerRadius (see kDefaultBoxCornerRadius); an edge-edge contact combines the
-/// two boxes' corner radii.
+/// two boxes' corner radii. Object solids: a cylinder's side has its radius (the curvature in
+/// the cross-section; its caps are flat, its rims count like the faces they bound), an
+/// ellipsoid the Gaussian-curvature radius 1/sqrt(K) at the contact point, a mesh's faces are
+/// flat and its edges and vertices pressing into a box have its cornerRadius; a cylinder's cap
+/// lying flat on a box face has the cylinder's radius.
 ///
 /// Symmetry: findContacts(b, X_GB, a, X_GA) returns the same contacts as findContacts(a, X_GA,
 /// b, X_GB) with every normal negated (box-box contacts possibly in another order).
@@ -72,7 +88,8 @@ struct ContactPoint {
 
 /// Contacts between shape `a` posed at X_GA (pose of A's shape frame in Ground) and shape `b`
 /// at X_GB. Empty when they do not overlap; touching (depth 0) is not a contact.
-/// @throws graspsim::InputError for two half-spaces.
+/// @throws graspsim::InputError for two half-spaces or two object solids (cylinder, ellipsoid,
+///         convex mesh).
 std::vector<ContactPoint> findContacts(const ContactShape& a, const SimTK::Transform& X_GA,
                                        const ContactShape& b, const SimTK::Transform& X_GB);
 
@@ -82,7 +99,8 @@ void appendContacts(const ContactShape& a, const SimTK::Transform& X_GA, const C
 
 /// Contacts between two model geometries; X_GA and X_GB are the poses of the geometry frames in
 /// Ground (the geometries' own X_BG are not used here: compose X_GA = X_GBody * X_BG yourself).
-/// @throws graspsim::InputError for a Cylinder or Mesh, or sizes ContactShape rejects.
+/// @throws graspsim::InputError for a Mesh without loaded triangles, sizes ContactShape rejects,
+///         or a pair findContacts() rejects.
 std::vector<ContactPoint> findContacts(const model::Geometry& a, const SimTK::Transform& X_GA,
                                        const model::Geometry& b, const SimTK::Transform& X_GB);
 

@@ -21,7 +21,10 @@ struct SurfacePoint {
 /// Where the nearest point is not unique (the centre of a sphere, the axis of a capsule, a point
 /// inside a box equally deep below several faces), one of them is chosen deterministically: the
 /// +z pole for a sphere's centre, the direction +x for a capsule's axis, the face of the lowest
-/// axis index among a box's equally deep faces (on the + side at a mid-plane).
+/// axis index among a box's equally deep faces (on the + side at a mid-plane), the side for a
+/// point inside a cylinder equally deep below side and cap (+x on its axis), Eberly's case order
+/// for an ellipsoid, the face of the lowest index among a convex mesh's equally deep faces.
+/// The normal is that of the surface at P (so Q - P is along it).
 SurfacePoint findSurfacePoint(const ContactShape& shape, const SimTK::Vec3& p_SQ);
 
 }  // namespace graspsim::contact

@@ -76,10 +76,22 @@ struct Geometry {
 /// "cylinder", "mesh", "ellipsoid").
 std::string toString(Geometry::Type type);
 
+/// What a body is to a grasp, as the model builder knows it (so nothing downstream has to guess
+/// it from names).
+enum class BodyRole {
+    Other,  ///< arm segments, objects, anything else
+    Palm,   ///< the palm (and the massless bodies of the wrist chain leading to it)
+    Digit   ///< a phalanx of a finger or the thumb, or a massless body of a digit's joint chain
+};
+
+/// "other", "palm" or "digit", as URDF extension files write it.
+std::string toString(BodyRole role);
+
 /// A rigid body.
 struct Body {
     std::string name;
     std::string segment;  ///< anatomical segment it belongs to (e.g. "hand", "upper_arm"); empty for objects
+    BodyRole role = BodyRole::Other;  ///< palm, digit or other (set by the builder)
     double mass = 0;      ///< kg; 0 only for virtual bodies of multi-DOF joint chains
     Vec3 p_BCm{0, 0, 0};  ///< centre of mass in the body frame (m)
     Inertia inertia;      ///< central inertia in the body frame (kg m^2)

@@ -76,7 +76,7 @@ public:
     /// The object's body; its frame O is at its centre of mass.
     const SimTK::MobilizedBody& getObject() const { return object_; }
     /// The compliant contact element; an empty handle with ContactModel::Rigid.
-    const contact::CompliantContactForce& getContacts() const { return contacts_; }
+    const contact::CompliantContactForce& getCompliantContacts() const { return contacts_; }
     ContactModel getContactModel() const { return contactModel_; }
     /// The rigid contacts; empty with ContactModel::Compliant.
     const contact::RigidContactSet& getRigidContacts() const { return rigidContacts_; }
@@ -143,6 +143,7 @@ private:
     SimTK::MobilizedBody::Free object_;
     SimTK::Constraint::Weld groundHold_;  // empty unless the object hangs from the palm
     ContactModel contactModel_ = ContactModel::Compliant;
+    std::string palmBody_;  // the body with the palm role (the builder's, not found by name)
     contact::CompliantContactForce contacts_;
     contact::RigidContactSet rigidContacts_;
     system::ImplicitJointImpedance impedance_;

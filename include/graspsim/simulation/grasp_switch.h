@@ -153,6 +153,7 @@ private:
     void release(SimTK::State& state, double quality, const std::string& reason) const;
     void setFingersMerged(SimTK::State& state, bool merged) const;
     std::string describeRelease(const SimTK::State& state, double quality) const;
+    std::string describeEngagement(const SimTK::Vec6& limits) const;
     double findVelocityJump(SimTK::State& state, const SimTK::Vec3& v_before) const;
 
     const GraspScene& scene_;
@@ -161,6 +162,7 @@ private:
     ApproxOptions options_;
     std::unique_ptr<MultiAttachmentSwitch> multi_;  // ApproxAttach::Multi: replaces the merge (c) and (d)
     std::vector<std::string> goalBodies_;  // body of each goal end-effector
+
     mutable double qThreshold_ = 0;
     mutable double qMinimum_ = 0;
     mutable SimTK::Transform X_HO_engaged_;  // object pose in the palm frame at engagement

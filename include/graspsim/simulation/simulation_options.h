@@ -2,6 +2,7 @@
 /// @file
 /// What a user chooses per simulation run, on top of the scenario.
 
+#include "graspsim/grasp/friction_limits.h"
 #include "graspsim/simulation/ramp_load.h"
 
 #include <array>
@@ -67,6 +68,9 @@ struct ApproxOptions {
     /// Opt-in, for comparing capacities: the friction limits from the scenario's STATIC friction instead of the
     /// dynamic one (the compliant contact holds until the static coefficient; docs/capacity.md).
     bool staticFrictionLimits = false;
+    /// How the constraint's limits follow from the contacts at engagement: the thesis's box
+    /// (default) or per axis from each contact's normal and position (grasp/friction_limits.h).
+    grasp::FrictionLimitModel limitModel = grasp::FrictionLimitModel::Thesis;
     /// Bound on the growth of the fingertips' penetration while engaged from the bushing's elastic
     /// deflection (m; the thesis's conclusion names fingertips sinking into the object as the
     /// approximation's visible flaw: 0.1 mm is not visible). On engagement the bushing

@@ -24,16 +24,26 @@ struct CaseSetup {
     std::vector<std::pair<std::string, std::string>> options;
 };
 
-/// The setup of `studyCase`: the study's `set:` values and the case's axis values on `base`.
+/// The texts of the study's base scenarios, in StudySpec::bases order.
+/// @throws graspsim::InputError naming a base that is neither built in nor a readable file.
+std::vector<scenario::ScenarioText> readBaseScenarios(const StudySpec& spec);
+
+/// All base scenario texts joined (what a study folder's fingerprint covers).
+std::string joinBaseTexts(const std::vector<scenario::ScenarioText>& bases);
+
+/// The setup of `studyCase`: the study's `set:` values and the case's axis values on its base
+/// (the one its "base" axis value names, or the study's only base).
+/// @param bases the texts of StudySpec::bases, in order (readBaseScenarios).
 /// @throws graspsim::InputError with the reader's or the option parser's message, prefixed by
 /// the case number, when the combination is not accepted.
-CaseSetup makeCaseSetup(const StudySpec& spec, const scenario::ScenarioText& base, const StudyCase& studyCase);
+CaseSetup makeCaseSetup(const StudySpec& spec, const std::vector<scenario::ScenarioText>& bases,
+                        const StudyCase& studyCase);
 
-/// Checks, before anything runs, that the base scenario reads, that the `set:` values are
-/// accepted, and that each axis value is accepted on its own (on a range, both ends).
+/// Checks, before anything runs, that each base scenario reads, that the `set:` values are
+/// accepted on each, and that each axis value is accepted on its own (on a range, both ends).
 /// Combinations are left to the cases (a failing case is recorded, the others run).
 /// @throws graspsim::InputError with one line naming the study file, the line, the axis or
 /// field, the value and what the reader accepts.
-void checkStudyValues(const StudySpec& spec, const scenario::ScenarioText& base);
+void checkStudyValues(const StudySpec& spec, const std::vector<scenario::ScenarioText>& bases);
 
 }  // namespace graspsim::study

@@ -43,6 +43,6 @@ struct RunReport {
 
 /// Runs every unfinished case of the shard.
 /// @throws graspsim::Error when a child process cannot be started or a case folder cannot be written.
-RunReport runStudyCases(const StudySpec& spec, const scenario::ScenarioText& base, const RunSettings& settings);
+RunReport runStudyCases(const StudySpec& spec, const std::vector<scenario::ScenarioText>& bases, const RunSettings& settings);
 
 }  // namespace graspsim::study

@@ -35,6 +35,7 @@ struct ValueRange {
 struct StudyAxis {
     std::string name;                 ///< the path or option name, as the study file writes it
     bool isRunOption = false;         ///< true for mode, contact, ... (see getRunOptionNames)
+    bool isBase = false;              ///< true for the axis "base": a list of base scenarios
     std::vector<std::string> values;  ///< YAML texts of a list axis; empty for a range axis
     bool isRange = false;             ///< true: `range` holds the values
     ValueRange range;
@@ -62,8 +63,10 @@ struct StudySpec {
     std::string name;           ///< short identifier, e.g. "stature-friction"
     std::string description;    ///< may be empty
     std::string source;         ///< the study file's path (messages, the sbatch script)
-    std::string base;           ///< built-in scenario name, or a scenario file path resolved
-                                ///< against the study file's folder
+    /// The base scenarios: built-in names, or scenario file paths resolved against the study
+    /// file's folder. One, or (`base:` given as a list) several: then the study's first axis is
+    /// "base" (isBase), whose values are the list as the file writes it, in this order.
+    std::vector<std::string> bases;
     std::vector<FixedValue> fixed;
     std::vector<StudyAxis> axes;  ///< in file order; the results table's columns
     Sampling sampling = Sampling::Grid;

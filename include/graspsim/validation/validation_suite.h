@@ -8,6 +8,7 @@
 /// bound; DIR/report.md the tables for people (validation_report.h).
 
 #include "graspsim/simulation/grasp_simulation.h"
+#include "graspsim/validation/capacity_comparison.h"
 #include "graspsim/validation/validation_checks.h"
 
 #include <functional>
@@ -20,6 +21,7 @@ namespace graspsim::validation {
 struct ValidationResults {
     std::vector<RunRecord> runs;          ///< in plan order
     std::vector<ValidationCheck> checks;  ///< in plan order
+    std::vector<CapacityRow> capacity;    ///< the capacity comparison (empty when not run)
     double wallTime = 0;                  ///< s, the whole suite
     /// True when every check passed.
     bool passed() const;

@@ -1,0 +1,51 @@
+#pragma once
+/// @file
+/// The holding-capacity comparison of `graspsim validate`: for each thesis experiment, each load
+/// (the six axis forces and the three axis torques) and each variant (full contact and the
+/// approximation's realizations and attachments), the capacity ramp of capacity/grasp_capacity.h,
+/// with the approximation's slip onset set against full contact's.
+///
+/// It is a table, not a set of pass/fail checks: where the approximation and full contact
+/// disagree is a finding (docs/capacity.md), reported with its numbers.
+
+#include "graspsim/capacity/grasp_capacity.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace graspsim::validation {
+
+/// One capacity ramp of the comparison.
+struct CapacityRow {
+    std::string experiment;  ///< "ball-clutch" or "phone-pinch"
+    std::string load;        ///< "x", "-y", ..., or "torque x", ...
+    std::string variant;     ///< "full", "approx-bushing-merged", ...
+    capacity::GraspCapacity measured;
+    bool hasReference = false;    ///< full contact's ramp of the same load was run and slipped
+    double relativeDifference = 0;  ///< (slip onset - full's) / full's, when both slipped
+};
+
+/// What to compare: the experiments and variants of the validation plan (full is always run, as
+/// the reference), and `quick`: only the −y force, and unless variants are named only the first
+/// approximation variant (bushing, merged).
+struct CapacityPlan {
+    std::vector<std::string> experiments;
+    std::vector<std::string> variants;  ///< approximation variants ("approx-..."); others are skipped
+    bool quick = false;
+};
+
+/// Called before each ramp with its index, the number of ramps, and a label ("ball-clutch -y full").
+using CapacityProgress = std::function<void(std::size_t index, std::size_t count, const std::string& label)>;
+
+/// Runs every ramp of `plan`, full contact first for each experiment and load.
+std::vector<CapacityRow> runCapacityComparison(const CapacityPlan& plan, const CapacityProgress& progress = {});
+
+/// DIR/capacity.csv: one row per ramp (slip onset, drop, release, failure, difference to full).
+std::string formatCapacityCsv(const std::vector<CapacityRow>& rows);
+
+/// The report's section: one table per experiment, loads down, variants across (slip onset,
+/// and the difference to full contact's in %).
+std::string formatCapacityMarkdown(const std::vector<CapacityRow>& rows);
+
+}  // namespace graspsim::validation
