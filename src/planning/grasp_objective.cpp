@@ -162,7 +162,7 @@ void GraspObjective::placeObjectAtStart() {
     SimTK::Rotation R_GS(makeDiagonal(1), true);  // identity: a sphere's orientation does not matter
     const contact::ContactShape& shape = m_request.shape;
     const SimTK::Rotation& R_GH = m_X_GB[m_arm.findBodyIndex("palm")].R();
-    if (shape.type == contact::ContactShape::Type::Capsule) {
+    if (shape.type == contact::ContactShape::Type::Capsule || shape.type == contact::ContactShape::Type::Cylinder) {
         // the long axis across the fingers, along the hand's radial axis z_H
         R_GS.setRotationFromOneAxis(R_GH.z(), SimTK::ZAxis);
     } else if (shape.type == contact::ContactShape::Type::Box) {

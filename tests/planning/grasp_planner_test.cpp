@@ -207,14 +207,18 @@ TEST(GraspPlanner, ThePlannedBallClutchIsNearTheThesisHandFoundOne) {
     std::cout << "ball centre " << centre * 1000 << " mm from the thesis's\n";
 }
 
-// Any contact shape plans: a capsule (a cylinder with round ends) in a medium wrap, its axis
-// across the fingers.
-TEST(GraspPlanner, ThePowerCylinderWrapsACapsule) {
+// Any contact shape plans: a capsule and a cylinder in a medium wrap, axis across the fingers.
+TEST(GraspPlanner, ThePowerCylinderWrapsACapsuleAndACylinder) {
     const model::BuildOptions body = scenario::Scenario::makeDefaultBodyOptions();
-    const GraspPlan plan = planGrasp(makeRequest(contact::ContactShape::capsule(0.02, 0.1), GraspType::PowerCylinder, body));
-    EXPECT_GT(plan.diagnostics.quality, 0);
-    EXPECT_LE(plan.diagnostics.maxPenetration, 0.001);
-    for (const GoalCheck& g : plan.diagnostics.goals) std::cout << g.effector << " " << g.gap * 1000 << " mm, " << g.misalignment * 180 / SimTK::Pi << " deg\n";
+    for (const contact::ContactShape& shape :
+         {contact::ContactShape::capsule(0.02, 0.1), contact::ContactShape::cylinder(0.02, 0.12)}) {
+        const GraspPlan plan = planGrasp(makeRequest(shape, GraspType::PowerCylinder, body));
+        EXPECT_GT(plan.diagnostics.quality, 0);
+        EXPECT_LE(plan.diagnostics.maxPenetration, 0.001);
+        for (const GoalCheck& g : plan.diagnostics.goals) {
+            std::cout << g.effector << " " << g.gap * 1000 << " mm, " << g.misalignment * 180 / SimTK::Pi << " deg\n";
+        }
+    }
 }
 
 // The phone pinch, for docs/planning.md: distances of the planned goals from the thesis's
