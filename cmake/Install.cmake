@@ -13,7 +13,7 @@ include(CMakePackageConfigHelpers)
 
 set(GRASPSIM_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/graspsim)
 set(graspsim_layers graspsim_io graspsim_anthropometry graspsim_model graspsim_system graspsim_integration
-    graspsim_contact graspsim_control graspsim_grasp graspsim_scenario graspsim_simulation graspsim_results
+    graspsim_contact graspsim_control graspsim_grasp graspsim_scenario graspsim_planning graspsim_simulation graspsim_results
     graspsim_viewer graspsim_capacity graspsim_opensim graspsim_validation graspsim_study)
 
 # graspsim::graspsim is the one library target (every layer); the layers keep their names.

@@ -2,6 +2,7 @@
 
 #include "number_option.h"
 
+#include "graspsim/planning/planned_scenario.h"
 #include "graspsim/capacity/capacity_files.h"
 #include "graspsim/capacity/load_direction.h"
 #include "graspsim/error.h"
@@ -152,7 +153,7 @@ void CapacityCommand::checkOptions() const { makePlan(); }
 int CapacityCommand::run() const {
     const Options& o = *options_;
     const Plan plan = makePlan();
-    const scenario::Scenario scenario = scenario::loadScenario(o.scenario);
+    const scenario::Scenario scenario = planning::loadScenario(o.scenario);
     simulation::checkApproxAttach(scenario, plan.simulation);
     for (const capacity::GraspCapacityRequest& r : plan.requests) capacity::checkLoadResistible(scenario, r);
     simulation::checkScenarioSetup(scenario, plan.simulation);  // before the folder exists

@@ -8,7 +8,7 @@
 namespace graspsim::cli {
 
 CommandLine::CommandLine()
-    : app_("graspsim: anthropometric grasp simulation on Simbody"), model_(app_), simulate_(app_), validate_(app_), bench_(app_), study_(app_), view_(app_), capacity_(app_) {
+    : app_("graspsim: anthropometric grasp simulation on Simbody"), model_(app_), simulate_(app_), validate_(app_), bench_(app_), study_(app_), view_(app_), capacity_(app_), grasp_(app_) {
     app_.require_subcommand(0, 1);  // none given: say which exist; unknown ones: CLI11 names them
     // Version, commit and library versions: what provenance.json records for each result.
     app_.set_version_flag("--version", [] {
@@ -28,6 +28,7 @@ void CommandLine::checkOptions() const {
     if (model_.parsed()) model_.checkOptions();
     if (study_.parsed()) study_.checkOptions();
     if (capacity_.parsed()) capacity_.checkOptions();
+    if (grasp_.parsed()) grasp_.checkOptions();
 }
 
 int CommandLine::run() const {
@@ -37,7 +38,8 @@ int CommandLine::run() const {
     if (bench_.parsed()) return bench_.run();
     if (study_.parsed()) return study_.run();
     if (capacity_.parsed()) return capacity_.run();
-    if (!model_.parsed()) throw InputError("a command is required: model, simulate, view, capacity, validate, bench or study (see graspsim --help)");
+    if (grasp_.parsed()) return grasp_.run();
+    if (!model_.parsed()) throw InputError("a command is required: model, grasp, simulate, view, capacity, validate, bench or study (see graspsim --help)");
     return model_.run();
 }
 

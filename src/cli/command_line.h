@@ -4,6 +4,7 @@
 
 #include "bench_command.h"
 #include "capacity_command.h"
+#include "grasp_command.h"
 #include "model_command.h"
 #include "simulate_command.h"
 #include "study_command.h"
@@ -41,6 +42,7 @@ private:
     StudyCommand study_;
     ViewCommand view_;
     CapacityCommand capacity_;
+    GraspCommand grasp_;
 };
 
 }  // namespace graspsim::cli

@@ -3,6 +3,7 @@
 #include "number_option.h"
 #include "progress_meter.h"
 
+#include "graspsim/planning/planned_scenario.h"
 #include "graspsim/error.h"
 #include "graspsim/opensim/opensim_storage.h"
 #include "graspsim/results/result_folder.h"
@@ -185,7 +186,7 @@ results::RunProvenance makeRunProvenance(const std::vector<std::string>& command
 int SimulateCommand::run(const std::vector<std::string>& commandLine) const {
     const Options& o = *options_;
     simulation::SimulationOptions options = parseOptions();
-    const scenario::Scenario scenario = scenario::loadScenario(o.scenario);
+    const scenario::Scenario scenario = planning::loadScenario(o.scenario);
     checkPerturbation(o.perturbation, scenario);
     options.perturbation = o.perturbation;
     simulation::checkApproxAttach(scenario, options);

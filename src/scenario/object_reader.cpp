@@ -1,5 +1,7 @@
 #include "object_reader.h"
 
+#include <optional>
+
 #include "graspsim/anthropometry/units.h"
 #include "graspsim/model/mesh_file.h"
 #include "graspsim/model/triangle_mesh.h"
@@ -100,7 +102,7 @@ void readDimensions(const YamlField& root, const YamlField& section, ObjectSpec&
 
 }  // namespace
 
-ObjectSpec readObject(const YamlField& root) {
+ObjectSpec readObject(const YamlField& root, bool planned) {
     const YamlField section = root.require(
         "object", "a scenario needs the object: shape, mass, its size fields (docs/shapes.md), position");
     section.requireMap({"shape", "mass", "radius", "size", "length", "semi_axes", "mesh", "scale", "position",
@@ -112,6 +114,14 @@ ObjectSpec readObject(const YamlField& root) {
         if (fields.shape == object.shape) rejectForeignFields(section, fields);
     }
     readDimensions(root, section, object);
+    if (planned) {  // the planner places the object
+        for (const char* key : {"position", "orientation"}) {
+            if (const std::optional<YamlField> field = section.find(key)) {
+                field->reject(std::string("the grasp planner places the object: leave out ") + key + " with grasp.type");
+            }
+        }
+        return object;
+    }
     object.position = section.getVec3("position", NumberRule::any("position", "m"));
     const model::Vec3 degrees =
         section.findVec3("orientation", NumberRule::closed("orientation", "deg", -360, 360), {0, 0, 0});

@@ -9,6 +9,8 @@
 namespace graspsim::scenario {
 
 // The object of the document `root`; a mesh path is taken relative to the scenario file.
-ObjectSpec readObject(const YamlField& root);
+// `planned` (the scenario gives grasp.type): the planner places the object, so a position or
+// orientation is refused.
+ObjectSpec readObject(const YamlField& root, bool planned);
 
 }  // namespace graspsim::scenario

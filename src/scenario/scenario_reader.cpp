@@ -68,6 +68,10 @@ void readSubject(const YamlField& root, model::BuildOptions& options) {
     }
 }
 
+void rejectIfGiven(const YamlField& section, const std::string& key, const std::string& why) {
+    if (const std::optional<YamlField> field = section.find(key)) field->reject(why);
+}
+
 std::vector<std::string> getJointNames(const model::ModelDescription& body) {
     std::vector<std::string> names;
     for (const model::Joint& joint : body.joints) {
@@ -240,9 +244,20 @@ ApproximationSpec readApproximation(const YamlField& root) {
 
 }  // namespace
 
+// `grasp: {type: power-sphere}`: the grasp type (checked by the planning layer), or "".
+std::string readGraspType(const YamlField& root) {
+    const std::optional<YamlField> section = root.find("grasp");
+    if (!section) return "";
+    section->requireMap({"type"});
+    for (const char* planned : {"grasp_pose", "goals"}) {
+        rejectIfGiven(root, planned, std::string("the grasp planner finds it: leave out ") + planned + " with grasp.type");
+    }
+    return section->require("type", "give the grasp type to plan").asText("type must be a grasp type name");
+}
+
 Scenario readScenario(const YamlField& root) {
-    root.requireMap({"name", "description", "world", "subject", "object", "grasp_pose", "goals", "perturbations",
-                     "contact", "controller", "simulation", "approximation"});
+    root.requireMap({"name", "description", "world", "subject", "object", "grasp_pose", "goals", "grasp",
+                     "perturbations", "contact", "controller", "simulation", "approximation"});
     Scenario scenario;
     scenario.source = root.getSource();
     scenario.name = root.require("name", "give the scenario a name").asText("name must be text");
@@ -251,11 +266,14 @@ Scenario readScenario(const YamlField& root) {
     }
     readWorld(root, scenario.world);
     readSubject(root, scenario.bodyOptions);
-    scenario.object = readObject(root);
-    // Joint and end-effector names are checked against the arm this scenario builds.
-    const model::ModelDescription body = model::buildBodyModel(scenario.bodyOptions);
-    scenario.graspPose = readGraspPose(root, body);
-    scenario.goals = readGoals(root, body, scenario.object);
+    scenario.graspType = readGraspType(root);
+    scenario.object = readObject(root, !scenario.graspType.empty());
+    if (scenario.graspType.empty()) {
+        // Joint and end-effector names are checked against the arm this scenario builds.
+        const model::ModelDescription body = model::buildBodyModel(scenario.bodyOptions);
+        scenario.graspPose = readGraspPose(root, body);
+        scenario.goals = readGoals(root, body, scenario.object);
+    }
     scenario.contact = readContact(root);
     scenario.controller = readController(root, scenario.object);
     scenario.simulation = readSimulation(root, scenario.controller);

@@ -190,6 +190,9 @@ struct Scenario {
     std::map<std::string, double> graspPose;
     /// Goal point of each end-effector (e.g. "index_tip") on the object's surface, in O (m).
     std::map<std::string, Vec3> goals;
+    /// `grasp: {type: ...}`: the grasp type to plan (planning/planned_scenario.h) when the file
+    /// leaves out grasp_pose, goals and the object's position and orientation; empty otherwise.
+    std::string graspType;
     std::vector<Perturbation> perturbations;
     ApproximationSpec approximation;  ///< in file order; may be empty
     ContactSpec contact;

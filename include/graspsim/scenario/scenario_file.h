@@ -6,7 +6,8 @@
 /// unit and default. Lengths are metres, masses kilograms, times seconds, forces newtons, angles
 /// DEGREES (joint angles of the grasp pose, the object's Euler angles); inside graspsim the
 /// angles are radians. Required: name, object (shape, mass, radius or size, position),
-/// grasp_pose, goals. Every other section and key is optional and falls back to the defaults of
+/// grasp_pose, goals; or, instead of grasp_pose, goals and the object's position and orientation,
+/// `grasp: {type: ...}` (Scenario::graspType), which planning/planned_scenario.h plans. Every other section and key is optional and falls back to the defaults of
 /// scenario.h.
 ///
 /// Every error is a graspsim::InputError with one line naming the file, the line, the field

@@ -1,0 +1,116 @@
+#pragma once
+/// @file
+/// Grasp planning: given a subject, an object and a grasp type, find the arm and hand joint
+/// angles, the object's placement and the fingertip goal points of a grasp.
+///
+/// Grasp types follow Feix et al. (2016), "The GRASP Taxonomy of Human Grasp Types", IEEE
+/// Trans. Human-Machine Systems 46(1):66-77 (see grasp_type.h). The method (docs/planning.md):
+///  1. The arm joints stay at a fixed posture per grasp type (the thesis's hand-found poses:
+///     ball-clutch for power grasps, phone-pinch for precision grasps); the fingers start from
+///     that pose too. So the object is within reach by construction: it is placed against the
+///     hand, wherever the hand is.
+///  2. The object starts at the point its goal pads' normals meet (least squares) and is turned
+///     so that its thinnest dimension lies along the squeeze.
+///  3. NLopt's BOBYQA (deterministic, derivative free) moves the 20 finger and thumb joints
+///     (bounded by their ranges of motion) and the object's position (and orientation, unless it
+///     is a sphere) to minimize, per goal pad, (signed distance to the surface - targetGap)^2 and
+///     the pad normal's misalignment with the inward surface normal, plus penalties for any
+///     segment within clearance of the object (contact::findContacts) and a small pull toward the
+///     start pose.
+///  4. Goals are the surface points nearest each pad (contact::findSurfacePoint). The plan is
+///     checked (PlanDiagnostics); a plan failing a check is refused with NoGraspError.
+/// The object is handled only through contact::findSurfacePoint and contact::findContacts, so
+/// every shape the contact layer knows can be planned for.
+///
+/// Frames: G Ground (the arm model's world), O the object frame (at its centre of mass), S the
+/// object's contact shape frame (X_OS, usually identity).
+
+#include "graspsim/simbody.h"
+
+#include "graspsim/contact/contact_shape.h"
+#include "graspsim/error.h"
+#include "graspsim/model/build_options.h"
+#include "graspsim/planning/grasp_type.h"
+#include "graspsim/scenario/scenario.h"
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace graspsim::planning {
+
+/// No grasp of the requested type exists for this subject and object; the message says why,
+/// with numbers ("object width 150 mm exceeds the hand's thumb-index span 118 mm"). An
+/// InputError: the CLI exits with code 2.
+class NoGraspError : public InputError {
+public:
+    explicit NoGraspError(const std::string& message) : InputError(message) {}
+};
+
+/// What to plan: whose arm, which object, which grasp.
+struct GraspRequest {
+    model::BuildOptions bodyOptions = scenario::Scenario::makeDefaultBodyOptions();  ///< subject and preset
+    contact::ContactShape shape;                ///< the object's surface, in its shape frame S
+    SimTK::Transform X_OS;                      ///< shape frame in the object frame O (usually identity)
+    GraspType type = GraspType::PowerSphere;
+    double targetGap = 0.0025;                  ///< wanted pad-to-surface distance in the plan (m), > 0
+    SimTK::Vec3 gravity{0, -9.81, 0};           ///< gravity in G (m/s^2): the pads should not push along it
+};
+
+/// One goal end-effector of a plan, as planned.
+struct GoalCheck {
+    std::string effector;     ///< e.g. "index_tip"
+    double gap = 0;           ///< signed distance of its pad point to the surface (m)
+    double misalignment = 0;  ///< angle between the pad's outward normal and the inward surface normal (rad)
+};
+
+/// How good the plan is: the numbers its checks look at.
+struct PlanDiagnostics {
+    std::vector<GoalCheck> goals;   ///< in the template's effector order
+    double maxPenetration = 0;      ///< deepest overlap of any arm or hand segment with the object (m), 0 if none
+    std::string deepestSegment;     ///< that segment's geometry name, empty if none
+    double quality = 0;             ///< Q, smallest singular value of the grasp matrix of the goal contacts (N per N)
+    bool antipodal = false;         ///< two-contact grasps: the contact line inside both friction cones
+    double objectWidth = 0;         ///< the object's thinnest width (m)
+    double handSpan = 0;            ///< the hand's span for this grasp type (m)
+    int evaluations = 0;            ///< objective evaluations the optimizer used
+    double cost = 0;                ///< final objective value (dimensionless)
+};
+
+/// A planned grasp. Angles in rad, lengths in m.
+struct GraspPlan {
+    GraspType type = GraspType::PowerSphere;
+    std::map<std::string, double> jointAngles;   ///< every arm and hand joint of the model (rad)
+    SimTK::Transform X_GO;                       ///< object pose in G at t = 0
+    std::vector<std::string> goalEffectors;      ///< thumb first, then index to little
+    std::map<std::string, SimTK::Vec3> goals;    ///< goal point on the surface per effector, in O (m)
+    double kp = 5;                               ///< suggested finger PD gain (N m/rad)
+    PlanDiagnostics diagnostics;
+};
+
+/// Plan-check thresholds (m, rad).
+struct PlanTolerances {
+    double minGap = 0.0;          ///< pads must not be inside the object
+    double maxGap = 0.005;        ///< "within a few mm of the surface"
+    double maxMisalignment = 1.134; ///< pad facing the surface: within 65 deg (the thesis's hand-found ball clutch, which holds, has 62)
+    double maxPenetration = 0.001;///< no segment deeper than 1 mm in the object
+};
+
+/// Plans the grasp. Deterministic: the same request gives the same plan, bit for bit.
+/// @throws NoGraspError when the object does not fit the hand for this type, or the best pose
+///         found fails a check (the message names the check and its numbers).
+/// @throws InputError for an invalid shape or subject.
+GraspPlan planGrasp(const GraspRequest& request, const PlanTolerances& tolerances = {});
+
+/// The object of a scenario as the planner's shape: the object body's (only) geometry.
+/// @throws InputError if the contact layer has no shape for it.
+GraspRequest makeGraspRequest(const scenario::Scenario& scenario, GraspType type);
+
+/// Re-evaluates a plan's numbers (gaps, misalignments, penetration, Q) for joint angles, object
+/// pose and goal effectors as they stand, e.g. after rounding.
+PlanDiagnostics calcPlanDiagnostics(const GraspRequest& request, const GraspPlan& plan);
+
+/// The first failed check of `diagnostics`, as one line with its numbers, or "" if all pass.
+std::string findFailedCheck(const PlanDiagnostics& diagnostics, const PlanTolerances& tolerances);
+
+}  // namespace graspsim::planning

@@ -1,0 +1,123 @@
+#include "grasp_command.h"
+
+#include "number_option.h"
+
+#include "graspsim/anthropometry/sex.h"
+#include "graspsim/anthropometry/subject.h"
+#include "graspsim/error.h"
+#include "graspsim/io/atomic_file.h"
+#include "graspsim/planning/planned_scenario.h"
+
+#include <iostream>
+#include <sstream>
+
+namespace graspsim::cli {
+
+struct GraspCommand::Options {
+    std::string sex = "male", mass, stature, preset = "thesis";
+    std::string object, type = "power-sphere", output, name;
+};
+
+GraspCommand::GraspCommand(CLI::App& app) : options_(std::make_shared<Options>()) {
+    grasp_ = app.add_subcommand("grasp", "Plan grasps");
+    grasp_->require_subcommand(0, 1);
+    Options& o = *options_;
+    plan_ = grasp_->add_subcommand("plan", "Plan a grasp (pose, object placement, goals) and write it as a scenario file");
+    plan_->add_option("--sex", o.sex, "male or female (default male)");
+    plan_->add_option("--mass", o.mass, "body mass in kg, 20 to 250 (default: de Leva reference subject)");
+    plan_->add_option("--stature", o.stature, "stature in m, 1.0 to 2.5 (default: de Leva reference subject)");
+    plan_->add_option("--preset", o.preset, "thesis (default: finger segments 20 g, palm 250 g, arm 5.45 kg) or none");
+    plan_->add_option("--object", o.object,
+                      "the object: sphere:radius=R,mass=M or box:size=XxYxZ,mass=M (m, kg)")->required();
+    plan_->add_option("--type", o.type, "power-sphere (default), pinch, tripod, power-cylinder or lateral");
+    plan_->add_option("--name", o.name, "the scenario's name (default planned-<type>)");
+    plan_->add_option("-o,--output", o.output, "scenario file to write")->required();
+}
+
+namespace {
+
+std::vector<std::string> split(const std::string& text, char separator) {
+    std::vector<std::string> parts;
+    std::istringstream in(text);
+    for (std::string part; std::getline(in, part, separator);) parts.push_back(part);
+    return parts;
+}
+
+// "--object sphere:radius=0.045,mass=0.2" or "box:size=0.07x0.14x0.008,mass=0.1".
+scenario::ObjectSpec parseObject(const std::string& text) {
+    const std::string accepted = "accepted: sphere:radius=R,mass=M or box:size=XxYxZ,mass=M (m, kg, each > 0)";
+    const size_t colon = text.find(':');
+    scenario::ObjectSpec object;
+    const std::string shape = text.substr(0, colon);
+    if (shape != "sphere" && shape != "box") throw InputError("--object: shape '" + shape + "' is not known; " + accepted);
+    object.shape = shape == "sphere" ? scenario::ObjectShape::Sphere : scenario::ObjectShape::Box;
+    const std::string fields = colon == std::string::npos ? "" : text.substr(colon + 1);
+    for (const std::string& field : split(fields, ',')) {
+        const size_t equals = field.find('=');
+        const std::string key = field.substr(0, equals), value = equals == std::string::npos ? "" : field.substr(equals + 1);
+        auto positive = [&](const std::string& v) {
+            const double x = parseNumber(v, "--object " + key, accepted);
+            if (!(x > 0) || !std::isfinite(x)) throw InputError("--object " + key + ": value '" + v + "' is not accepted; " + accepted);
+            return x;
+        };
+        if (key == "mass") {
+            object.mass = positive(value);
+        } else if (key == "radius" && shape == "sphere") {
+            object.radius = positive(value);
+        } else if (key == "size" && shape == "box" && split(value, 'x').size() == 3) {
+            const std::vector<std::string> sizes = split(value, 'x');
+            for (int i = 0; i < 3; ++i) object.size[i] = positive(sizes[i]);
+        } else {
+            throw InputError("--object: field '" + field + "' is not accepted; " + accepted);
+        }
+    }
+    if (object.mass <= 0 || (shape == "sphere" ? object.radius <= 0 : object.size[0] <= 0)) {
+        throw InputError("--object '" + text + "' lacks a size or mass; " + accepted);
+    }
+    return object;
+}
+
+model::BuildOptions parseSubject(const std::string& sex, const std::string& mass, const std::string& stature,
+                                 const std::string& preset) {
+    model::BuildOptions options = scenario::Scenario::makeDefaultBodyOptions();
+    options.subject = anthropometry::getReferenceSubject(anthropometry::parseSex(sex, "--sex"));
+    if (!mass.empty()) options.subject.mass = parseNumber(mass, "--mass", "body mass must be a number in [20, 250] kg");
+    if (!stature.empty()) {
+        options.subject.stature = parseNumber(stature, "--stature", "stature must be a number in [1.0, 2.5] m");
+    }
+    anthropometry::validateBodyMass(options.subject.mass, "--mass");
+    anthropometry::validateStature(options.subject.stature, "--stature");
+    options.preset = model::parsePreset(preset, "--preset");
+    return options;
+}
+
+}  // namespace
+
+bool GraspCommand::parsed() const { return grasp_->parsed(); }
+
+void GraspCommand::checkOptions() const {
+    const Options& o = *options_;
+    if (!plan_->parsed()) return;
+    parseSubject(o.sex, o.mass, o.stature, o.preset);
+    parseObject(o.object);
+    planning::parseGraspType(o.type, "--type");
+}
+
+int GraspCommand::run() const {
+    const Options& o = *options_;
+    if (!plan_->parsed()) throw InputError("grasp: a subcommand is required: plan (see graspsim grasp --help)");
+    const planning::GraspType type = planning::parseGraspType(o.type, "--type");
+    scenario::Scenario base;
+    base.name = o.name.empty() ? "planned-" + o.type : o.name;
+    base.description = "A " + o.type + " grasp planned by graspsim grasp plan.";
+    base.bodyOptions = parseSubject(o.sex, o.mass, o.stature, o.preset);
+    base.object = parseObject(o.object);
+    const planning::GraspPlan plan = planning::planGrasp(planning::makeGraspRequest(base, type));
+    const scenario::Scenario planned = planning::applyPlan(base, plan);
+    io::writeFileAtomically(o.output, planning::formatPlannedScenario(planned, plan));
+    std::cout << "wrote " << o.output << ": " << o.type << " grasp, deepest segment "
+              << plan.diagnostics.maxPenetration * 1000 << " mm, Q " << plan.diagnostics.quality << "\n";
+    return 0;
+}
+
+}  // namespace graspsim::cli

@@ -1,0 +1,70 @@
+#include "graspsim/planning/planned_scenario.h"
+
+#include "graspsim/scenario/scenario_file.h"
+#include "graspsim/scenario/scenario_writer.h"
+
+#include <cstdio>
+#include <sstream>
+
+namespace graspsim::planning {
+
+scenario::Scenario applyPlan(const scenario::Scenario& base, const GraspPlan& plan) {
+    scenario::Scenario s = base;
+    s.graspPose.clear();
+    for (const auto& [joint, angle] : plan.jointAngles) {
+        if (angle != 0) s.graspPose[joint] = angle;  // the file lists only the joints that move
+    }
+    s.goals.clear();
+    for (const auto& [effector, p_OP] : plan.goals) s.goals[effector] = {p_OP[0], p_OP[1], p_OP[2]};
+    const SimTK::Vec3 xyz = plan.X_GO.R().convertRotationToBodyFixedXYZ();
+    s.object.position = {plan.X_GO.p()[0], plan.X_GO.p()[1], plan.X_GO.p()[2]};
+    s.object.orientation = {xyz[0], xyz[1], xyz[2]};
+    s.controller.kp = plan.kp;
+    return s;
+}
+
+scenario::Scenario planScenario(const scenario::Scenario& base, GraspType type) {
+    return applyPlan(base, planGrasp(makeGraspRequest(base, type)));
+}
+
+void completeScenario(scenario::Scenario& scenario) {
+    if (scenario.graspType.empty()) return;
+    const GraspType type = parseGraspType(scenario.graspType, scenario.source + ": field 'grasp.type'");
+    try {
+        const double kp = scenario.controller.kp;  // the file's (or the default) gain stays
+        scenario = planScenario(scenario, type);
+        scenario.controller.kp = kp;
+    } catch (const NoGraspError& e) {
+        throw NoGraspError(scenario.source + ": " + e.what());
+    }
+    scenario.graspType.clear();
+}
+
+scenario::Scenario loadScenario(const std::string& nameOrPath) {
+    scenario::Scenario scenario = scenario::loadScenario(nameOrPath);
+    completeScenario(scenario);
+    return scenario;
+}
+
+std::string formatPlannedScenario(const scenario::Scenario& planned, const GraspPlan& plan) {
+    const PlanDiagnostics& d = plan.diagnostics;
+    std::ostringstream header;
+    char line[200];
+    header << "Planned by graspsim grasp plan: grasp type " << toString(plan.type)
+           << " (Feix et al. 2016, The GRASP Taxonomy of Human Grasp Types).\n";
+    std::snprintf(line, sizeof line, "Object width %.1f mm, hand span %.1f mm; deepest segment %.2f mm%s%s.\n",
+                  d.objectWidth * 1000, d.handSpan * 1000, d.maxPenetration * 1000,
+                  d.deepestSegment.empty() ? "" : " (", d.deepestSegment.empty() ? "" : (d.deepestSegment + ")").c_str());
+    header << line;
+    for (const GoalCheck& g : d.goals) {
+        std::snprintf(line, sizeof line, "  %s pad %.2f mm off the surface, facing it within %.0f deg\n",
+                      g.effector.c_str(), g.gap * 1000, g.misalignment * 180 / SimTK::Pi);
+        header << line;
+    }
+    std::snprintf(line, sizeof line, "Grasp quality Q = %.3g (smallest singular value, unit normal forces)%s.",
+                  d.quality, d.goals.size() == 2 ? (d.antipodal ? "; antipodal" : "; not antipodal") : "");
+    header << line;
+    return scenario::formatScenarioYaml(planned, header.str());
+}
+
+}  // namespace graspsim::planning

@@ -1,0 +1,78 @@
+// Scenarios that ask for a grasp type: read, planned when loaded, and written back as complete
+// scenarios. Oracle: the planned scenario's goals lie on the object's surface (ObjectSpec's
+// closed-form distance) and the written text reads back to the same pose and goals.
+
+#include "graspsim/planning/planned_scenario.h"
+
+#include "graspsim/error.h"
+#include "graspsim/scenario/scenario_file.h"
+#include "graspsim/scenario/scenario_writer.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace graspsim;
+
+namespace {
+
+const char* kPlannedBall = R"(name: small-woman-ball
+subject: {sex: female, mass: 50, stature: 1.52}
+object: {shape: sphere, mass: 0.2, radius: 0.045}
+grasp: {type: power-sphere}
+)";
+
+}  // namespace
+
+TEST(PlannedScenario, AGraspTypeIsPlannedWhenTheScenarioIsCompleted) {
+    scenario::Scenario s = scenario::parseScenario(kPlannedBall, "ball.yaml");
+    EXPECT_EQ(s.graspType, "power-sphere");
+    EXPECT_TRUE(s.graspPose.empty());
+    planning::completeScenario(s);
+    EXPECT_TRUE(s.graspType.empty());
+    EXPECT_EQ(s.goals.size(), 5u);
+    EXPECT_FALSE(s.graspPose.empty());
+    for (const auto& [effector, goal] : s.goals) EXPECT_LT(std::abs(s.object.calcSurfaceDistance(goal)), 2e-4) << effector;
+    EXPECT_EQ(s.controller.kp, scenario::ControllerSpec{}.kp);  // the file's gain stays
+    // the completed scenario is an ordinary one: written and read back, the same pose and goals
+    const scenario::Scenario reread = scenario::parseScenario(scenario::formatScenarioYaml(s), "resolved.yaml");
+    ASSERT_EQ(reread.graspPose.size(), s.graspPose.size());
+    for (const auto& [joint, angle] : s.graspPose) EXPECT_NEAR(reread.graspPose.at(joint), angle, 1e-12) << joint;
+    for (const auto& [effector, goal] : s.goals) EXPECT_NEAR(reread.goals.at(effector)[0], goal[0], 1e-15) << effector;
+}
+
+TEST(PlannedScenario, AScenarioWithAPoseIsLeftAsItIs) {
+    scenario::Scenario s = scenario::findBuiltinScenario("ball-clutch");
+    const scenario::Scenario before = s;
+    planning::completeScenario(s);
+    EXPECT_EQ(s.graspPose, before.graspPose);
+    EXPECT_EQ(s.object.position, before.object.position);
+}
+
+TEST(PlannedScenario, AGraspTypeWithAPoseOrPlacementIsRefused) {
+    const std::string base = kPlannedBall;
+    for (const std::string& extra : {std::string("grasp_pose: {elbow_flexion: 90}\n"),
+                                     std::string("goals: {index_tip: [0.045, 0, 0]}\n")}) {
+        EXPECT_THROW(scenario::parseScenario(base + extra, "ball.yaml"), InputError) << extra;
+    }
+    std::string placed = base;
+    placed.replace(placed.find("radius: 0.045}"), 14, "radius: 0.045, position: [0.4, -0.2, 0]}");
+    try {
+        scenario::parseScenario(placed, "ball.yaml");
+        FAIL() << "accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("object.position"), std::string::npos) << e.what();
+    }
+}
+
+TEST(PlannedScenario, AnUnknownGraspTypeNamesTheFileAndField) {
+    std::string text = kPlannedBall;
+    text.replace(text.find("power-sphere"), 12, "power_sphere");
+    scenario::Scenario s = scenario::parseScenario(text, "ball.yaml");
+    try {
+        planning::completeScenario(s);
+        FAIL() << "planned";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("ball.yaml: field 'grasp.type' value 'power_sphere'"), std::string::npos) << e.what();
+    }
+}
