@@ -8,6 +8,8 @@
 #include "graspsim/io/atomic_file.h"
 #include "graspsim/planning/planned_scenario.h"
 
+#include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <sstream>
 
@@ -45,12 +47,19 @@ std::vector<std::string> split(const std::string& text, char separator) {
 
 // "--object sphere:radius=0.045,mass=0.2" or "box:size=0.07x0.14x0.008,mass=0.1".
 scenario::ObjectSpec parseObject(const std::string& text) {
-    const std::string accepted = "accepted: sphere:radius=R,mass=M or box:size=XxYxZ,mass=M (m, kg, each > 0)";
+    const std::string accepted = "accepted: sphere:radius=R,mass=M, box:size=XxYxZ,mass=M, cylinder:radius=R,length=L,mass=M, "
+                                 "capsule:radius=R,length=L,mass=M or ellipsoid:semi_axes=AxBxC,mass=M (m, kg, each > 0)";
     const size_t colon = text.find(':');
     scenario::ObjectSpec object;
     const std::string shape = text.substr(0, colon);
-    if (shape != "sphere" && shape != "box") throw InputError("--object: shape '" + shape + "' is not known; " + accepted);
-    object.shape = shape == "sphere" ? scenario::ObjectShape::Sphere : scenario::ObjectShape::Box;
+    const std::vector<std::pair<std::string, scenario::ObjectShape>> shapes{
+        {"sphere", scenario::ObjectShape::Sphere}, {"box", scenario::ObjectShape::Box}, {"cylinder", scenario::ObjectShape::Cylinder},
+        {"capsule", scenario::ObjectShape::Capsule}, {"ellipsoid", scenario::ObjectShape::Ellipsoid}};
+    const auto known = std::find_if(shapes.begin(), shapes.end(), [&](const auto& s) { return s.first == shape; });
+    if (known == shapes.end()) throw InputError("--object: shape '" + shape + "' is not known; " + accepted);
+    object.shape = known->second;
+    const bool round = shape == "sphere" || shape == "cylinder" || shape == "capsule";
+    const bool elongated = shape == "cylinder" || shape == "capsule";
     const std::string fields = colon == std::string::npos ? "" : text.substr(colon + 1);
     for (const std::string& field : split(fields, ',')) {
         const size_t equals = field.find('=');
@@ -60,20 +69,24 @@ scenario::ObjectSpec parseObject(const std::string& text) {
             if (!(x > 0) || !std::isfinite(x)) throw InputError("--object " + key + ": value '" + v + "' is not accepted; " + accepted);
             return x;
         };
+        const std::vector<std::string> triple = split(value, 'x');
         if (key == "mass") {
             object.mass = positive(value);
-        } else if (key == "radius" && shape == "sphere") {
+        } else if (key == "radius" && round) {
             object.radius = positive(value);
-        } else if (key == "size" && shape == "box" && split(value, 'x').size() == 3) {
-            const std::vector<std::string> sizes = split(value, 'x');
-            for (int i = 0; i < 3; ++i) object.size[i] = positive(sizes[i]);
+        } else if (key == "length" && elongated) {
+            object.length = positive(value);
+        } else if (key == "size" && shape == "box" && triple.size() == 3) {
+            for (int i = 0; i < 3; ++i) object.size[i] = positive(triple[i]);
+        } else if (key == "semi_axes" && shape == "ellipsoid" && triple.size() == 3) {
+            for (int i = 0; i < 3; ++i) object.semiAxes[i] = positive(triple[i]);
         } else {
             throw InputError("--object: field '" + field + "' is not accepted; " + accepted);
         }
     }
-    if (object.mass <= 0 || (shape == "sphere" ? object.radius <= 0 : object.size[0] <= 0)) {
-        throw InputError("--object '" + text + "' lacks a size or mass; " + accepted);
-    }
+    const bool sized = shape == "box" ? object.size[0] > 0 : shape == "ellipsoid" ? object.semiAxes[0] > 0
+                                                                                   : object.radius > 0 && (!elongated || object.length > 0);
+    if (object.mass <= 0 || !sized) throw InputError("--object '" + text + "' lacks a size or mass; " + accepted);
     return object;
 }
 

@@ -23,6 +23,15 @@ TEST_F(GraspCommand, ThePlanIsAScenarioWrittenTheSameEachTime) {
     }
 }
 
+// A cylinder from the command line: the plan is a scenario whose object is that cylinder.
+TEST_F(GraspCommand, PowerCylinderOnACylinderObject) {
+    const RunResult r = run("grasp plan --object cylinder:radius=0.02,length=0.12,mass=0.2 --type power-cylinder -o " +
+                            (dir_ / "c.yaml").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const std::string text = graspsim::testing::slurp(dir_ / "c.yaml");
+    for (const char* part : {"shape: cylinder", "length: 0.12", "grasp_pose:", "goals:"}) EXPECT_NE(text.find(part), std::string::npos) << part << text;
+}
+
 TEST_F(GraspCommand, NoGraspIsOneLineWithTheNumbers) {
     expectBadInput("grasp plan --object sphere:radius=0.075,mass=0.2 --type pinch -o " + output(),
                    {"no pinch grasp", "object width 150 mm", "thumb-index span"});
@@ -31,7 +40,9 @@ TEST_F(GraspCommand, NoGraspIsOneLineWithTheNumbers) {
 }
 
 TEST_F(GraspCommand, BadInputNamesTheOptionAndValue) {
-    expectBadInput("grasp plan --object cylinder:radius=0.02,mass=0.2 -o " + output(), {"--object", "'cylinder'"});
+    expectBadInput("grasp plan --object cone:radius=0.02,mass=0.2 -o " + output(), {"--object", "'cone'"});
+    expectBadInput("grasp plan --object cylinder:radius=0.02,mass=0.2 -o " + output(), {"--object", "lacks a size"});
+    expectBadInput("grasp plan --object ellipsoid:semi_axes=0.02x0.03,mass=0.2 -o " + output(), {"--object", "semi_axes"});
     expectBadInput("grasp plan --object sphere:radius=-0.02,mass=0.2 -o " + output(), {"--object radius", "'-0.02'"});
     expectBadInput("grasp plan --object sphere:radius=0.02 -o " + output(), {"--object", "mass"});
     expectBadInput("grasp plan --object sphere:radius=0.02,mass=0.2 --type fist -o " + output(), {"--type", "'fist'"});
