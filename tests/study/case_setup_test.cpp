@@ -109,3 +109,16 @@ TEST(CaseSetup, EachCaseStartsFromTheBaseItsBaseAxisNames) {
         EXPECT_EQ(parsed.bodyOptions.subject.stature, expectedStature[c]) << c;
     }
 }
+
+// The shipped grasp-types study: four planned bases, each with the four subjects' sections.
+TEST(CaseSetup, ShippedGraspTypesStudyIsAccepted) {
+    const StudySpec spec = loadStudyFile(std::string(GRASPSIM_SOURCE_DIR) + "/models/studies/grasp-types.yaml");
+    ASSERT_EQ(spec.bases.size(), 4u);
+    const std::vector<scenario::ScenarioText> bases = readBaseScenarios(spec);
+    EXPECT_NO_THROW(checkStudyValues(spec, bases));
+    const std::vector<StudyCase> cases = expandCases(spec);
+    ASSERT_EQ(cases.size(), 32u);
+    const scenario::Scenario last = scenario::parseScenario(makeCaseSetup(spec, bases, cases.back()).scenarioYaml, "case");
+    EXPECT_EQ(last.graspType, "power-cylinder");
+    EXPECT_EQ(last.bodyOptions.subject.stature, 1.90);
+}
