@@ -53,7 +53,7 @@ struct GraspRequest {
     contact::ContactShape shape;                ///< the object's surface, in its shape frame S
     SimTK::Transform X_OS;                      ///< shape frame in the object frame O (usually identity)
     GraspType type = GraspType::PowerSphere;
-    double targetGap = 0.0025;                  ///< wanted pad-to-surface distance in the plan (m), > 0
+    double targetGap = 0.0015;                  ///< wanted pad-to-surface distance in the plan (m), > 0
     SimTK::Vec3 gravity{0, -9.81, 0};           ///< gravity in G (m/s^2): the pads should not push along it
 };
 
