@@ -166,6 +166,18 @@ TEST(ObjectShapeContact, FingertipOnAMeshFaceIsFlat) {
     expectHertzForce(mesh, face, 0.002, kTip);
 }
 
+TEST(ObjectShapeContact, FingertipOnAMeshEdgeAndCorner) {
+    const ContactShape mesh = test::makeMeshShape(test::makeBoxMesh(kPhone));
+    // Outside the edge x = hx, z = hz: distance 5 mm along (3, 0, 4)/5; an edge counts like the
+    // faces it bounds (the fingertip's radius alone).
+    const Vec3 edge(kPhone[0] + 0.003, 0.01, kPhone[2] + 0.004);
+    expectFingertipContact(mesh, edge, kTip - 0.005, Vec3(0.6, 0, 0.8), kTip);
+    // Outside the corner (+, +, +) along (1, 2, 2)/3, 6 mm away.
+    const Vec3 corner = kPhone + Vec3(0.002, 0.004, 0.004);
+    expectFingertipContact(mesh, corner, kTip - 0.006, Vec3(1, 2, 2) / 3, kTip);
+    expectMirrored(ContactShape::sphere(kTip), Transform(X_GO * corner), mesh, X_GO);
+}
+
 // Random sphere and capsule probes near the box give the same contact against its 12-triangle
 // mesh as against the analytic box.
 TEST(ObjectShapeContact, MeshOfABoxEqualsTheBoxForSweptProbes) {
@@ -311,6 +323,53 @@ TEST(ObjectShapeContact, PalmBoxFaceOnEllipsoidPole) {
     ASSERT_EQ(corner.size(), 1u);
     EXPECT_NEAR(corner[0].depth, 0.001, 1e-12);
     EXPECT_NEAR(corner[0].radius, combine(0.005, b * c / a), 1e-15);
+}
+
+// A capsule object (already a swept sphere) lying on the palm face along the palm's x: one
+// contact at the middle of the flat stretch, the capsule's radius.
+TEST(ObjectShapeContact, CapsuleObjectOnThePalm) {
+    const ContactShape palm = ContactShape::box(Vec3(0.04, 0.05, 0.01));
+    const ContactShape bottle = ContactShape::capsule(0.025, 0.06);
+    const Transform X_OB(Rotation(SimTK::Pi / 2, SimTK::YAxis), Vec3(0.01, 0, 0.01 + 0.025 - 0.002));
+    const std::vector<ContactPoint> contacts = findContacts(palm, X_GO, bottle, X_GO * X_OB);
+    ASSERT_EQ(contacts.size(), 1u);
+    EXPECT_NEAR(contacts[0].depth, 0.002, 1e-12);
+    // The flat stretch is the part of the axis over the palm, x in [-0.02, 0.04]: middle 0.01.
+    EXPECT_LE((contacts[0].p_G - X_GO * Vec3(0.01, 0, 0.009)).norm(), 1e-9);
+    EXPECT_LE((contacts[0].n_G.asVec3() - X_GO.R() * Vec3(0, 0, 1)).norm(), 1e-12);
+    EXPECT_NEAR(contacts[0].radius, 0.025, 1e-15);
+    expectMirrored(palm, X_GO, bottle, X_GO * X_OB);
+}
+
+// Random poses of every hand shape against every object shape: contacts have positive depth,
+// unit normals, finite points and radii, and the two argument orders agree.
+TEST(ObjectShapeContact, RandomPosesGiveSaneMirroredContacts) {
+    const ContactShape hands[] = {ContactShape::sphere(kTip), ContactShape::capsule(0.009, 0.045),
+                                  ContactShape::box(Vec3(0.04, 0.05, 0.01))};
+    const ContactShape objects[] = {kCylinder, kEllipsoid, test::makeMeshShape(test::makeBoxMesh(kPhone)),
+                                    test::makeMeshShape(test::makeCylinderMesh(0.03, 0.1, 12))};
+    std::mt19937 random(8);
+    std::uniform_real_distribution<double> coordinate(-0.07, 0.07), angle(-SimTK::Pi, SimTK::Pi);
+    int contactCount = 0;
+    for (const ContactShape& hand : hands) {
+        for (const ContactShape& object : objects) {
+            for (int i = 0; i < 60; ++i) {
+                const Transform X_GH(Rotation(SimTK::BodyRotationSequence, angle(random), SimTK::XAxis,
+                                              angle(random), SimTK::YAxis, angle(random), SimTK::ZAxis),
+                                     X_GO * Vec3(coordinate(random), coordinate(random), coordinate(random)));
+                const std::vector<ContactPoint> contacts = findContacts(hand, X_GH, object, X_GO);
+                for (const ContactPoint& c : contacts) {
+                    EXPECT_GT(c.depth, 0);
+                    EXPECT_NEAR(c.n_G.asVec3().norm(), 1, 1e-12);
+                    EXPECT_TRUE(c.p_G.isFinite());
+                    EXPECT_TRUE(std::isfinite(c.radius) && c.radius > 0);
+                }
+                contactCount += static_cast<int>(contacts.size());
+                if (!contacts.empty()) expectMirrored(hand, X_GH, object, X_GO);
+            }
+        }
+    }
+    EXPECT_GT(contactCount, 200);
 }
 
 // ---- integrated: a fingertip resting on each object ------------------------------------
