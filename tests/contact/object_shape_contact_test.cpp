@@ -415,6 +415,44 @@ TEST(ObjectShapeContact, FingertipRestsOnEachObjectAtTheStaticHertzDepth) {
                                     kPhone[2], SimTK::Infinity);
 }
 
+// A 300 g object on a vertical Slider resting under gravity on a fixed palm box (top face at
+// y = 0): it settles where its contacts, all at the same depth x, carry its weight:
+// m g = (4/3) E* x^(3/2) sum_i sqrt(R_i).
+void expectObjectSettlesOnThePalm(const ContactShape& object, const SimTK::Rotation& R_GO, double bottom,
+                                  const std::vector<double>& radii) {
+    constexpr double kMass = 0.3, kG = 9.81;
+    test::Scene scene;
+    SimTK::Force::Gravity gravity(scene.forces, scene.matter, Vec3(0, -kG, 0));
+    SimTK::MobilizedBody::Slider body = scene.addSlider(SimTK::YAxis, kMass, 0.03);
+    const ContactMaterial material = test::makeMaterial(kEStar, 20);
+    const ContactShape palm = ContactShape::box(Vec3(0.04, 0.01, 0.05));  // thin along y
+    CompliantContactForce force(
+        scene.forces, {{{scene.matter.updGround(), "ground", "palm", palm, Transform(Vec3(0, -0.01, 0)), material},
+                        {body, "object", "object", object, Transform(R_GO, Vec3(0)), material}}});
+    SimTK::State state = scene.system.realizeTopology();
+    body.setOneQ(state, 0, bottom);  // touching, at rest
+    SimTK::RungeKuttaMersonIntegrator integrator(scene.system);
+    integrator.setAccuracy(1e-8);
+    SimTK::TimeStepper stepper(scene.system, integrator);
+    stepper.initialize(state);
+    stepper.stepTo(0.3);
+    double sumRoots = 0;
+    for (double r : radii) sumRoots += std::sqrt(r);
+    const double expected = std::pow(3 * kMass * kG / (4 * kEStar * sumRoots), 2.0 / 3.0);
+    EXPECT_NEAR(bottom - body.getOneQ(integrator.getState(), 0), expected, 0.01 * expected);
+    EXPECT_EQ(force.findContactReports(integrator.getState()).size(), radii.size());
+}
+
+TEST(ObjectShapeContact, ObjectsRestOnThePalmAtTheStaticHertzDepth) {
+    // Cylinder along x, longer than the palm: its side line's middle (radius 0.03) and the two
+    // palm edges along z crossing it (corner radius with the cylinder's).
+    expectObjectSettlesOnThePalm(ContactShape::cylinder(0.03, 0.2), Rotation(SimTK::Pi / 2, SimTK::YAxis),
+                                 0.03, {0.03, combine(0.005, 0.03), combine(0.005, 0.03)});
+    // Ellipsoid with its c axis down (z onto y): the pole, Gaussian radius a b / c.
+    expectObjectSettlesOnThePalm(kEllipsoid, Rotation(-SimTK::Pi / 2, SimTK::XAxis), kSemiAxes[2],
+                                 {kSemiAxes[0] * kSemiAxes[1] / kSemiAxes[2]});
+}
+
 // ---- half-space, rejected pairs, rigid geometry -----------------------------------------
 
 TEST(ObjectShapeContact, ObjectsOnAFloor) {
