@@ -375,10 +375,10 @@ TEST(ObjectShapeContact, RandomPosesGiveSaneMirroredContacts) {
 // ---- integrated: a fingertip resting on each object ------------------------------------
 
 // A 50 g fingertip sphere on a vertical Slider, resting under gravity on `object` fixed in
-// Ground with its top surface point at y = top and the surface's Hertz radius R there. Damped,
+// Ground at X_GS with its top surface point at y = top and the surface's Hertz radius R there. Damped,
 // it settles where the Hertz force carries its weight: depth (3 m g / (4 E* sqrt(R')))^(2/3)
 // with R' the fingertip's radius combined with R.
-void expectSettlesAtStaticHertzDepth(const ContactShape& object, const Transform& X_GO, double top,
+void expectSettlesAtStaticHertzDepth(const ContactShape& object, const Transform& X_GS, double top,
                                      double objectRadius) {
     constexpr double kMass = 0.05, kG = 9.81;
     test::Scene scene;
@@ -387,7 +387,7 @@ void expectSettlesAtStaticHertzDepth(const ContactShape& object, const Transform
     const ContactMaterial material = test::makeMaterial(kEStar, 20);
     CompliantContactForce force(
         scene.forces, {{test::makeSurface(tip, "tip", ContactShape::sphere(kTip), material),
-                        {scene.matter.updGround(), "ground", "object", object, X_GO, material}}});
+                        {scene.matter.updGround(), "ground", "object", object, X_GS, material}}});
     SimTK::State state = scene.system.realizeTopology();
     tip.setOneQ(state, 0, top + kTip);  // touching, at rest
     SimTK::RungeKuttaMersonIntegrator integrator(scene.system);
