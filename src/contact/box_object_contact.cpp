@@ -31,9 +31,54 @@ struct PenetratedSurface {
     EdgeLine edge;
 };
 
+// Whether the segment e0..e1 meets the convex region {x : dot(n_k, x) <= offset_k for all k}
+// (Cyrus-Beck clipping). Planes are given by a callback plane(k, n, offset).
+template <class Plane>
+bool clipsPlanes(int count, const Plane& plane, const SimTK::Vec3& e0, const SimTK::Vec3& e1) {
+    double tIn = 0, tOut = 1;
+    const SimTK::Vec3 d = e1 - e0;
+    for (int k = 0; k < count; ++k) {
+        SimTK::Vec3 n;
+        double offset = 0;
+        plane(k, n, offset);
+        const double gap = offset - SimTK::dot(n, e0), rate = SimTK::dot(n, d);
+        if (rate == 0) {
+            if (gap < 0) return false;
+            continue;
+        }
+        const double t = gap / rate;
+        (rate < 0 ? tIn : tOut) = rate < 0 ? std::max(tIn, t) : std::min(tOut, t);
+        if (tIn > tOut) return false;
+    }
+    return true;
+}
+
+// Whether the segment meets the ellipsoid: in coordinates scaled by 1/e it meets the unit ball.
+bool meetsEllipsoid(const SimTK::Vec3& e, const SimTK::Vec3& e0, const SimTK::Vec3& e1) {
+    const SimTK::Vec3 p(e0[0] / e[0], e0[1] / e[1], e0[2] / e[2]);
+    const SimTK::Vec3 d((e1[0] - e0[0]) / e[0], (e1[1] - e0[1]) / e[1], (e1[2] - e0[2]) / e[2]);
+    const double a = SimTK::dot(d, d), b = SimTK::dot(p, d), c = SimTK::dot(p, p) - 1;
+    if (c <= 0) return true;  // e0 inside
+    const double discriminant = b * b - a * c;
+    if (discriminant < 0 || a == 0) return false;
+    const double tEnter = (-b - std::sqrt(discriminant)) / a;  // the first crossing
+    return tEnter <= 1 && tEnter + 2 * std::sqrt(discriminant) / a >= 0;
+}
+
 // The box as the penetrated solid.
 struct PenetratedBox {
     const ContactShape& shape;
+    bool meetsSegment(const SimTK::Vec3& e0, const SimTK::Vec3& e1) const {
+        const SimTK::Vec3& h = shape.halfLengths;
+        return clipsPlanes(
+            6,
+            [&](int k, SimTK::Vec3& n, double& offset) {
+                n = SimTK::Vec3(0);
+                n[k / 2] = k % 2 ? 1 : -1;
+                offset = h[k / 2];
+            },
+            e0, e1);
+    }
     double calcDistance(const SimTK::Vec3& p) const { return calcBoxSignedDistance(shape.halfLengths, p); }
     PenetratedSurface findSurface(const SimTK::Vec3& p) const {
         const BoxSurfacePoint b = findBoxSurface(shape.halfLengths, p);
@@ -57,6 +102,20 @@ struct PenetratedBox {
 // A cylinder, ellipsoid or convex mesh as the penetrated solid.
 struct PenetratedObject {
     const ContactShape& shape;
+    // A cheap exact test that spares the line search for edges that do not enter the solid
+    // (the cylinder's SDF is cheap enough without).
+    bool meetsSegment(const SimTK::Vec3& e0, const SimTK::Vec3& e1) const {
+        if (shape.type == ContactShape::Type::Ellipsoid) return meetsEllipsoid(shape.semiAxes, e0, e1);
+        if (shape.type != ContactShape::Type::ConvexMesh) return true;
+        const std::vector<ConvexPolytope::Face>& faces = shape.polytope->getFaces();
+        return clipsPlanes(
+            static_cast<int>(faces.size()),
+            [&](int k, SimTK::Vec3& n, double& offset) {
+                n = faces[k].normal.asVec3();
+                offset = faces[k].offset;
+            },
+            e0, e1);
+    }
     double calcDistance(const SimTK::Vec3& p) const { return calcObjectSignedDistance(shape, p); }
     PenetratedSurface findSurface(const SimTK::Vec3& p) const {
         const ObjectSurface o = findObjectSurface(shape, p);
@@ -157,8 +216,8 @@ struct FeaturePass {
         for (std::size_t index = 0; index < p.edges.size(); ++index) {
             const SimTK::Vec3 e0 = X_QP * p.edges[index].first, e1 = X_QP * p.edges[index].second;
             const SimTK::Vec3 d = e1 - e0;
-            // 1-Lipschitz bound: the SDF's minimum along the edge is at least this.
-            if (0.5 * (q.calcDistance(e0) + q.calcDistance(e1) - d.norm()) >= 0) continue;
+            // Only an edge entering Q can have its deepest point inside.
+            if (!q.meetsSegment(e0, e1)) continue;
             const auto distance = [&](double t) { return q.calcDistance(e0 + t * d); };
             const ArgminInterval deepest = findConvexArgminInterval(distance, kFlatTolerance);
             if (deepest.lower <= 0 || deepest.upper >= 1) continue;  // a vertex, counted apart

@@ -5,6 +5,7 @@
 #include <map>
 #include <numeric>
 #include <sstream>
+#include <tuple>
 #include <utility>
 
 #include "graspsim/error.h"
@@ -109,32 +110,26 @@ SimTK::Vec3 findClosestPointOnTriangle(const SimTK::Vec3& p, const SimTK::Vec3& 
     return a + (vb * denominator) * ab + (vc * denominator) * ac;
 }
 
-}  // namespace
+// The welded mesh, checked closed and consistently oriented, with what each step below needs.
+struct WeldedMesh {
+    std::vector<SimTK::Vec3> vertices;
+    std::vector<std::array<int, 3>> triangles;
+    std::map<std::pair<int, int>, std::array<int, 2>> edgeTriangles;
+    double size = 0;  // twice the largest vertex distance from the origin (m)
+    std::string what;
+};
 
-std::shared_ptr<const ConvexPolytope> ConvexPolytope::build(const model::TriangleMesh& mesh,
-                                                            const std::string& what) {
-    auto [vertices, triangles] = weldVertices(mesh, what);
-    if (vertices.size() < 4 || triangles.size() < 4) {
-        throwBadMesh(what, "has " + std::to_string(vertices.size()) + " distinct vertices and " +
-                               std::to_string(triangles.size()) +
-                               " triangles; a closed solid needs at least 4 of each");
-    }
-    auto polytope = std::make_shared<ConvexPolytope>();
-    for (const SimTK::Vec3& v : vertices) {
-        polytope->boundingRadius_ = std::max(polytope->boundingRadius_, v.norm());
-    }
-    const double size = 2 * polytope->boundingRadius_;
-    const auto edgeTriangles = findEdgeTriangles(triangles, what);
-
-    // Triangle normals, areas and the enclosed volume.
+// Each triangle's area-weighted normal; throws for a degenerate triangle or a mesh that does not
+// enclose a positive volume (inside out).
+std::vector<SimTK::Vec3> calcTriangleNormals(const WeldedMesh& m) {
     std::vector<SimTK::Vec3> normals;
     double volume = 0;
-    for (std::size_t t = 0; t < triangles.size(); ++t) {
-        const SimTK::Vec3 &a = vertices[triangles[t][0]], &b = vertices[triangles[t][1]],
-                          &c = vertices[triangles[t][2]];
+    for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+        const SimTK::Vec3 &a = m.vertices[m.triangles[t][0]], &b = m.vertices[m.triangles[t][1]],
+                          &c = m.vertices[m.triangles[t][2]];
         const SimTK::Vec3 n = SimTK::cross(b - a, c - a);
-        if (!(n.norm() > 1e-12 * size * size)) {
-            throwBadMesh(what, "triangle " + std::to_string(t) + " is degenerate (zero area)");
+        if (!(n.norm() > 1e-12 * m.size * m.size)) {
+            throwBadMesh(m.what, "triangle " + std::to_string(t) + " is degenerate (zero area)");
         }
         normals.push_back(n);
         volume += SimTK::dot(a, SimTK::cross(b, c)) / 6;
@@ -144,93 +139,127 @@ std::shared_ptr<const ConvexPolytope> ConvexPolytope::build(const model::Triangl
         message << "encloses volume " << volume
                 << " m^3; its triangles must wind counter-clockwise seen from outside (are the "
                    "normals inverted?)";
-        throwBadMesh(what, message.str());
+        throwBadMesh(m.what, message.str());
     }
+    return normals;
+}
 
-    // Coplanar neighbours form one face: on a convex solid every plane meets it in one face.
-    std::vector<int> parent(triangles.size());
+// Groups coplanar neighbouring triangles into faces (on a convex solid every plane meets it in
+// one face); each face takes the plane of its largest triangle (exact for axis-aligned meshes).
+// Returns the face of each triangle and appends the faces.
+std::vector<int> groupFaces(const WeldedMesh& m, const std::vector<SimTK::Vec3>& normals,
+                            std::vector<ConvexPolytope::Face>& faces) {
+    std::vector<int> parent(m.triangles.size());
     std::iota(parent.begin(), parent.end(), 0);
     const auto isCoplanar = [&](int s, int t) {
         const SimTK::Vec3 ns = normals[s] / normals[s].norm(), nt = normals[t] / normals[t].norm();
-        return SimTK::dot(ns, nt) > 1 - 1e-12 &&
-               std::abs(SimTK::dot(ns, vertices[triangles[t][0]] - vertices[triangles[s][0]])) <=
-                   1e-12 * size;
+        const SimTK::Vec3 between = m.vertices[m.triangles[t][0]] - m.vertices[m.triangles[s][0]];
+        return SimTK::dot(ns, nt) > 1 - 1e-12 && std::abs(SimTK::dot(ns, between)) <= 1e-12 * m.size;
     };
-    for (const auto& [edge, sides] : edgeTriangles) {
-        if (isCoplanar(sides[0], sides[1])) {
-            parent[findRoot(parent, sides[0])] = findRoot(parent, sides[1]);
-        }
+    for (const auto& [edge, sides] : m.edgeTriangles) {
+        if (isCoplanar(sides[0], sides[1])) parent[findRoot(parent, sides[0])] = findRoot(parent, sides[1]);
     }
-    // Each face takes the plane of its largest triangle (exact for axis-aligned meshes).
     std::map<int, int> faceOfRoot, largestOfRoot;
-    for (std::size_t t = 0; t < triangles.size(); ++t) {
-        const int root = findRoot(parent, static_cast<int>(t));
-        auto [it, added] = largestOfRoot.emplace(root, static_cast<int>(t));
+    for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+        auto [it, added] = largestOfRoot.emplace(findRoot(parent, static_cast<int>(t)), static_cast<int>(t));
         if (!added && normals[t].norm() > normals[it->second].norm()) it->second = static_cast<int>(t);
     }
     for (const auto& [root, largest] : largestOfRoot) {
-        Face face;
+        ConvexPolytope::Face face;
         face.normal = SimTK::UnitVec3(normals[largest]);
-        face.offset = SimTK::dot(face.normal, vertices[triangles[largest][0]]);
-        faceOfRoot[root] = static_cast<int>(polytope->faces_.size());
-        polytope->faces_.push_back(face);
+        face.offset = SimTK::dot(face.normal, m.vertices[m.triangles[largest][0]]);
+        faceOfRoot[root] = static_cast<int>(faces.size());
+        faces.push_back(face);
     }
-    std::vector<int> faceOfTriangle(triangles.size());
-    for (std::size_t t = 0; t < triangles.size(); ++t) {
+    std::vector<int> faceOfTriangle(m.triangles.size());
+    for (std::size_t t = 0; t < m.triangles.size(); ++t) {
         faceOfTriangle[t] = faceOfRoot[findRoot(parent, static_cast<int>(t))];
-        polytope->triangles_.push_back(
-            {{vertices[triangles[t][0]], vertices[triangles[t][1]], vertices[triangles[t][2]]},
-             faceOfTriangle[t]});
     }
+    return faceOfTriangle;
+}
 
-    // Triangles grouped by face, so that a distance query visits only faces it is above.
-    std::stable_sort(polytope->triangles_.begin(), polytope->triangles_.end(),
-                     [](const Triangle& a, const Triangle& b) { return a.face < b.face; });
-    polytope->firstTriangle_.assign(polytope->faces_.size() + 1, 0);
-    for (const Triangle& t : polytope->triangles_) ++polytope->firstTriangle_[t.face + 1];
-    for (std::size_t f = 0; f < polytope->faces_.size(); ++f) {
-        polytope->firstTriangle_[f + 1] += polytope->firstTriangle_[f];
-    }
-
-    // Convexity: no vertex above any face plane.
-    for (std::size_t f = 0; f < polytope->faces_.size(); ++f) {
-        const Face& face = polytope->faces_[f];
-        for (std::size_t v = 0; v < vertices.size(); ++v) {
-            const double above = SimTK::dot(face.normal, vertices[v]) - face.offset;
-            if (above > 1e-9 * size) {
+// Throws if a vertex lies above a face plane by more than 1e-9 of the mesh size.
+void checkConvex(const WeldedMesh& m, const std::vector<ConvexPolytope::Face>& faces) {
+    for (const ConvexPolytope::Face& face : faces) {
+        for (std::size_t v = 0; v < m.vertices.size(); ++v) {
+            const double above = SimTK::dot(face.normal, m.vertices[v]) - face.offset;
+            if (above > 1e-9 * m.size) {
                 std::ostringstream message;
                 message << "is not convex (vertex " << v << " lies " << above
                         << " m above the plane of a face); use its convex hull";
-                throwBadMesh(what, message.str());
+                throwBadMesh(m.what, message.str());
             }
         }
     }
+}
 
-    // Edges between faces of different planes; vertices where three or more planes meet.
-    std::vector<std::vector<int>> facesAtVertex(vertices.size());
-    for (std::size_t t = 0; t < triangles.size(); ++t) {
-        for (int k = 0; k < 3; ++k) facesAtVertex[triangles[t][k]].push_back(faceOfTriangle[t]);
+// For each welded vertex, whether three or more face planes meet there (a polytope vertex).
+std::vector<bool> findCorners(const WeldedMesh& m, const std::vector<int>& faceOfTriangle) {
+    std::vector<std::vector<int>> facesAtVertex(m.vertices.size());
+    for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+        for (int k = 0; k < 3; ++k) facesAtVertex[m.triangles[t][k]].push_back(faceOfTriangle[t]);
     }
-    std::vector<int> newIndex(vertices.size(), -1);
-    for (std::size_t v = 0; v < vertices.size(); ++v) {
+    std::vector<bool> corner(m.vertices.size());
+    for (std::size_t v = 0; v < m.vertices.size(); ++v) {
         std::vector<int>& faces = facesAtVertex[v];
         std::sort(faces.begin(), faces.end());
-        faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
-        if (faces.size() >= 3) {
-            newIndex[v] = static_cast<int>(polytope->vertices_.size());
-            polytope->vertices_.push_back(vertices[v]);
-        }
+        corner[v] = std::unique(faces.begin(), faces.end()) - faces.begin() >= 3;
     }
-    for (const auto& [edge, sides] : edgeTriangles) {
+    return corner;
+}
+
+}  // namespace
+
+std::shared_ptr<const ConvexPolytope> ConvexPolytope::build(const model::TriangleMesh& mesh,
+                                                            const std::string& what) {
+    WeldedMesh m;
+    std::tie(m.vertices, m.triangles) = weldVertices(mesh, what);
+    m.what = what;
+    if (m.vertices.size() < 4 || m.triangles.size() < 4) {
+        throwBadMesh(what, "has " + std::to_string(m.vertices.size()) + " distinct vertices and " +
+                               std::to_string(m.triangles.size()) +
+                               " triangles; a closed solid needs at least 4 of each");
+    }
+    auto polytope = std::make_shared<ConvexPolytope>();
+    for (const SimTK::Vec3& v : m.vertices) {
+        polytope->boundingRadius_ = std::max(polytope->boundingRadius_, v.norm());
+    }
+    m.size = 2 * polytope->boundingRadius_;
+    m.edgeTriangles = findEdgeTriangles(m.triangles, what);
+    const std::vector<int> faceOfTriangle = groupFaces(m, calcTriangleNormals(m), polytope->faces_);
+    checkConvex(m, polytope->faces_);
+    for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+        const std::array<int, 3>& i = m.triangles[t];
+        polytope->triangles_.push_back(
+            {{m.vertices[i[0]], m.vertices[i[1]], m.vertices[i[2]]}, faceOfTriangle[t]});
+    }
+    polytope->indexTrianglesByFace();
+    // Edges between faces of different planes, between polytope vertices. An edge end where
+    // only two planes meet (a vertex splitting a straight edge) is not a polytope vertex; such
+    // edge pieces are left out.
+    const std::vector<bool> corner = findCorners(m, faceOfTriangle);
+    std::vector<int> newIndex(m.vertices.size(), -1);
+    for (std::size_t v = 0; v < m.vertices.size(); ++v) {
+        if (!corner[v]) continue;
+        newIndex[v] = static_cast<int>(polytope->vertices_.size());
+        polytope->vertices_.push_back(m.vertices[v]);
+    }
+    for (const auto& [edge, sides] : m.edgeTriangles) {
         const int f0 = faceOfTriangle[sides[0]], f1 = faceOfTriangle[sides[1]];
-        if (f0 == f1) continue;
-        // An edge end where only two planes meet (a vertex splitting a straight edge) is not a
-        // polytope vertex; such edges are kept whole only between polytope vertices.
-        if (newIndex[edge.first] < 0 || newIndex[edge.second] < 0) continue;
+        if (f0 == f1 || newIndex[edge.first] < 0 || newIndex[edge.second] < 0) continue;
         polytope->edges_.push_back(
             {newIndex[edge.first], newIndex[edge.second], std::min(f0, f1), std::max(f0, f1)});
     }
     return polytope;
+}
+
+void ConvexPolytope::indexTrianglesByFace() {
+    // Grouped by face, so that a distance query visits only the faces it is above.
+    std::stable_sort(triangles_.begin(), triangles_.end(),
+                     [](const Triangle& a, const Triangle& b) { return a.face < b.face; });
+    firstTriangle_.assign(faces_.size() + 1, 0);
+    for (const Triangle& t : triangles_) ++firstTriangle_[t.face + 1];
+    for (std::size_t f = 0; f < faces_.size(); ++f) firstTriangle_[f + 1] += firstTriangle_[f];
 }
 
 int ConvexPolytope::findEdge(int f0, int f1) const {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <utility>
 
 namespace graspsim::contact {
 
@@ -124,7 +125,9 @@ EllipsoidSurfacePoint findEllipsoidSurfacePoint(const SimTK::Vec3& e, const SimT
     // Sort the axes by decreasing semi-axis (stable, so equal axes keep their order) and fold
     // the query into the positive octant; the answer is unfolded the same way.
     std::array<int, 3> order{0, 1, 2};
-    std::stable_sort(order.begin(), order.end(), [&](int i, int j) { return e[i] > e[j]; });
+    for (int i = 1; i < 3; ++i) {  // insertion sort: stable, and no allocation in the hot path
+        for (int j = i; j > 0 && e[order[j]] > e[order[j - 1]]; --j) std::swap(order[j], order[j - 1]);
+    }
     double es[3], ys[3], xs[3];
     for (int k = 0; k < 3; ++k) {
         es[k] = e[order[k]];

@@ -34,11 +34,13 @@ void appendSweptObjectContact(const SweptSphere& swept, const ContactShape& soli
     const SimTK::Vec3 c0_S = ~X_GS * swept.p0_G, c1_S = ~X_GS * swept.p1_G;
     const double sweptBound = swept.radius + 0.5 * (c1_S - c0_S).norm();
     if ((0.5 * (c0_S + c1_S)).norm() >= sweptBound + solid.calcBoundingRadius()) return;
-    // The SDF changes by at most 1 m per m, so its minimum along the core is at least
-    // (f(0) + f(1) - length) / 2: most near misses need no line search.
-    const double f0 = calcObjectSignedDistance(solid, c0_S);
-    const double f1 = calcObjectSignedDistance(solid, c1_S);
-    if (0.5 * (f0 + f1 - (c1_S - c0_S).norm()) >= swept.radius) return;
+    if (c0_S != c1_S) {
+        // The SDF changes by at most 1 m per m, so its minimum along the core is at least
+        // (f(0) + f(1) - length) / 2: most near misses need no line search.
+        const double f0 = calcObjectSignedDistance(solid, c0_S);
+        const double f1 = calcObjectSignedDistance(solid, c1_S);
+        if (0.5 * (f0 + f1 - (c1_S - c0_S).norm()) >= swept.radius) return;
+    }
     const SimTK::Vec3 core_S = findDeepestObjectCorePoint(c0_S, c1_S, solid);
     const ObjectSurface surface = findObjectSurface(solid, core_S);
     if (surface.distance >= swept.radius) return;

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -106,6 +107,35 @@ TEST(HandObjectPairs, BadObjectChoicesAreRejected) {
     ContactMaterial bad;
     bad.staticFriction = -1;
     EXPECT_THROW(makeHandObjectPairs(model, isHandSegmentBody, "ball", bad, m), InputError);
+}
+
+// Every object shape makes a pair with every hand geometry; a mesh's polytope is built once
+// and shared by all its pairs.
+TEST(HandObjectPairs, ObjectsOfEveryShapeMakePairsWithTheHand) {
+    const struct {
+        model::Geometry::Type type;
+        ContactShape::Type shape;
+    } cases[] = {{model::Geometry::Type::Cylinder, ContactShape::Type::Cylinder},
+                 {model::Geometry::Type::Ellipsoid, ContactShape::Type::Ellipsoid},
+                 {model::Geometry::Type::Mesh, ContactShape::Type::ConvexMesh},
+                 {model::Geometry::Type::Capsule, ContactShape::Type::Capsule}};
+    for (const auto& c : cases) {
+        model::ModelDescription description = makeHandWithBall();
+        model::Geometry& geometry = description.updBody("ball")->geometry[0];
+        geometry.type = c.type;
+        geometry.semiAxes = {0.03, 0.02, 0.01};
+        model::TriangleMesh tetrahedron;
+        tetrahedron.vertices = {{0, 0, 0}, {0.02, 0, 0}, {0, 0.02, 0}, {0, 0, 0.02}};
+        tetrahedron.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+        geometry.mesh = std::make_shared<model::TriangleMesh>(tetrahedron);
+        const system::MultibodyModel model(description);
+        const std::vector<ContactPair> pairs = makeHandObjectPairs(model, isHandSegmentBody, "ball", {}, {});
+        ASSERT_EQ(pairs.size(), 3u);  // two palm boxes and the finger capsule
+        for (const ContactPair& pair : pairs) {
+            EXPECT_EQ(pair.b.shape.type, c.shape);
+            EXPECT_EQ(pair.b.shape.polytope, pairs[0].b.shape.polytope);
+        }
+    }
 }
 
 TEST(HandObjectPairs, UnloadedMeshGeometryIsRejectedNamingBodyAndGeometry) {

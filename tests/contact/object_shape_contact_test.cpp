@@ -166,6 +166,18 @@ TEST(ObjectShapeContact, FingertipOnAMeshFaceIsFlat) {
     expectHertzForce(mesh, face, 0.002, kTip);
 }
 
+TEST(ObjectShapeContact, FingertipOnAMeshEdgeAndCorner) {
+    const ContactShape mesh = test::makeMeshShape(test::makeBoxMesh(kPhone));
+    // Outside the edge x = hx, z = hz: distance 5 mm along (3, 0, 4)/5; an edge counts like the
+    // faces it bounds (the fingertip's radius alone).
+    const Vec3 edge(kPhone[0] + 0.003, 0.01, kPhone[2] + 0.004);
+    expectFingertipContact(mesh, edge, kTip - 0.005, Vec3(0.6, 0, 0.8), kTip);
+    // Outside the corner (+, +, +) along (1, 2, 2)/3, 6 mm away.
+    const Vec3 corner = kPhone + Vec3(0.002, 0.004, 0.004);
+    expectFingertipContact(mesh, corner, kTip - 0.006, Vec3(1, 2, 2) / 3, kTip);
+    expectMirrored(ContactShape::sphere(kTip), Transform(X_GO * corner), mesh, X_GO);
+}
+
 // Random sphere and capsule probes near the box give the same contact against its 12-triangle
 // mesh as against the analytic box.
 TEST(ObjectShapeContact, MeshOfABoxEqualsTheBoxForSweptProbes) {
@@ -313,13 +325,60 @@ TEST(ObjectShapeContact, PalmBoxFaceOnEllipsoidPole) {
     EXPECT_NEAR(corner[0].radius, combine(0.005, b * c / a), 1e-15);
 }
 
+// A capsule object (already a swept sphere) lying on the palm face along the palm's x: one
+// contact at the middle of the flat stretch, the capsule's radius.
+TEST(ObjectShapeContact, CapsuleObjectOnThePalm) {
+    const ContactShape palm = ContactShape::box(Vec3(0.04, 0.05, 0.01));
+    const ContactShape bottle = ContactShape::capsule(0.025, 0.06);
+    const Transform X_OB(Rotation(SimTK::Pi / 2, SimTK::YAxis), Vec3(0.01, 0, 0.01 + 0.025 - 0.002));
+    const std::vector<ContactPoint> contacts = findContacts(palm, X_GO, bottle, X_GO * X_OB);
+    ASSERT_EQ(contacts.size(), 1u);
+    EXPECT_NEAR(contacts[0].depth, 0.002, 1e-12);
+    // The flat stretch is the part of the axis over the palm, x in [-0.02, 0.04]: middle 0.01.
+    EXPECT_LE((contacts[0].p_G - X_GO * Vec3(0.01, 0, 0.009)).norm(), 1e-9);
+    EXPECT_LE((contacts[0].n_G.asVec3() - X_GO.R() * Vec3(0, 0, 1)).norm(), 1e-12);
+    EXPECT_NEAR(contacts[0].radius, 0.025, 1e-15);
+    expectMirrored(palm, X_GO, bottle, X_GO * X_OB);
+}
+
+// Random poses of every hand shape against every object shape: contacts have positive depth,
+// unit normals, finite points and radii, and the two argument orders agree.
+TEST(ObjectShapeContact, RandomPosesGiveSaneMirroredContacts) {
+    const ContactShape hands[] = {ContactShape::sphere(kTip), ContactShape::capsule(0.009, 0.045),
+                                  ContactShape::box(Vec3(0.04, 0.05, 0.01))};
+    const ContactShape objects[] = {kCylinder, kEllipsoid, test::makeMeshShape(test::makeBoxMesh(kPhone)),
+                                    test::makeMeshShape(test::makeCylinderMesh(0.03, 0.1, 12))};
+    std::mt19937 random(8);
+    std::uniform_real_distribution<double> coordinate(-0.07, 0.07), angle(-SimTK::Pi, SimTK::Pi);
+    int contactCount = 0;
+    for (const ContactShape& hand : hands) {
+        for (const ContactShape& object : objects) {
+            for (int i = 0; i < 60; ++i) {
+                const Transform X_GH(Rotation(SimTK::BodyRotationSequence, angle(random), SimTK::XAxis,
+                                              angle(random), SimTK::YAxis, angle(random), SimTK::ZAxis),
+                                     X_GO * Vec3(coordinate(random), coordinate(random), coordinate(random)));
+                const std::vector<ContactPoint> contacts = findContacts(hand, X_GH, object, X_GO);
+                for (const ContactPoint& c : contacts) {
+                    EXPECT_GT(c.depth, 0);
+                    EXPECT_NEAR(c.n_G.asVec3().norm(), 1, 1e-12);
+                    EXPECT_TRUE(c.p_G.isFinite());
+                    EXPECT_TRUE(std::isfinite(c.radius) && c.radius > 0);
+                }
+                contactCount += static_cast<int>(contacts.size());
+                if (!contacts.empty()) expectMirrored(hand, X_GH, object, X_GO);
+            }
+        }
+    }
+    EXPECT_GT(contactCount, 200);
+}
+
 // ---- integrated: a fingertip resting on each object ------------------------------------
 
 // A 50 g fingertip sphere on a vertical Slider, resting under gravity on `object` fixed in
-// Ground with its top surface point at y = top and the surface's Hertz radius R there. Damped,
+// Ground at X_GS with its top surface point at y = top and the surface's Hertz radius R there. Damped,
 // it settles where the Hertz force carries its weight: depth (3 m g / (4 E* sqrt(R')))^(2/3)
 // with R' the fingertip's radius combined with R.
-void expectSettlesAtStaticHertzDepth(const ContactShape& object, const Transform& X_GO, double top,
+void expectSettlesAtStaticHertzDepth(const ContactShape& object, const Transform& X_GS, double top,
                                      double objectRadius) {
     constexpr double kMass = 0.05, kG = 9.81;
     test::Scene scene;
@@ -328,7 +387,7 @@ void expectSettlesAtStaticHertzDepth(const ContactShape& object, const Transform
     const ContactMaterial material = test::makeMaterial(kEStar, 20);
     CompliantContactForce force(
         scene.forces, {{test::makeSurface(tip, "tip", ContactShape::sphere(kTip), material),
-                        {scene.matter.updGround(), "ground", "object", object, X_GO, material}}});
+                        {scene.matter.updGround(), "ground", "object", object, X_GS, material}}});
     SimTK::State state = scene.system.realizeTopology();
     tip.setOneQ(state, 0, top + kTip);  // touching, at rest
     SimTK::RungeKuttaMersonIntegrator integrator(scene.system);
@@ -354,6 +413,44 @@ TEST(ObjectShapeContact, FingertipRestsOnEachObjectAtTheStaticHertzDepth) {
     expectSettlesAtStaticHertzDepth(test::makeMeshShape(test::makeBoxMesh(kPhone)),
                                     Transform(Rotation(-SimTK::Pi / 2, SimTK::XAxis), Vec3(0.005, 0, 0.01)),
                                     kPhone[2], SimTK::Infinity);
+}
+
+// A 300 g object on a vertical Slider resting under gravity on a fixed palm box (top face at
+// y = 0): it settles where its contacts, all at the same depth x, carry its weight:
+// m g = (4/3) E* x^(3/2) sum_i sqrt(R_i).
+void expectObjectSettlesOnThePalm(const ContactShape& object, const SimTK::Rotation& R_GO, double bottom,
+                                  const std::vector<double>& radii) {
+    constexpr double kMass = 0.3, kG = 9.81;
+    test::Scene scene;
+    SimTK::Force::Gravity gravity(scene.forces, scene.matter, Vec3(0, -kG, 0));
+    SimTK::MobilizedBody::Slider body = scene.addSlider(SimTK::YAxis, kMass, 0.03);
+    const ContactMaterial material = test::makeMaterial(kEStar, 20);
+    const ContactShape palm = ContactShape::box(Vec3(0.04, 0.01, 0.05));  // thin along y
+    CompliantContactForce force(
+        scene.forces, {{{scene.matter.updGround(), "ground", "palm", palm, Transform(Vec3(0, -0.01, 0)), material},
+                        {body, "object", "object", object, Transform(R_GO, Vec3(0)), material}}});
+    SimTK::State state = scene.system.realizeTopology();
+    body.setOneQ(state, 0, bottom);  // touching, at rest
+    SimTK::RungeKuttaMersonIntegrator integrator(scene.system);
+    integrator.setAccuracy(1e-8);
+    SimTK::TimeStepper stepper(scene.system, integrator);
+    stepper.initialize(state);
+    stepper.stepTo(0.3);
+    double sumRoots = 0;
+    for (double r : radii) sumRoots += std::sqrt(r);
+    const double expected = std::pow(3 * kMass * kG / (4 * kEStar * sumRoots), 2.0 / 3.0);
+    EXPECT_NEAR(bottom - body.getOneQ(integrator.getState(), 0), expected, 0.01 * expected);
+    EXPECT_EQ(force.findContactReports(integrator.getState()).size(), radii.size());
+}
+
+TEST(ObjectShapeContact, ObjectsRestOnThePalmAtTheStaticHertzDepth) {
+    // Cylinder along x, longer than the palm: its side line's middle (radius 0.03) and the two
+    // palm edges along z crossing it (corner radius with the cylinder's).
+    expectObjectSettlesOnThePalm(ContactShape::cylinder(0.03, 0.2), Rotation(SimTK::Pi / 2, SimTK::YAxis),
+                                 0.03, {0.03, combine(0.005, 0.03), combine(0.005, 0.03)});
+    // Ellipsoid with its c axis down (z onto y): the pole, Gaussian radius a b / c.
+    expectObjectSettlesOnThePalm(kEllipsoid, Rotation(-SimTK::Pi / 2, SimTK::XAxis), kSemiAxes[2],
+                                 {kSemiAxes[0] * kSemiAxes[1] / kSemiAxes[2]});
 }
 
 // ---- half-space, rejected pairs, rigid geometry -----------------------------------------

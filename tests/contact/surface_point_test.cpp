@@ -67,6 +67,8 @@ TEST(SurfacePoint, RandomPointsAreConsistentForTheObjectShapes) {
         ContactShape::ellipsoid(SimTK::Vec3(0.04, 0.03, 0.02)),
         ContactShape::ellipsoid(SimTK::Vec3(0.03, 0.05, 0.03)),  // a spheroid: equal axes
         ContactShape::ellipsoid(SimTK::Vec3(0.03, 0.03, 0.03)),  // a sphere
+        ContactShape::ellipsoid(SimTK::Vec3(0.06, 0.05, 0.002)),  // a thin lens
+        ContactShape::ellipsoid(SimTK::Vec3(0.002, 0.003, 0.07)),  // a needle
         test::makeMeshShape(test::makeBoxMesh(SimTK::Vec3(0.035, 0.07, 0.004))),
         test::makeMeshShape(test::makeCylinderMesh(0.03, 0.1, 24))};
     for (const ContactShape& shape : shapes) {

@@ -69,7 +69,9 @@ struct ContactShape {
 
     /// The shape of a model geometry (its pose X_BG is not part of the shape; see
     /// findGeometryPose()).
-    /// A Mesh becomes a ConvexMesh built from geometry.mesh (ConvexPolytope::build()).
+    /// A Mesh becomes a ConvexMesh built from geometry.mesh (ConvexPolytope::build(), which
+    /// checks and indexes the whole mesh: build the shape once and copy it, copies share the
+    /// polytope, rather than calling this in a loop).
     /// @throws graspsim::InputError naming the geometry for a non-positive or non-finite size,
     ///         a Mesh whose triangles are not loaded (geometry.mesh null), or a mesh that is
     ///         not closed, not convex or inside out.

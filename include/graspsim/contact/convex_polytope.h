@@ -82,6 +82,7 @@ public:
     Surface findSurface(const SimTK::Vec3& p_S) const;
 
 private:
+    void indexTrianglesByFace();
     // Euclidean distance from an outside point to the nearest triangle, and that point.
     double findOutsideDistance(const SimTK::Vec3& p_S, SimTK::Vec3* nearest) const;
 
