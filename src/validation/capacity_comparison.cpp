@@ -1,10 +1,10 @@
 #include "graspsim/validation/capacity_comparison.h"
 
+#include "number_text.h"
 #include "graspsim/capacity/load_direction.h"
 #include "graspsim/scenario/scenario_file.h"
 #include "graspsim/validation/validation_plan.h"
 
-#include <cstdio>
 #include <sstream>
 
 namespace graspsim::validation {
@@ -40,25 +40,13 @@ std::vector<std::string> listVariants(const CapacityPlan& plan) {
     return variants;
 }
 
-std::string num(double v) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.17g", v);
-    return buffer;
-}
-
-std::string brief(double v) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.3g", v);
-    return buffer;
-}
-
 std::string describeSlip(const CapacityRow& row) {
     const capacity::CapacityFigures& f = row.measured.trace.figures;
     const std::string unit = row.measured.torque ? " N m" : " N";
     if (!row.measured.trace.failure.empty() && !f.slipped) return "failed (integrator)";
     if (!f.slipped) return "no slip";
-    std::string text = brief(f.slipOnsetLoad) + unit;
-    if (row.hasReference) text += " (" + std::string(row.relativeDifference >= 0 ? "+" : "") + brief(100 * row.relativeDifference) + " %)";
+    std::string text = formatBriefNumber(f.slipOnsetLoad) + unit;
+    if (row.hasReference) text += " (" + std::string(row.relativeDifference >= 0 ? "+" : "") + formatBriefNumber(100 * row.relativeDifference) + " %)";
     if (f.released && f.releaseLoad <= f.slipOnsetLoad) text += ", released first";
     return text;
 }
@@ -103,11 +91,11 @@ std::string formatCapacityCsv(const std::vector<CapacityRow>& rows) {
     for (const CapacityRow& r : rows) {
         const capacity::CapacityFigures& f = r.measured.trace.figures;
         csv << r.experiment << "," << r.load << "," << r.variant << "," << (r.measured.torque ? "N m" : "N") << ","
-            << num(r.measured.rate) << "," << (f.slipped ? 1 : 0) << "," << (f.slipped ? num(f.slipOnsetLoad) : "") << ","
-            << (f.slipped ? num(f.slipOnsetTime) : "") << "," << (f.dropped ? 1 : 0) << "," << (f.dropped ? num(f.dropLoad) : "")
-            << "," << (f.released ? 1 : 0) << "," << (f.released ? num(f.releaseLoad) : "") << ","
-            << (r.hasReference ? num(r.relativeDifference) : "") << ",\"" << r.measured.trace.releaseReason << "\",\""
-            << r.measured.trace.failure << "\"," << num(r.measured.wallTime) << "\n";
+            << formatExactNumber(r.measured.rate) << "," << (f.slipped ? 1 : 0) << "," << (f.slipped ? formatExactNumber(f.slipOnsetLoad) : "") << ","
+            << (f.slipped ? formatExactNumber(f.slipOnsetTime) : "") << "," << (f.dropped ? 1 : 0) << "," << (f.dropped ? formatExactNumber(f.dropLoad) : "")
+            << "," << (f.released ? 1 : 0) << "," << (f.released ? formatExactNumber(f.releaseLoad) : "") << ","
+            << (r.hasReference ? formatExactNumber(r.relativeDifference) : "") << ",\"" << r.measured.trace.releaseReason << "\",\""
+            << r.measured.trace.failure << "\"," << formatExactNumber(r.measured.wallTime) << "\n";
     }
     return csv.str();
 }

@@ -1,43 +1,29 @@
 #include "graspsim/validation/validation_report.h"
 
+#include "number_text.h"
 #include "graspsim/io/atomic_file.h"
 
-#include <cstdio>
 #include <sstream>
 
 namespace graspsim::validation {
 
 namespace {
 
-// Shortest round-trip text of a number, as in the run files.
-std::string num(double v) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.17g", v);
-    return buffer;
-}
-
-// A number for people: 3 significant digits.
-std::string brief(double v) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.3g", v);
-    return buffer;
-}
-
 std::string errorsCsv(const RunRecord& r) {
     if (!r.hasReference) return ",,,,,";
     const PoseErrors& e = r.errors;
-    return num(e.maxPosition) + "," + num(e.rmsPosition) + "," + num(e.maxAngle) + "," + num(e.rmsAngle) + "," +
-           num(r.windowErrors.maxPosition) + "," + num(r.windowErrors.maxAngle);
+    return formatExactNumber(e.maxPosition) + "," + formatExactNumber(e.rmsPosition) + "," + formatExactNumber(e.maxAngle) + "," + formatExactNumber(e.rmsAngle) + "," +
+           formatExactNumber(r.windowErrors.maxPosition) + "," + formatExactNumber(r.windowErrors.maxAngle);
 }
 
 std::string describeRelation(const ValidationCheck& c) {
     if (c.unit.empty() && c.relation == "==") return c.bound == 1 ? "yes" : "no";
-    return c.relation + " " + brief(c.bound) + (c.unit.empty() ? "" : " " + c.unit);
+    return c.relation + " " + formatBriefNumber(c.bound) + (c.unit.empty() ? "" : " " + c.unit);
 }
 
 std::string describeValue(const ValidationCheck& c) {
     if (c.unit.empty() && c.relation == "==") return c.value == 1 ? "yes" : "no";
-    return brief(c.value) + (c.unit.empty() ? "" : " " + c.unit);
+    return formatBriefNumber(c.value) + (c.unit.empty() ? "" : " " + c.unit);
 }
 
 void appendRunTable(const ValidationResults& results, std::ostringstream& md) {
@@ -48,15 +34,15 @@ void appendRunTable(const ValidationResults& results, std::ostringstream& md) {
         const simulation::SimulationSummary& s = r.summary;
         md << "| " << r.run.id << " | " << (s.held ? "yes" : "no");
         if (r.hasReference) md << " (" << (r.referenceHeld ? "yes" : "no") << ")";
-        md << " | " << brief(s.objectDisplacement * 1e3) << " | " << (r.slipOnset < 0 ? "-" : brief(r.slipOnset)) << " | "
-           << (s.engaged ? brief(s.engageTime) : "-") << " | " << (s.releaseTime < 0 ? "-" : brief(s.releaseTime)) << " | ";
+        md << " | " << formatBriefNumber(s.objectDisplacement * 1e3) << " | " << (r.slipOnset < 0 ? "-" : formatBriefNumber(r.slipOnset)) << " | "
+           << (s.engaged ? formatBriefNumber(s.engageTime) : "-") << " | " << (s.releaseTime < 0 ? "-" : formatBriefNumber(s.releaseTime)) << " | ";
         if (r.hasReference) {
-            md << brief(r.errors.maxPosition * 1e3) << " | " << brief(r.errors.rmsPosition * 1e3) << " | "
-               << brief(r.errors.maxAngle * 180 / 3.14159265358979323846);
+            md << formatBriefNumber(r.errors.maxPosition * 1e3) << " | " << formatBriefNumber(r.errors.rmsPosition * 1e3) << " | "
+               << formatBriefNumber(r.errors.maxAngle * 180 / 3.14159265358979323846);
         } else {
             md << "- | - | -";
         }
-        md << " | " << brief(s.wallTime) << " |\n";
+        md << " | " << formatBriefNumber(s.wallTime) << " |\n";
     }
 }
 
@@ -73,11 +59,11 @@ std::string formatResultsCsv(const ValidationResults& results) {
         const simulation::SimulationSummary& s = r.summary;
         csv << r.run.id << "," << r.run.scenario << "," << s.perturbation << "," << simulation::toString(s.contact) << "," << r.run.variant << ","
             << (s.complete ? 1 : 0) << "," << (s.held ? 1 : 0) << "," << (r.hasReference ? (r.referenceHeld ? "1" : "0") : "")
-            << "," << num(s.objectDisplacement) << "," << (r.hasReference ? num(r.referenceDisplacement) : "") << ","
-            << num(r.slipOnset) << "," << (r.hasReference ? num(r.referenceSlipOnset) : "") << "," << num(s.engageTime) << ","
-            << num(s.releaseTime) << "," << num(s.qAtEngage) << "," << num(s.maxPenetration) << "," << errorsCsv(r) << ","
-            << num(s.wallTime) << "," << num(s.simTime) << "," << s.steps << "," << num(s.fullWallPerSimSecond) << ","
-            << num(s.approxWallPerSimSecond) << "\n";
+            << "," << formatExactNumber(s.objectDisplacement) << "," << (r.hasReference ? formatExactNumber(r.referenceDisplacement) : "") << ","
+            << formatExactNumber(r.slipOnset) << "," << (r.hasReference ? formatExactNumber(r.referenceSlipOnset) : "") << "," << formatExactNumber(s.engageTime) << ","
+            << formatExactNumber(s.releaseTime) << "," << formatExactNumber(s.qAtEngage) << "," << formatExactNumber(s.maxPenetration) << "," << errorsCsv(r) << ","
+            << formatExactNumber(s.wallTime) << "," << formatExactNumber(s.simTime) << "," << s.steps << "," << formatExactNumber(s.fullWallPerSimSecond) << ","
+            << formatExactNumber(s.approxWallPerSimSecond) << "\n";
     }
     return csv.str();
 }
@@ -86,7 +72,7 @@ std::string formatChecksCsv(const ValidationResults& results) {
     std::ostringstream csv;
     csv << "run,check,value,relation,bound,unit,pass,source\n";
     for (const ValidationCheck& c : results.checks) {
-        csv << c.run << ",\"" << c.name << "\"," << num(c.value) << "," << c.relation << "," << num(c.bound) << "," << c.unit
+        csv << c.run << ",\"" << c.name << "\"," << formatExactNumber(c.value) << "," << c.relation << "," << formatExactNumber(c.bound) << "," << c.unit
             << "," << (c.pass ? 1 : 0) << ",\"" << c.source << "\"\n";
     }
     return csv.str();
@@ -97,7 +83,7 @@ std::string formatReportMarkdown(const ValidationResults& results, const std::ve
     for (const ValidationCheck& c : results.checks) failed += c.pass ? 0 : 1;
     std::ostringstream md;
     md << "# graspsim validation report\n\n" << results.runs.size() << " runs, " << results.checks.size() << " checks, "
-       << failed << " failed; " << brief(results.wallTime) << " s wall time. Generated by `graspsim validate`; "
+       << failed << " failed; " << formatBriefNumber(results.wallTime) << " s wall time. Generated by `graspsim validate`; "
        << "full contact is the reference of every approximation run.\n\n## Checks\n\n"
        << "| run | check | measured | bound | result | source |\n|---|---|---|---|---|---|\n";
     for (const ValidationCheck& c : results.checks) {
