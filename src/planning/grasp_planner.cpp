@@ -4,9 +4,11 @@
 
 #include "graspsim/model/body_model.h"
 #include "graspsim/planning/grasp_template.h"
+#include "graspsim/planning/lateral_pinch.h"
 
 #include <nlopt.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -88,12 +90,24 @@ GraspRequest makeGraspRequest(const scenario::Scenario& scenario, GraspType type
     return request;
 }
 
-GraspPlan planGrasp(const GraspRequest& request, const PlanTolerances& tolerances) {
-    request.shape.validate("the object");
-    if (request.type == GraspType::Lateral) {
-        throw InputError("grasp type 'lateral' is not planned yet: the controller drives fingertip pads only, "
-                         "and the lateral pinch needs the side of the index's middle phalanx");
+namespace {
+
+// The request with the plan's added end-effectors in its body model.
+GraspRequest withSegmentPoints(GraspRequest request, const std::vector<model::SegmentPoint>& points) {
+    for (const model::SegmentPoint& point : points) {
+        auto& own = request.bodyOptions.segmentPoints;
+        const bool present = std::any_of(own.begin(), own.end(), [&](const auto& p) { return p.name == point.name; });
+        if (!present) own.push_back(point);
     }
+    return request;
+}
+
+}  // namespace
+
+GraspPlan planGrasp(const GraspRequest& givenRequest, const PlanTolerances& tolerances) {
+    givenRequest.shape.validate("the object");
+    GraspRequest request = givenRequest;
+    if (request.type == GraspType::Lateral) request.bodyOptions = addIndexRadialPoint(request.bodyOptions);
     const GraspTemplate graspTemplate = findGraspTemplate(request.type);
     GraspObjective objective(request, graspTemplate);
     checkFits(objective, request.type);
@@ -105,6 +119,7 @@ GraspPlan planGrasp(const GraspRequest& request, const PlanTolerances& tolerance
     roundPlan(plan);
     plan.goals = objective.findGoals(plan.jointAngles, plan.X_GO);
     plan.kp = graspTemplate.kp;
+    plan.segmentPoints = request.bodyOptions.segmentPoints;
     plan.diagnostics = calcPlanDiagnostics(request, plan);
     plan.diagnostics.evaluations = evaluations;
     plan.diagnostics.cost = objective.evaluate(x.data());
@@ -149,7 +164,7 @@ std::string findFailedCheck(const PlanDiagnostics& d, const PlanTolerances& tole
 PlanDiagnostics calcPlanDiagnostics(const GraspRequest& request, const GraspPlan& plan) {
     GraspTemplate graspTemplate = findGraspTemplate(request.type);
     graspTemplate.goalEffectors = plan.goalEffectors;
-    const GraspObjective objective(request, graspTemplate);
+    const GraspObjective objective(withSegmentPoints(request, plan.segmentPoints), graspTemplate);
     return objective.calcDiagnostics(plan.jointAngles, plan.X_GO);
 }
 

@@ -1,5 +1,7 @@
 #include "graspsim/planning/grasp_template.h"
 
+#include "graspsim/planning/lateral_pinch.h"
+
 #include "graspsim/simbody.h"
 
 namespace graspsim::planning {
@@ -51,8 +53,8 @@ GraspTemplate findGraspTemplate(GraspType type) {
             t.kp = 10;  // as ball-clutch.yaml: five fingers hold a 9.5 N pull
             t.startUnderPalm = true;
             break;
+        case GraspType::Lateral: return findLateralTemplate();
         case GraspType::Pinch:
-        case GraspType::Lateral:
             t.startPose = toRadians(kPhonePinch);
             t.goalEffectors = {"thumb_tip", "index_tip"};
             break;

@@ -3,6 +3,7 @@
 #include "graspsim/scenario/scenario_file.h"
 #include "graspsim/scenario/scenario_writer.h"
 
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 
@@ -20,6 +21,11 @@ scenario::Scenario applyPlan(const scenario::Scenario& base, const GraspPlan& pl
     s.object.position = {plan.X_GO.p()[0], plan.X_GO.p()[1], plan.X_GO.p()[2]};
     s.object.orientation = {xyz[0], xyz[1], xyz[2]};
     s.controller.kp = plan.kp;
+    s.bodyOptions.segmentPoints = plan.segmentPoints;
+    // A thin object (a card in a lateral pinch): a goal pressed past half its thickness would pass
+    // the centre (the reader refuses it), so the press goes half that deep.
+    const double halfThickness = s.object.findHalfThickness();
+    if (s.controller.pressDepth >= halfThickness) s.controller.pressDepth = std::round(halfThickness / 2 / 1e-4) * 1e-4;
     return s;
 }
 

@@ -110,6 +110,28 @@ std::vector<std::string> getEndEffectorNames(const model::ModelDescription& body
     return names;
 }
 
+// `end_effectors: {name: {body: segment, point: [x, y, z]}}`: goals that are not fingertip pads
+// (a lateral pinch's side of the index), points fixed on a segment in its body frame (m).
+std::vector<model::SegmentPoint> readSegmentPoints(const YamlField& root, const model::ModelDescription& body) {
+    std::vector<model::SegmentPoint> points;
+    const std::optional<YamlField> section = root.find("end_effectors");
+    if (!section || section->isEmpty()) return points;
+    for (const YamlField& entry : section->getEntries()) {
+        entry.requireMap({"body", "point"});
+        if (body.findEndEffector(entry.getKey())) entry.reject("the arm has an end-effector of that name already");
+        const YamlField segment = entry.require("body", "give the segment (body name) the point is fixed on");
+        const std::string name = segment.asText("body must be a body name");
+        if (!body.findBody(name)) {
+            std::vector<std::string> names;
+            for (const model::Body& b : body.bodies) names.push_back(b.name);
+            segment.reject("'" + name + "' is not a body of the arm; bodies: " + joinNames(names));
+        }
+        const Vec3 p_B = entry.getVec3("point", NumberRule::any("point", "m, body frame"));
+        points.push_back({entry.getKey(), name, {p_B[0], p_B[1], p_B[2]}});
+    }
+    return points;
+}
+
 std::map<std::string, Vec3> readGoals(const YamlField& root, const model::ModelDescription& body,
                                       const ObjectSpec& object) {
     const YamlField section = root.require("goals", "give a goal point (m, object frame) per end-effector");
@@ -249,14 +271,14 @@ std::string readGraspType(const YamlField& root) {
     const std::optional<YamlField> section = root.find("grasp");
     if (!section) return "";
     section->requireMap({"type"});
-    for (const char* planned : {"grasp_pose", "goals"}) {
+    for (const char* planned : {"grasp_pose", "goals", "end_effectors"}) {
         rejectIfGiven(root, planned, std::string("the grasp planner finds it: leave out ") + planned + " with grasp.type");
     }
     return section->require("type", "give the grasp type to plan").asText("type must be a grasp type name");
 }
 
 Scenario readScenario(const YamlField& root) {
-    root.requireMap({"name", "description", "world", "subject", "object", "grasp_pose", "goals", "grasp",
+    root.requireMap({"name", "description", "world", "subject", "object", "grasp_pose", "end_effectors", "goals", "grasp",
                      "perturbations", "contact", "controller", "simulation", "approximation"});
     Scenario scenario;
     scenario.source = root.getSource();
@@ -270,6 +292,7 @@ Scenario readScenario(const YamlField& root) {
     scenario.object = readObject(root, !scenario.graspType.empty());
     if (scenario.graspType.empty()) {
         // Joint and end-effector names are checked against the arm this scenario builds.
+        scenario.bodyOptions.segmentPoints = readSegmentPoints(root, model::buildBodyModel(scenario.bodyOptions));
         const model::ModelDescription body = model::buildBodyModel(scenario.bodyOptions);
         scenario.graspPose = readGraspPose(root, body);
         scenario.goals = readGoals(root, body, scenario.object);

@@ -67,6 +67,11 @@ void writeSubjectAndObject(std::ostringstream& out, const Scenario& s) {
 void writePoseAndGoals(std::ostringstream& out, const Scenario& s) {
     out << "grasp_pose:  # deg\n";
     for (const auto& [joint, angle] : s.graspPose) out << "  " << joint << ": " << formatDegrees(angle) << "\n";
+    const std::vector<model::SegmentPoint>& points = s.bodyOptions.segmentPoints;
+    if (!points.empty()) out << "\nend_effectors:  # points fixed on a segment, m in its body frame\n";
+    for (const model::SegmentPoint& p : points) {
+        out << "  " << p.name << ": {body: " << p.body << ", point: " << formatVec3({p.p_B[0], p.p_B[1], p.p_B[2]}) << "}\n";
+    }
     out << "\ngoals:  # m, object frame\n";
     for (const auto& [effector, p_OG] : s.goals) out << "  " << effector << ": " << formatVec3(p_OG) << "\n";
     out << "\nperturbations:" << (s.perturbations.empty() ? "  # none\n" : "\n");

@@ -404,12 +404,13 @@ TEST(ScenarioFile, MissingFileNamesPathAndBuiltins) {
     } catch (const InputError& e) {
         const std::string message = e.what();
         EXPECT_NE(message.find("/nonexistent/scenario.yaml"), std::string::npos) << message;
-        EXPECT_NE(message.find("ball-clutch, phone-pinch"), std::string::npos) << message;
+        EXPECT_NE(message.find("ball-clutch, ball-tripod, can-power, key-lateral, phone-pinch"), std::string::npos) << message;
     }
 }
 
-TEST(ScenarioFile, BuiltinNamesAreTheThesisExperiments) {
-    EXPECT_EQ(getBuiltinScenarioNames(), (std::vector<std::string>{"ball-clutch", "phone-pinch"}));
+TEST(ScenarioFile, BuiltinNamesAreTheThesisExperimentsAndThePlannedOnes) {
+    EXPECT_EQ(getBuiltinScenarioNames(),
+              (std::vector<std::string>{"ball-clutch", "ball-tripod", "can-power", "key-lateral", "phone-pinch"}));
 }
 
 TEST(ScenarioFile, BothBuiltinsParse) {
@@ -441,7 +442,7 @@ TEST(ScenarioFile, UnknownBuiltinListsTheKnownNames) {
     } catch (const InputError& e) {
         const std::string message = e.what();
         EXPECT_NE(message.find("'ball-clutsh'"), std::string::npos) << message;
-        EXPECT_NE(message.find("ball-clutch, phone-pinch"), std::string::npos) << message;
+        EXPECT_NE(message.find("ball-clutch, ball-tripod, can-power, key-lateral, phone-pinch"), std::string::npos) << message;
     }
 }
 

@@ -5,6 +5,7 @@
 #include "graspsim/anthropometry/subject.h"
 
 #include <string>
+#include <vector>
 
 namespace graspsim::model {
 
@@ -20,6 +21,14 @@ enum class Preset {
     Thesis  ///< the thesis's model: every finger segment 20 g, palm 250 g, arm total 5.45 kg
 };
 
+/// A named point fixed on a segment, added to the model's end-effectors: a goal that is not a
+/// fingertip pad (the lateral pinch's side of the index, planning/lateral_pinch.h).
+struct SegmentPoint {
+    std::string name;            ///< end-effector name, e.g. "index_middle_radial"; not one the builder makes
+    std::string body;            ///< the segment's body, e.g. "index_middle"
+    double p_B[3] = {0, 0, 0};   ///< the point in the body's frame (m)
+};
+
 /// Options of the body model builders. Defaults: the male de Leva reference subject, right arm.
 struct BuildOptions {
     anthropometry::Subject subject;  ///< sex, body mass (kg), stature (m)
@@ -30,6 +39,7 @@ struct BuildOptions {
     double armStiffness = 0.0;       ///< passive stiffness of shoulder, elbow, forearm and wrist joints (N m/rad)
     double armDamping = 0.5;         ///< passive damping of shoulder, elbow, forearm and wrist joints (N m s/rad)
     double trunkDamping = 2.0;       ///< humanoid: passive damping of spine, neck and leg joints (N m s/rad)
+    std::vector<SegmentPoint> segmentPoints;  ///< end-effectors added after the builder's own (none by default)
 };
 
 /// Parses "arm" or "humanoid". @throws graspsim::InputError naming `source`, the value and the accepted values.

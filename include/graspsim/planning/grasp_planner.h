@@ -85,6 +85,9 @@ struct GraspPlan {
     std::vector<std::string> goalEffectors;      ///< thumb first, then index to little
     std::map<std::string, SimTK::Vec3> goals;    ///< goal point on the surface per effector, in O (m)
     double kp = 5;                               ///< suggested finger PD gain (N m/rad)
+    /// End-effectors the plan adds to the body model (lateral: the index's radial side), which
+    /// `goals` may name; empty for fingertip-pad grasps.
+    std::vector<model::SegmentPoint> segmentPoints;
     PlanDiagnostics diagnostics;
 };
 
