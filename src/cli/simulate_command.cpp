@@ -40,7 +40,7 @@ struct SimulateCommand::Options {
 SimulateCommand::SimulateCommand(CLI::App& app) : options_(std::make_shared<Options>()) {
     Options& o = *options_;
     command_ = app.add_subcommand("simulate", "Simulate a grasp scenario (full contact or the grasp approximation) and write the results");
-    command_->add_option("scenario", o.scenario, "built-in scenario (ball-clutch, phone-pinch) or a scenario file")->required();
+    command_->add_option("scenario", o.scenario, "built-in scenario (ball-clutch, phone-pinch; planned: ball-tripod, can-power, key-lateral) or a scenario file")->required();
     command_->add_option("--contact", o.contact, "compliant (default) or rigid");
     command_->add_option("--mode", o.mode, "full (default) or approx");
     command_->add_option("--constraint", o.constraint,

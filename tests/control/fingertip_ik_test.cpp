@@ -217,3 +217,37 @@ TEST(FingertipIk, FindsTheClosestPoseForUnreachableGoalsAsTheAssemblerDoes) {
         for (std::size_t e = 0; e < kTips.size(); ++e) EXPECT_LT((a.tips[e] - b.tips[e]).norm(), 1e-4) << "trial " << trial << " " << kTips[e];
     }
 }
+
+// An end-effector need not be a fingertip: a point fixed on any segment (model::SegmentPoint,
+// here the radial side of the index's middle phalanx, the lateral pinch's contact) is placed by
+// the joints from the palm out to its segment. Oracle: goals made by a known pose are reachable;
+// both methods put both points on them, and a joint outboard of the segment (the index DIP) is
+// left where it was.
+TEST(FingertipIk, PlacesAPointOnAMiddlePhalanxAsItPlacesFingertips) {
+    model::BuildOptions options;
+    options.segmentPoints.push_back({"index_side", "index_middle", {0, -0.0134, 0.0081}});
+    system::MultibodyModel model(model::buildBodyModel(options));
+    SimTK::State s = model.realizeTopology();
+    model.setJointPosition(s, "index_dip_flexion", 0.5);
+    const std::vector<std::string> effectors{"thumb_tip", "index_side"};
+    const std::vector<std::string> joints{"thumb_cmc_abduction", "thumb_cmc_flexion", "thumb_mcp_flexion", "thumb_ip_flexion",
+                                          "index_mcp_abduction", "index_mcp_flexion", "index_pip_flexion"};
+    SimTK::State known = s;
+    const std::vector<double> knownAngles{0.35, -0.2, 0.1, 0.05, 0.05, 0.5, 1.0};
+    for (std::size_t k = 0; k < joints.size(); ++k) model.setJointPosition(known, joints[k], knownAngles[k]);
+    model.getSystem().realize(known, SimTK::Stage::Position);
+    std::vector<SimTK::Vec3> goals;
+    for (const std::string& e : effectors) goals.push_back(model.findEndEffectorLocationInGround(known, e));
+    for (control::IkMethod method : {control::IkMethod::DampedLeastSquares, control::IkMethod::Assembler}) {
+        control::FingertipIk ik(model, effectors, joints, method);
+        const SimTK::Vector q = ik.solve(s, goals);
+        SimTK::State solved = s;
+        for (std::size_t k = 0; k < joints.size(); ++k) model.setJointPosition(solved, joints[k], q[static_cast<int>(k)]);
+        model.getSystem().realize(solved, SimTK::Stage::Position);
+        for (std::size_t e = 0; e < effectors.size(); ++e) {
+            EXPECT_LT((model.findEndEffectorLocationInGround(solved, effectors[e]) - goals[e]).norm(), 1e-4) << effectors[e];
+            EXPECT_LT(ik.getLastDistances()[e], 1e-4) << effectors[e];
+        }
+        EXPECT_DOUBLE_EQ(model.getJointPosition(solved, "index_dip_flexion"), 0.5);
+    }
+}

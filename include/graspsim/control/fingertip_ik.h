@@ -1,6 +1,11 @@
 #pragma once
 /// @file
-/// Inverse kinematics that brings fingertip end-effectors to goal points.
+/// Inverse kinematics that brings end-effectors to goal points.
+///
+/// An end-effector is any named point of the model description (model::EndEffector): the
+/// fingertip pads the hand builder makes, or a point fixed on any other segment that the build
+/// options add (model::SegmentPoint, e.g. the radial side of the index's middle phalanx, on
+/// which a lateral pinch presses). Each is placed by the moving joints on its path from the base.
 ///
 /// Only the given joints move; every other mobilizer of the system (the rest of the arm, the
 /// grasped object) is locked. Joint ranges of motion bound the solution. The solution minimizes
@@ -36,7 +41,7 @@ enum class IkMethod {
 /// Fingertip inverse kinematics on a model's system.
 class FingertipIk {
 public:
-    /// @param endEffectors names of the end-effectors to place (e.g. "index_tip").
+    /// @param endEffectors names of the end-effectors to place (e.g. "index_tip", "index_middle_radial").
     /// @param movingJoints joints the solution may change; all other mobilities are locked.
     /// @param method which solver to use.
     /// @throws graspsim::InputError naming an unknown end-effector or joint.

@@ -26,9 +26,10 @@
 
 namespace graspsim::control {
 
-/// A goal for one end-effector: a point fixed in the goal frame F.
+/// A goal for one end-effector (a fingertip pad or a point on another segment, fingertip_ik.h):
+/// a point fixed in the goal frame F.
 struct FingertipGoal {
-    std::string endEffector;  ///< e.g. "index_tip"
+    std::string endEffector;  ///< e.g. "index_tip" or "index_middle_radial"
     SimTK::Vec3 p_FG;         ///< goal point in F (m)
 };
 

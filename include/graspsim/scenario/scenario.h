@@ -188,7 +188,9 @@ struct Scenario {
     /// Target angle (rad) of arm and hand joints in the grasp pose, by joint name of
     /// model::buildBodyModel(bodyOptions); joints not listed stay at 0.
     std::map<std::string, double> graspPose;
-    /// Goal point of each end-effector (e.g. "index_tip") on the object's surface, in O (m).
+    /// Goal point of each end-effector (e.g. "index_tip") on the object's surface, in O (m). Besides
+    /// the fingertips, a goal may name a point the file fixes on a segment (`end_effectors:`, read
+    /// into bodyOptions.segmentPoints).
     std::map<std::string, Vec3> goals;
     /// `grasp: {type: ...}`: the grasp type to plan (planning/planned_scenario.h) when the file
     /// leaves out grasp_pose, goals and the object's position and orientation; empty otherwise.
