@@ -80,14 +80,6 @@ double parseQuality(const std::string& text, const std::string& source) {
     return value;
 }
 
-// A relative accuracy in (0, 1); empty keeps the scenario's (0).
-double parseAccuracy(const std::string& text) {
-    if (text.empty()) return 0;
-    const double value = parseNumber(text, "--accuracy", "a number in (0, 1)");
-    if (!(value > 0 && value < 1)) throw InputError("--accuracy: value " + text + " is not accepted; use a number in (0, 1)");
-    return value;
-}
-
 double parseDuration(const std::string& text) {
     if (text.empty()) return 0;
     const double value = parseNumber(text, "--duration", "the duration must be a number of seconds > 0");
