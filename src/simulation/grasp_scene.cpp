@@ -256,7 +256,7 @@ void GraspScene::addController(const SimulationOptions& options) {
     }
     // Approx: the switch runs the IK while the grasp is not approximated, so it can pause it.
     ownedController_.reset(controller_);
-    switch_ = new GraspSwitch(*this, *controller_, options.approx, ikInterval);
+    switch_ = new GraspSwitch(*this, model_.updForces(), *controller_, options.approx, ikInterval);
     model_.updSystem().addEventHandler(switch_);
     if (SimTK::TriggeredEventHandler* witness = switch_->makeDetachWitness()) model_.updSystem().addEventHandler(witness);
 }
