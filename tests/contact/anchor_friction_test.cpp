@@ -186,8 +186,9 @@ TEST(AnchorFrictionIncline, BelowTheFrictionAngleTheBoxDoesNotCreep) {
     const double load = BoxOnIncline::kMass * kG * std::sin(angle);
     const double deflection = load / (4 * BoxOnIncline::calcCornerStiffness(angle));
     EXPECT_NEAR(held[1].deflection, deflection, 0.02 * deflection);
-    // The same box with the regularized law creeps near v_tr tan(a) / mu (about 0.9 mm/s): what
-    // the anchor removes (and a check that the scene does load the friction).
+    // The same box with the regularized law cannot stay: its friction needs slip, and slip beyond
+    // v_tr lowers it toward mu_d < tan a, so the box slides away (0.5 m in this second). What
+    // the anchor removes, and a check that the scene does load friction beyond mu_d.
     BoxOnIncline regularized(angle, FrictionModel::Regularized);
     const auto creeping = integrate(regularized, {0.2, 1.2});
     RecordProperty("regularized_drift_um_per_s", toText((creeping[1].first - creeping[0].first) * 1e6));
