@@ -6,8 +6,10 @@
 #include <string>
 
 #include "contact_scenes.h"
+#include "test_meshes.h"
 #include "graspsim/contact/anchor_friction.h"
 #include "graspsim/contact/compliant_contact_force.h"
+#include "graspsim/contact/convex_polytope.h"
 #include "graspsim/error.h"
 #include "graspsim/integration/cvode_integrator.h"
 #include "graspsim/integration/simbody_stepper.h"
@@ -247,6 +249,96 @@ TEST(AnchorFrictionIncline, SimbodyAndTheCvodeReferenceAgreeThroughSlideAndStick
     EXPECT_LT(a.position, coulomb);
     EXPECT_GT(a.position, 0.9 * coulomb);
 }
+
+
+// A 100 g object pinched through its centre of mass between two 20 g pads on x Sliders, each
+// pushed inward with 1 N, under gravity along -y: 2 mu_d N = 1.2 N > m g = 0.98 N, so both laws
+// hold it, the regularized one creeping. Every object shape, against sphere pads (one contact
+// per pair) and box pads (several contacts per pair, one shared anchor).
+struct PinchCase {
+    const char* name;
+    ContactShape object;
+    bool boxPads;
+};
+
+struct Pinch {
+    static constexpr double kMass = 0.1, kPadMass = 0.02, kPush = 1.0, kHalfWidth = 0.03;
+    test::Scene scene;
+    SimTK::Force::Gravity gravity{scene.forces, scene.matter, Vec3(0, -kG, 0)};
+    SimTK::MobilizedBody::Free object;
+    SimTK::MobilizedBody::Slider left, right;
+    CompliantContactForce force;
+    SimTK::State state;
+
+    Pinch(const PinchCase& c, FrictionModel model)
+        : object(scene.addFree(kMass, kHalfWidth)),
+          left(scene.addSlider(SimTK::XAxis, kPadMass, 0.01)),
+          right(scene.addSlider(SimTK::XAxis, kPadMass, 0.01)) {
+        SimTK::Force::MobilityConstantForce(scene.forces, left, 0, kPush);
+        SimTK::Force::MobilityConstantForce(scene.forces, right, 0, -kPush);
+        const ContactMaterial m = test::makeMaterial(0.66e6, 1.0, 0.8, 0.6, 1e-3);
+        const ContactShape pad = c.boxPads ? ContactShape::box(Vec3(0.005, 0.01, 0.01)) : ContactShape::sphere(0.008);
+        FrictionSettings friction;
+        friction.model = model;
+        force = CompliantContactForce(scene.forces, {{test::makeSurface(left, "left", pad, m),
+                                                      test::makeSurface(object, "object", c.object, m)},
+                                                     {test::makeSurface(right, "right", pad, m),
+                                                      test::makeSurface(object, "object", c.object, m)}},
+                                      friction);
+        state = scene.system.realizeTopology();
+        const double padHalf = c.boxPads ? 0.005 : 0.008;
+        left.setOneQ(state, 0, -(kHalfWidth + padHalf));
+        right.setOneQ(state, 0, kHalfWidth + padHalf);
+    }
+};
+
+class AnchorPinch : public ::testing::TestWithParam<PinchCase> {};
+
+// Object height (m) at 0.4 s and 1.2 s.
+std::pair<double, double> integratePinch(Pinch& p) {
+    SimTK::RungeKuttaMersonIntegrator integrator(p.scene.system);
+    integrator.setAccuracy(1e-6);
+    SimTK::TimeStepper stepper(p.scene.system, integrator);
+    stepper.initialize(p.state);
+    stepper.stepTo(0.4);
+    const double settled = p.object.getBodyOriginLocation(integrator.getState())[1];
+    stepper.stepTo(1.2);
+    return {settled, p.object.getBodyOriginLocation(integrator.getState())[1]};
+}
+
+TEST_P(AnchorPinch, ObjectHeldWithoutCreep) {
+    Pinch anchor(GetParam(), FrictionModel::Anchor);
+    const auto [settled, end] = integratePinch(anchor);
+    RecordProperty("anchor_drift_um_per_s", toText((end - settled) / 0.8 * 1e6));
+    EXPECT_LT(std::abs(end - settled) / 0.8, 1e-7);  // < 0.1 um/s
+    EXPECT_LT(std::abs(settled), 2e-3);               // caught within the springs' travel
+}
+
+TEST(AnchorPinchContrast, RegularizedLawCreepsInTheSamePinch) {
+    // What the anchor removes, and a check that the pinch does load friction: the regularized law
+    // creeps near v_tr m g / (2 mu N) = 0.6 mm/s (mu between mu_d and mu_s near v_tr).
+    Pinch regularized({"Sphere", ContactShape::sphere(0.03), false}, FrictionModel::Regularized);
+    const auto [from, to] = integratePinch(regularized);
+    RecordProperty("regularized_drift_um_per_s", toText((to - from) / 0.8 * 1e6));
+    EXPECT_LT(to - from, -1e-4 * 0.8);  // creeps down faster than 0.1 mm/s
+}
+
+std::shared_ptr<const ConvexPolytope> makeBoxPolytope() {
+    return ConvexPolytope::build(test::makeBoxMesh(Vec3(0.03, 0.03, 0.02)), "test box mesh");
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    EveryShape, AnchorPinch,
+    ::testing::Values(PinchCase{"Sphere", ContactShape::sphere(0.03), false},
+                      PinchCase{"Box", ContactShape::box(Vec3(0.03, 0.03, 0.02)), false},
+                      PinchCase{"Cylinder", ContactShape::cylinder(0.03, 0.06), false},
+                      PinchCase{"Capsule", ContactShape::capsule(0.03, 0.04), false},
+                      PinchCase{"Ellipsoid", ContactShape::ellipsoid(Vec3(0.03, 0.04, 0.035)), false},
+                      PinchCase{"Mesh", ContactShape::convexMesh(makeBoxPolytope()), false},
+                      PinchCase{"BoxOnBoxPads", ContactShape::box(Vec3(0.03, 0.03, 0.02)), true},
+                      PinchCase{"MeshOnBoxPads", ContactShape::convexMesh(makeBoxPolytope()), true},
+                      PinchCase{"CylinderOnBoxPads", ContactShape::cylinder(0.03, 0.06), true}),
+    [](const ::testing::TestParamInfo<PinchCase>& info) { return std::string(info.param.name); });
 
 }  // namespace
 }  // namespace graspsim::contact
