@@ -135,7 +135,13 @@ simulation::SimulationOptions SimulateCommand::parseOptions() const {
     const Options& o = *options_;
     simulation::SimulationOptions options;
     options.contact = simulation::parseContactModel(o.contact, "--contact");
-    if (!o.friction.empty()) contact::parseFrictionModel(o.friction, "--friction");  // refused before any work
+    if (!o.friction.empty()) {  // refused before any work
+        contact::parseFrictionModel(o.friction, "--friction");
+        if (options.contact == simulation::ContactModel::Rigid) {
+            throw InputError("--friction: '" + o.friction + "' is not accepted with --contact rigid; it chooses the "
+                             "compliant contact's friction law (rigid contact has Coulomb friction)");
+        }
+    }
     options.mode = simulation::parseSimulationMode(o.mode, "--mode");
     options.duration = parseDuration(o.duration);
     options.integrator = simulation::parseIntegratorChoice(o.integrator, "--integrator");

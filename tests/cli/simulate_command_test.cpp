@@ -162,6 +162,7 @@ TEST_F(SimulateCommand, RejectsBadOptionsWithoutTouchingTheOutputFolder) {
     expectBadInput("simulate ball-clutch --contact soft" + out, {"--contact", "soft", "compliant or rigid"});
     expectBadInput("simulate ball-clutch --integrator euler" + out, {"--integrator", "euler", "simbody or cvode"});
     expectBadInput("simulate ball-clutch --friction lugre" + out, {"--friction", "lugre", "regularized or anchor"});
+    expectBadInput("simulate ball-clutch --contact rigid --friction anchor" + out, {"--friction", "anchor", "rigid"});
     expectBadInput("simulate ball-clutch --duration -1" + out, {"--duration", "-1"});
     expectBadInput("simulate ball-clutch --duration soon" + out, {"--duration", "soon"});
     expectBadInput("simulate ball-clutch --mode approx --q-threshold -1" + out, {"--q-threshold", "-1"});
