@@ -208,6 +208,34 @@ TEST(AnchorFrictionIncline, AboveTheFrictionAngleTheBoxSlidesWithCoulombAccelera
     EXPECT_NEAR(a, coulomb, 0.02 * coulomb);
 }
 
+TEST(AnchorFrictionIncline, AnchorRelaxesWhenTheBoxLeavesThePadAndWhenThePairIsDisabled) {
+    // Held at 35 deg with its springs loaded (0.24 mm), the box is thrown off the pad at 1 m/s
+    // (about 0.2 s of flight): with no contact the anchor returns to the current point in tau =
+    // 1 ms, so 50 ms later nothing is left of it (e^-50; we allow the integrator's error, 1e-4 of
+    // the load), and the integrator never sees a jump.
+    const double angle = 35 * SimTK::Pi / 180;
+    BoxOnIncline s(angle, FrictionModel::Anchor);
+    SimTK::RungeKuttaMersonIntegrator integrator(s.scene.system);
+    integrator.setAccuracy(1e-7);
+    SimTK::TimeStepper stepper(s.scene.system, integrator);
+    stepper.initialize(s.state);
+    stepper.stepTo(0.3);
+    SimTK::State thrown = integrator.getState();
+    const double loaded = s.force.getAnchorDeflection(thrown, 0).norm();
+    EXPECT_GT(loaded, 1e-4);
+    SimTK::State disabled = thrown;
+    s.box.setUToFitLinearVelocity(thrown, Vec3(0, 1, 0));
+    stepper.initialize(thrown);
+    stepper.stepTo(0.35);
+    EXPECT_GT(s.box.getBodyOriginLocation(integrator.getState())[1], s.halfLengths[1]);  // in flight
+    EXPECT_LT(s.force.getAnchorDeflection(integrator.getState(), 0).norm(), 1e-4 * loaded);
+    // The same from the loaded state with the pair switched off instead (the engaged approximation).
+    s.force.setPairEnabled(disabled, 0, false);
+    stepper.initialize(disabled);
+    stepper.stepTo(0.35);
+    EXPECT_LT(s.force.getAnchorDeflection(integrator.getState(), 0).norm(), 1e-4 * loaded);
+}
+
 // Downhill position and speed and the anchor's deflection at `time` with integrator `stepper`.
 struct RunEnd {
     double position, speed;
