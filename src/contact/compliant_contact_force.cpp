@@ -76,7 +76,8 @@ AnchorContact makeAnchorContact(const ContactParameters& parameters, const Ancho
         v += stiffness * (b.findPointVelocity(contacts[k].p_G) - a.findPointVelocity(contacts[k].p_G));
     }
     for (double& w : weights) w /= pair.stiffness;
-    pair.n_G = SimTK::UnitVec3(n);
+    // Opposed normals cancelling (not met with convex shapes) fall back on the first point's.
+    pair.n_G = n.normSqr() > 0 ? SimTK::UnitVec3(n) : contacts.front().n_G;
     v /= pair.stiffness;  // the relative velocity at the weighted centre (it is affine in the point)
     pair.slipVelocity_G = v - SimTK::dot(v, pair.n_G) * pair.n_G;
     return pair;

@@ -17,7 +17,7 @@
 ///    or the elastic anchor of anchor_friction.h (true stiction, one anchor per pair held in the
 ///    State as 4 Z variables); body b receives F = f_n n + f_t at P, body a receives -F at P.
 /// Potential energy: sum over contacts of (8/15) E* sqrt(R) x^(5/2) (elastic part only; the
-/// dissipation and friction are not conservative).
+/// dissipation and friction are not conservative, and the anchor springs' energy is not counted).
 ///
 /// Stages: forces are computed when the system is realized to Stage::Dynamics (they need
 /// positions and velocities); the potential energy needs Stage::Position; reports need
