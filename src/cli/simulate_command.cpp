@@ -4,6 +4,7 @@
 #include "progress_meter.h"
 
 #include "graspsim/planning/planned_scenario.h"
+#include "graspsim/contact/anchor_friction.h"
 #include "graspsim/error.h"
 #include "graspsim/opensim/opensim_storage.h"
 #include "graspsim/results/result_folder.h"
@@ -23,6 +24,7 @@ namespace graspsim::cli {
 struct SimulateCommand::Options {
     std::string scenario;
     std::string contact = "compliant";
+    std::string friction;
     std::string mode = "full";
     std::string constraint = "bushing";
     std::string attach = "merged";
@@ -42,6 +44,9 @@ SimulateCommand::SimulateCommand(CLI::App& app) : options_(std::make_shared<Opti
     command_ = app.add_subcommand("simulate", "Simulate a grasp scenario (full contact or the grasp approximation) and write the results");
     command_->add_option("scenario", o.scenario, "built-in scenario (ball-clutch, phone-pinch) or a scenario file")->required();
     command_->add_option("--contact", o.contact, "compliant (default) or rigid");
+    command_->add_option("--friction", o.friction,
+                         "compliant contact's friction law, regularized or anchor (true stiction; default: the "
+                         "scenario's contact.friction_model, itself regularized by default)");
     command_->add_option("--mode", o.mode, "full (default) or approx");
     command_->add_option("--constraint", o.constraint,
                          "approx: the friction-limited palm-object constraint, bushing (compliant, default) or weld (rigid)");
@@ -122,6 +127,13 @@ simulation::SimulationOptions SimulateCommand::parseOptions() const {
     const Options& o = *options_;
     simulation::SimulationOptions options;
     options.contact = simulation::parseContactModel(o.contact, "--contact");
+    if (!o.friction.empty()) {  // refused before any work
+        contact::parseFrictionModel(o.friction, "--friction");
+        if (options.contact == simulation::ContactModel::Rigid) {
+            throw InputError("--friction: '" + o.friction + "' is not accepted with --contact rigid; it chooses the "
+                             "compliant contact's friction law (rigid contact has Coulomb friction)");
+        }
+    }
     options.mode = simulation::parseSimulationMode(o.mode, "--mode");
     options.duration = parseDuration(o.duration);
     options.integrator = simulation::parseIntegratorChoice(o.integrator, "--integrator");
@@ -178,7 +190,8 @@ results::RunProvenance makeRunProvenance(const std::vector<std::string>& command
 int SimulateCommand::run(const std::vector<std::string>& commandLine) const {
     const Options& o = *options_;
     simulation::SimulationOptions options = parseOptions();
-    const scenario::Scenario scenario = planning::loadScenario(o.scenario);
+    scenario::Scenario scenario = planning::loadScenario(o.scenario);
+    if (!o.friction.empty()) scenario.contact.frictionModel = o.friction;  // scenario.yaml records it
     checkPerturbation(o.perturbation, scenario);
     options.perturbation = o.perturbation;
     simulation::checkApproxAttach(scenario, options);
