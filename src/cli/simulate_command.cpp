@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <chrono>
 #include <iostream>
 
 namespace graspsim::cli {
@@ -186,14 +187,19 @@ results::RunProvenance makeRunProvenance(const std::vector<std::string>& command
 int SimulateCommand::run(const std::vector<std::string>& commandLine) const {
     const Options& o = *options_;
     simulation::SimulationOptions options = parseOptions();
-    const scenario::Scenario scenario = planning::loadScenario(o.scenario);
+    scenario::Scenario scenario = scenario::loadScenario(o.scenario);
+    const auto planStart = std::chrono::steady_clock::now();
+    const bool planned = !scenario.graspType.empty();
+    planning::completeScenario(scenario);  // plans the grasp if the file asks for one
+    const double planTime = planned ? std::chrono::duration<double>(std::chrono::steady_clock::now() - planStart).count() : 0.0;
     checkPerturbation(o.perturbation, scenario);
     options.perturbation = o.perturbation;
     simulation::checkApproxAttach(scenario, options);
     simulation::checkScenarioSetup(scenario, options);  // refuses a grasp that cannot start before the folder exists
     prepareFolder(o.out);
     ProgressMeter meter("simulating", o.quiet);
-    const simulation::SimulationResult result = simulation::runGraspSimulation(scenario, options, makeProgress(meter));
+    simulation::SimulationResult result = simulation::runGraspSimulation(scenario, options, makeProgress(meter));
+    result.summary.planTime = planTime;
     meter.finish();
     results::writeResultFolder(o.out, scenario, result, makeRunProvenance(commandLine, options));
     opensim::writeOpenSimResultFiles(o.out, result);

@@ -50,6 +50,10 @@ GraspTemplate findGraspTemplate(GraspType type) {
             t.goalEffectors = {"thumb_tip", "index_tip", "middle_tip", "ring_tip", "little_tip"};
             t.kp = 10;  // as ball-clutch.yaml: five fingers hold a 9.5 N pull
             t.startUnderPalm = true;
+            // A wrap carries the object on the fingers (docs/planning.md): squeezed level
+            // between thumb and fingertips, a 200 g cylinder hung on friction alone, the thumb's
+            // friction at its cone's edge, and slid out.
+            if (type == GraspType::PowerCylinder) t.minSupport = 0.3;
             break;
         case GraspType::Pinch:
         case GraspType::Lateral:
