@@ -27,7 +27,7 @@ std::vector<std::string> findDigitJoints(const model::ModelDescription& d, const
 
 }  // namespace
 
-std::vector<double> calcGoalReach(const model::BuildOptions& bodyOptions, const std::map<std::string, double>& jointAngles,
+std::vector<GoalReach> calcGoalReach(const model::BuildOptions& bodyOptions, const std::map<std::string, double>& jointAngles,
                                   const std::vector<PressedGoal>& goals) {
     system::MultibodyModel model(model::buildBodyModel(bodyOptions));
     std::vector<std::string> effectors, joints;
@@ -40,8 +40,14 @@ std::vector<double> calcGoalReach(const model::BuildOptions& bodyOptions, const 
     control::FingertipIk ik(model, effectors, joints);
     SimTK::State state = model.realizeTopology();
     for (const auto& [joint, angle] : jointAngles) model.setJointPosition(state, joint, angle);
-    ik.solve(state, goals_G);
-    return ik.getLastDistances();
+    const SimTK::Vector q = ik.solve(state, goals_G);
+    for (std::size_t k = 0; k < joints.size(); ++k) model.setJointPosition(state, joints[k], q[static_cast<int>(k)]);
+    model.getSystem().realize(state, SimTK::Stage::Position);
+    std::vector<GoalReach> reach;
+    for (std::size_t k = 0; k < goals.size(); ++k) {
+        reach.push_back({ik.getLastDistances().at(k), model.findEndEffectorLocationInGround(state, goals[k].effector)});
+    }
+    return reach;
 }
 
 }  // namespace graspsim::planning

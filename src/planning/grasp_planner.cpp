@@ -96,10 +96,12 @@ constexpr double kLeastTargetGap = 0.0002;
 bool aimShortFingersNearer(const PlanDiagnostics& d, const PlanTolerances& tolerances, GraspObjective& objective) {
     bool changed = false;
     for (std::size_t i = 0; i < d.goals.size(); ++i) {
-        const double shortfall = d.goals[i].reachShortfall;
+        const GoalCheck& g = d.goals[i];
         const double gap = objective.getTargetGap(i);
-        if (shortfall <= tolerances.maxReachShortfall || gap <= kLeastTargetGap) continue;
-        objective.setTargetGap(i, std::max(kLeastTargetGap, gap - shortfall));
+        const double missing = std::max(g.reachShortfall - tolerances.maxReachShortfall + kLeastTargetGap,
+                                        tolerances.minCommandedPress - g.commandedPress + kLeastTargetGap);
+        if (missing <= kLeastTargetGap || gap <= kLeastTargetGap) continue;
+        objective.setTargetGap(i, std::max(kLeastTargetGap, gap - missing));
         changed = true;
     }
     return changed;
@@ -107,7 +109,7 @@ bool aimShortFingersNearer(const PlanDiagnostics& d, const PlanTolerances& toler
 
 bool isReachable(const PlanDiagnostics& d, const PlanTolerances& tolerances) {
     for (const GoalCheck& g : d.goals) {
-        if (g.reachShortfall > tolerances.maxReachShortfall) return false;
+        if (g.reachShortfall > tolerances.maxReachShortfall || g.commandedPress < tolerances.minCommandedPress) return false;
     }
     return true;
 }
@@ -175,6 +177,10 @@ std::string findFailedCheck(const PlanDiagnostics& d, const PlanTolerances& tole
             return "the " + goal.effector + " cannot press its goal: the controller's IK ends " +
                    formatMm(goal.reachShortfall) + " from it (accepted: " + formatMm(tolerances.maxReachShortfall) + ")";
         }
+        if (goal.commandedPress < tolerances.minCommandedPress) {
+            return "the " + goal.effector + " cannot press its goal: the controller's IK puts its pad " +
+                   formatMm(goal.commandedPress) + " inside the object (needed: " + formatMm(tolerances.minCommandedPress) + ")";
+        }
     }
     if (d.maxPenetration > tolerances.maxPenetration) {
         return "segment '" + d.deepestSegment + "' is " + formatMm(d.maxPenetration) + " inside the object (accepted: " +
@@ -203,8 +209,12 @@ PlanDiagnostics calcPlanDiagnostics(const GraspRequest& request, const GraspPlan
         const SimTK::Vec3 n_O = request.X_OS.R() * contact::findSurfacePoint(request.shape, ~request.X_OS * p_OP).n_S;
         pressed.push_back({effector, plan.X_GO * (p_OP - request.pressDepth * n_O)});
     }
-    const std::vector<double> shortfalls = calcGoalReach(request.bodyOptions, plan.jointAngles, pressed);
-    for (std::size_t i = 0; i < d.goals.size() && i < shortfalls.size(); ++i) d.goals[i].reachShortfall = shortfalls[i];
+    const std::vector<GoalReach> reach = calcGoalReach(request.bodyOptions, plan.jointAngles, pressed);
+    const SimTK::Transform X_GS = plan.X_GO * request.X_OS;
+    for (std::size_t i = 0; i < d.goals.size() && i < reach.size(); ++i) {
+        d.goals[i].reachShortfall = reach[i].shortfall;
+        d.goals[i].commandedPress = -contact::findSurfacePoint(request.shape, ~X_GS * reach[i].p_GE).distance;
+    }
     return d;
 }
 

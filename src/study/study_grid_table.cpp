@@ -82,6 +82,7 @@ std::string formatGridTable(const StudySpec& spec, const std::string& folder) {
             text = describeCase(readCaseRecord(folder, c.index), readSummary(findCaseFolder(folder, c.index)), approx);
         }
         std::string& cell = cells[{row, c.values[baseAxis]}];
+        if (cell.find(text.substr(text.find(": ") == std::string::npos ? 0 : text.find(": ") + 2)) != std::string::npos) continue;  // the same refusal in both modes
         if (approx) cell += (cell.empty() ? "" : "; ") + text;
         else cell = text + (cell.empty() ? "" : "; " + cell);
     }

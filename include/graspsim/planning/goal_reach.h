@@ -25,12 +25,17 @@ struct PressedGoal {
     SimTK::Vec3 p_GT;      ///< the goal pressed press_depth inside the surface, in Ground (m)
 };
 
+/// Where the controller's IK leaves one end-effector.
+struct GoalReach {
+    double shortfall = 0;  ///< distance from the end-effector to its pressed goal (m)
+    SimTK::Vec3 p_GE{0, 0, 0};  ///< the end-effector in Ground at the IK solution (m)
+};
+
 /// Solves the controller's fingertip IK from `jointAngles` (rad, by joint name; missing = 0) for
 /// the pressed goals, over the joints from the palm to each goal's end-effector, within their
-/// ranges of motion. Returns each end-effector's distance to its pressed goal after the solve (m),
-/// in the order of `goals`.
+/// ranges of motion. Returns, in the order of `goals`, where each end-effector ends.
 /// @throws graspsim::InputError naming an unknown end-effector or joint.
-std::vector<double> calcGoalReach(const model::BuildOptions& bodyOptions, const std::map<std::string, double>& jointAngles,
+std::vector<GoalReach> calcGoalReach(const model::BuildOptions& bodyOptions, const std::map<std::string, double>& jointAngles,
                                   const std::vector<PressedGoal>& goals);
 
 }  // namespace graspsim::planning

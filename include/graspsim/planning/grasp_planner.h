@@ -64,6 +64,7 @@ struct GoalCheck {
     double gap = 0;           ///< signed distance of its pad point to the surface (m)
     double misalignment = 0;  ///< angle between the pad's outward normal and the inward surface normal (rad)
     double reachShortfall = 0;///< the controller's IK from the plan ends this far from the goal pressed pressDepth in (m), goal_reach.h
+    double commandedPress = 0;///< how deep inside the surface that IK solution puts the pad (m): what makes the finger press
 };
 
 /// How good the plan is: the numbers its checks look at.
@@ -100,6 +101,12 @@ struct PlanTolerances {
     /// controller's IK from the plan must end within this of each goal pressed pressDepth inside,
     /// so a planned scenario is never refused by the check.
     double maxReachShortfall = 0.003;
+    /// Each goal pad's IK solution must lie at least this deep inside the object (m): a pad the IK
+    /// leaves at the surface (on a rim, or with a joint at its limit) never presses, its finger
+    /// leaves the object once it settles, and the approximation, which engages on full contact,
+    /// never does. An eighth of the 2 mm press; the planned grasps of the study's tables command
+    /// 0.34 mm (a tripod thumb on a 15 mm ball) or more.
+    double minCommandedPress = 0.00025;
 };
 
 /// Plans the grasp. Deterministic: the same request gives the same plan, bit for bit.
