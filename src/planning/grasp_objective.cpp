@@ -275,9 +275,6 @@ double GraspObjective::evaluate(const double* x) {
         (i == 0 ? n_thumb : n_fingers) += share * SimTK::Vec3(surface.n_S);
     }
     cost += calcOppositionCost(p_thumb, n_thumb, p_fingers, n_fingers);
-    // Equal pad forces balance when the pads' normals sum to zero (grasp_template.h).
-    const SimTK::Vec3 sumNormals = n_thumb + double(m_pads.size() - 1) * n_fingers;
-    cost += m_template.balanceWeight * (sumNormals / double(m_pads.size())).normSqr();
     cost += calcGravityCost(X_GS, n_thumb + double(m_pads.size() - 1) * n_fingers);
     cost += calcCouplingCost(x);
     const auto& shapes = m_arm.getSegmentShapes();

@@ -50,7 +50,6 @@ GraspTemplate findGraspTemplate(GraspType type) {
             t.goalEffectors = {"thumb_tip", "index_tip", "middle_tip", "ring_tip", "little_tip"};
             t.kp = 10;  // as ball-clutch.yaml: five fingers hold a 9.5 N pull
             t.startUnderPalm = true;
-            t.balanceWeight = 20;
             // A wrap carries the object on the fingers (docs/planning.md): squeezed level
             // between thumb and fingertips, a 200 g cylinder hung on friction alone, the thumb's
             // friction at its cone's edge, and slid out.

@@ -21,10 +21,6 @@ struct GraspTemplate {
     /// (a cosine, 0 = horizontal squeeze allowed): the fingers curl under the object, so their
     /// normal forces, not friction alone, carry part of its weight.
     double minSupport = 0;
-    /// The controller gives every digit the same gain and press depth, so every pad pushes with
-    /// about the same force: the pads' inward normals should then sum to about zero, or the
-    /// object is pushed off the weaker side until a finger leaves it. Weight of that term.
-    double balanceWeight = 0;
     /// Power grasps: the object starts where the thesis's ball sits under the palm of the
     /// start pose (ball-clutch.yaml: centre p_GO at this point in G for the male reference
     /// subject, radius ballRadius), scaled with the hand length and moved palmar by the
