@@ -10,6 +10,7 @@
 #include <nlopt.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 namespace graspsim::planning {
@@ -178,8 +179,10 @@ std::string findFailedCheck(const PlanDiagnostics& d, const PlanTolerances& tole
                    formatMm(goal.reachShortfall) + " from it (accepted: " + formatMm(tolerances.maxReachShortfall) + ")";
         }
         if (goal.commandedPress < tolerances.minCommandedPress) {
-            return "the " + goal.effector + " cannot press its goal: the controller's IK puts its pad " +
-                   formatMm(goal.commandedPress) + " inside the object (needed: " + formatMm(tolerances.minCommandedPress) + ")";
+            char depth[64];
+            std::snprintf(depth, sizeof depth, "%.2f mm inside the object (needed: %.2f mm)", goal.commandedPress * 1000,
+                          tolerances.minCommandedPress * 1000);
+            return "the " + goal.effector + " cannot press its goal: the controller's IK puts its pad " + depth;
         }
     }
     if (d.maxPenetration > tolerances.maxPenetration) {
