@@ -17,6 +17,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <chrono>
 #include <iostream>
 
 namespace graspsim::cli {
@@ -190,7 +191,11 @@ results::RunProvenance makeRunProvenance(const std::vector<std::string>& command
 int SimulateCommand::run(const std::vector<std::string>& commandLine) const {
     const Options& o = *options_;
     simulation::SimulationOptions options = parseOptions();
-    scenario::Scenario scenario = planning::loadScenario(o.scenario);
+    scenario::Scenario scenario = scenario::loadScenario(o.scenario);
+    const auto planStart = std::chrono::steady_clock::now();
+    const bool planned = !scenario.graspType.empty();
+    planning::completeScenario(scenario);  // plans the grasp if the file asks for one
+    const double planTime = planned ? std::chrono::duration<double>(std::chrono::steady_clock::now() - planStart).count() : 0.0;
     if (!o.friction.empty()) scenario.contact.frictionModel = o.friction;  // scenario.yaml records it
     checkPerturbation(o.perturbation, scenario);
     options.perturbation = o.perturbation;
@@ -198,7 +203,8 @@ int SimulateCommand::run(const std::vector<std::string>& commandLine) const {
     simulation::checkScenarioSetup(scenario, options);  // refuses a grasp that cannot start before the folder exists
     prepareFolder(o.out);
     ProgressMeter meter("simulating", o.quiet);
-    const simulation::SimulationResult result = simulation::runGraspSimulation(scenario, options, makeProgress(meter));
+    simulation::SimulationResult result = simulation::runGraspSimulation(scenario, options, makeProgress(meter));
+    result.summary.planTime = planTime;
     meter.finish();
     results::writeResultFolder(o.out, scenario, result, makeRunProvenance(commandLine, options));
     opensim::writeOpenSimResultFiles(o.out, result);

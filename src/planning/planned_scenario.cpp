@@ -57,8 +57,9 @@ std::string formatPlannedScenario(const scenario::Scenario& planned, const Grasp
                   d.deepestSegment.empty() ? "" : " (", d.deepestSegment.empty() ? "" : (d.deepestSegment + ")").c_str());
     header << line;
     for (const GoalCheck& g : d.goals) {
-        std::snprintf(line, sizeof line, "  %s pad %.2f mm off the surface, facing it within %.0f deg\n",
-                      g.effector.c_str(), g.gap * 1000, g.misalignment * 180 / SimTK::Pi);
+        std::snprintf(line, sizeof line, "  %s pad %.2f mm off the surface, facing it within %.0f deg, IK %.2f mm short of its pressed goal, %.2f mm inside\n",
+                      g.effector.c_str(), g.gap * 1000, g.misalignment * 180 / SimTK::Pi, g.reachShortfall * 1000,
+                      g.commandedPress * 1000);
         header << line;
     }
     std::snprintf(line, sizeof line, "Grasp quality Q = %.3g (smallest singular value, unit normal forces)%s.",
