@@ -73,7 +73,7 @@ public:
     std::string findReleaseReason() const override {
         const simulation::GraspSwitch* grasp = scene_.getGraspSwitch();
         if (!grasp) return {};
-        for (const simulation::GraspEvent& e : grasp->getEvents()) {
+        for (const simulation::GraspEvent& e : grasp->getEvents(getState())) {
             if (e.kind == simulation::GraspEventKind::Release) return "t = " + std::to_string(e.time) + " s: " + e.reason;
         }
         return {};

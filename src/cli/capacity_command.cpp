@@ -34,6 +34,7 @@ struct CapacityCommand::Options {
     std::string qMinimum;
     std::string limitsFriction = "dynamic";
     std::string limits = "thesis";
+    std::string accuracy;
     std::string out;
 };
 
@@ -58,6 +59,7 @@ CapacityCommand::CapacityCommand(CLI::App& app) : options_(std::make_shared<Opti
     command_->add_option("--rate", o.rate, "ramp rate, N/s (N m/s with --torque), > 0 (default: 2 object weights per second; with --direction all "
                          "the forces' rate, the torques' scaled by the farthest goal's distance)");
     command_->add_option("--method", o.method, "ramp (default) or bisection (constant loads, --hold s each)");
+    command_->add_option("--accuracy", o.accuracy, "integrator relative accuracy in (0, 1) (default: the scenario's)");
     command_->add_option("--max-duration", o.maxDuration, "ramp: longest ramp, s (default 4)");
     command_->add_option("--hold", o.hold, "bisection: how long each constant load is held, s (default 1)");
     command_->add_option("--guess", o.guess, "bisection: first load to try, N or N m (default: rate x 1 s)");
@@ -122,6 +124,7 @@ CapacityCommand::Plan CapacityCommand::makePlan() const {
     Plan plan;
     plan.simulation.contact = simulation::parseContactModel(o.contact, "--contact");
     plan.simulation.mode = simulation::parseSimulationMode(o.mode, "--mode");
+    plan.simulation.accuracy = parseAccuracy(o.accuracy);
     plan.simulation.approx.constraint = simulation::parseApproxConstraint(o.constraint, "--constraint");
     plan.simulation.approx.attach = simulation::parseApproxAttach(o.attach, "--attach");
     plan.simulation.approx.releaseSlideDistance = parsePositive(o.releaseSlide, "--release-slide", "the release distance (m)", 0.005);

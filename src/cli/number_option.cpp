@@ -16,4 +16,11 @@ double parseNumber(const std::string& text, const std::string& flag, const std::
     return value;
 }
 
+double parseAccuracy(const std::string& text) {
+    if (text.empty()) return 0;
+    const double value = parseNumber(text, "--accuracy", "a number in (0, 1)");
+    if (!(value > 0 && value < 1)) throw InputError("--accuracy: value " + text + " is not accepted; use a number in (0, 1)");
+    return value;
+}
+
 }  // namespace graspsim::cli

@@ -10,4 +10,7 @@ namespace graspsim::cli {
 // rejects them with the accepted range). Throws InputError "<flag>: value '<text>' is not a number; <accepted>".
 double parseNumber(const std::string& text, const std::string& flag, const std::string& accepted);
 
+// --accuracy: an integrator relative accuracy in (0, 1); empty keeps the scenario's (returns 0).
+double parseAccuracy(const std::string& text);
+
 }  // namespace graspsim::cli

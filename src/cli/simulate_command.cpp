@@ -4,6 +4,7 @@
 #include "progress_meter.h"
 
 #include "graspsim/planning/planned_scenario.h"
+#include "graspsim/contact/anchor_friction.h"
 #include "graspsim/error.h"
 #include "graspsim/opensim/opensim_storage.h"
 #include "graspsim/results/result_folder.h"
@@ -16,6 +17,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <chrono>
 #include <iostream>
 
 namespace graspsim::cli {
@@ -23,6 +25,7 @@ namespace graspsim::cli {
 struct SimulateCommand::Options {
     std::string scenario;
     std::string contact = "compliant";
+    std::string friction;
     std::string mode = "full";
     std::string constraint = "bushing";
     std::string attach = "merged";
@@ -42,6 +45,9 @@ SimulateCommand::SimulateCommand(CLI::App& app) : options_(std::make_shared<Opti
     command_ = app.add_subcommand("simulate", "Simulate a grasp scenario (full contact or the grasp approximation) and write the results");
     command_->add_option("scenario", o.scenario, "built-in scenario (ball-clutch, phone-pinch; planned: ball-tripod, can-power, key-lateral) or a scenario file")->required();
     command_->add_option("--contact", o.contact, "compliant (default) or rigid");
+    command_->add_option("--friction", o.friction,
+                         "compliant contact's friction law, regularized or anchor (true stiction; default: the "
+                         "scenario's contact.friction_model, itself regularized by default)");
     command_->add_option("--mode", o.mode, "full (default) or approx");
     command_->add_option("--constraint", o.constraint,
                          "approx: the friction-limited palm-object constraint, bushing (compliant, default) or weld (rigid)");
@@ -77,14 +83,6 @@ double parseQuality(const std::string& text, const std::string& source) {
     if (!(value > 0) || !std::isfinite(value)) {
         throw InputError(source + ": value " + text + " is not accepted; the grasp quality must be a number of newtons > 0");
     }
-    return value;
-}
-
-// A relative accuracy in (0, 1); empty keeps the scenario's (0).
-double parseAccuracy(const std::string& text) {
-    if (text.empty()) return 0;
-    const double value = parseNumber(text, "--accuracy", "a number in (0, 1)");
-    if (!(value > 0 && value < 1)) throw InputError("--accuracy: value " + text + " is not accepted; use a number in (0, 1)");
     return value;
 }
 
@@ -130,6 +128,13 @@ simulation::SimulationOptions SimulateCommand::parseOptions() const {
     const Options& o = *options_;
     simulation::SimulationOptions options;
     options.contact = simulation::parseContactModel(o.contact, "--contact");
+    if (!o.friction.empty()) {  // refused before any work
+        contact::parseFrictionModel(o.friction, "--friction");
+        if (options.contact == simulation::ContactModel::Rigid) {
+            throw InputError("--friction: '" + o.friction + "' is not accepted with --contact rigid; it chooses the "
+                             "compliant contact's friction law (rigid contact has Coulomb friction)");
+        }
+    }
     options.mode = simulation::parseSimulationMode(o.mode, "--mode");
     options.duration = parseDuration(o.duration);
     options.integrator = simulation::parseIntegratorChoice(o.integrator, "--integrator");
@@ -186,14 +191,20 @@ results::RunProvenance makeRunProvenance(const std::vector<std::string>& command
 int SimulateCommand::run(const std::vector<std::string>& commandLine) const {
     const Options& o = *options_;
     simulation::SimulationOptions options = parseOptions();
-    const scenario::Scenario scenario = planning::loadScenario(o.scenario);
+    scenario::Scenario scenario = scenario::loadScenario(o.scenario);
+    const auto planStart = std::chrono::steady_clock::now();
+    const bool planned = !scenario.graspType.empty();
+    planning::completeScenario(scenario);  // plans the grasp if the file asks for one
+    const double planTime = planned ? std::chrono::duration<double>(std::chrono::steady_clock::now() - planStart).count() : 0.0;
+    if (!o.friction.empty()) scenario.contact.frictionModel = o.friction;  // scenario.yaml records it
     checkPerturbation(o.perturbation, scenario);
     options.perturbation = o.perturbation;
     simulation::checkApproxAttach(scenario, options);
     simulation::checkScenarioSetup(scenario, options);  // refuses a grasp that cannot start before the folder exists
     prepareFolder(o.out);
     ProgressMeter meter("simulating", o.quiet);
-    const simulation::SimulationResult result = simulation::runGraspSimulation(scenario, options, makeProgress(meter));
+    simulation::SimulationResult result = simulation::runGraspSimulation(scenario, options, makeProgress(meter));
+    result.summary.planTime = planTime;
     meter.finish();
     results::writeResultFolder(o.out, scenario, result, makeRunProvenance(commandLine, options));
     opensim::writeOpenSimResultFiles(o.out, result);

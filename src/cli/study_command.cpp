@@ -9,6 +9,7 @@
 #include "graspsim/study/slurm_job.h"
 #include "graspsim/study/study_case.h"
 #include "graspsim/study/study_folder.h"
+#include "graspsim/study/study_grid_table.h"
 #include "graspsim/study/study_plots.h"
 #include "graspsim/study/study_runner.h"
 #include "graspsim/study/study_table.h"
@@ -111,10 +112,12 @@ LoadedStudy loadStudy(const std::string& path) {
 int mergeResults(const study::StudySpec& spec, const std::string& folder) {
     const study::StudyTable table = study::collectStudyTable(spec, folder);
     study::writeStudyTable(folder, table);
+    const std::string grid = study::formatGridTable(spec, folder);
+    if (!grid.empty()) io::writeFileAtomically(folder + "/results.md", grid);
     const int finished = table.total - static_cast<int>(table.missing.size());
     std::cout << "study '" << spec.name << "': " << table.total << " cases, " << finished - static_cast<int>(table.failed.size())
               << " ok, " << table.failed.size() << " failed, " << table.missing.size() << " missing; table in " << folder
-              << "/results.csv\n";
+              << "/results.csv" << (grid.empty() ? "" : " (a grid by base scenario in results.md)") << "\n";
     if (!table.failed.empty()) std::cout << "failed (see their error column): " << study::formatCaseList(table.failed) << "\n";
     if (!table.missing.empty()) {
         std::cout << "missing: " << study::formatCaseList(table.missing)

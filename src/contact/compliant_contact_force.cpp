@@ -6,6 +6,7 @@
 #include <string>
 #include <utility>
 
+#include "graspsim/contact/anchor_friction.h"
 #include "graspsim/contact/contact_force_law.h"
 #include "graspsim/contact/shape_contact.h"
 #include "graspsim/error.h"
@@ -15,6 +16,9 @@ namespace graspsim::contact {
 namespace {
 
 using EnabledFlags = std::vector<bool>;
+
+// Z variables per pair with anchors: the deflection z (3, in body a's frame) and sigma.
+constexpr int kAnchorSize = 4;
 
 // A pair with its materials combined once, at construction.
 struct PreparedPair {
@@ -52,8 +56,31 @@ ContactForce calcContactForce(const ContactParameters& parameters, const Contact
     force.depthRate = -vNormal;  // b moving toward a (against n) deepens the contact
     force.slipVelocity_G = v - vNormal * contact.n_G;
     force.normalForce = calcNormalForce(parameters, contact.radius, contact.depth, force.depthRate);
-    force.frictionForce_G = calcFrictionForce(parameters, force.normalForce, force.slipVelocity_G);
     return force;
+}
+
+// The anchor's view of a pair's contact points (anchor_friction.h), with each point's share of
+// the pair's friction (stiffness weights, summing to 1) in `weights`.
+AnchorContact makeAnchorContact(const ContactParameters& parameters, const AnchorFrictionParameters& anchor,
+                                const std::vector<ContactPoint>& contacts, const std::vector<ContactForce>& forces,
+                                const BodyMotion& a, const BodyMotion& b, std::vector<double>& weights) {
+    AnchorContact pair;
+    weights.clear();
+    SimTK::Vec3 n(0), v(0);
+    for (std::size_t k = 0; k < contacts.size(); ++k) {
+        const double stiffness = calcAnchorStiffness(parameters, anchor, contacts[k].radius, contacts[k].depth);
+        weights.push_back(stiffness);
+        pair.stiffness += stiffness;
+        pair.normalForce += forces[k].normalForce;
+        n += stiffness * contacts[k].n_G.asVec3();
+        v += stiffness * (b.findPointVelocity(contacts[k].p_G) - a.findPointVelocity(contacts[k].p_G));
+    }
+    for (double& w : weights) w /= pair.stiffness;
+    // Opposed normals cancelling (not met with convex shapes) fall back on the first point's.
+    pair.n_G = n.normSqr() > 0 ? SimTK::UnitVec3(n) : contacts.front().n_G;
+    v /= pair.stiffness;  // the relative velocity at the weighted centre (it is affine in the point)
+    pair.slipVelocity_G = v - SimTK::dot(v, pair.n_G) * pair.n_G;
+    return pair;
 }
 
 // Adds force F (N, in G) applied at point p_G to body `body`'s entry of bodyForces.
@@ -75,13 +102,25 @@ std::vector<ContactPoint>& updScratchContacts() {
     return contacts;
 }
 
+// The same for the forces of those points and their friction shares.
+std::vector<ContactForce>& updScratchForces() {
+    thread_local std::vector<ContactForce> forces;
+    forces.clear();
+    return forces;
+}
+std::vector<double>& updScratchWeights() {
+    thread_local std::vector<double> weights;
+    return weights;
+}
+
 }  // namespace
 
 class CompliantContactForceImpl : public SimTK::Force::Custom::Implementation {
 public:
     CompliantContactForceImpl(const SimTK::GeneralForceSubsystem& forces,
-                              std::vector<ContactPair> pairs)
-        : forces_(forces) {
+                              std::vector<ContactPair> pairs, const FrictionSettings& friction)
+        : forces_(forces), friction_(friction) {
+        if (friction.model == FrictionModel::Anchor) friction.anchor.validate("compliant contact friction");
         pairs_.reserve(pairs.size());
         for (ContactPair& pair : pairs) {
             const std::string name = "contact pair '" + pair.describe() + "'";
@@ -100,6 +139,8 @@ public:
 
     int getNumPairs() const { return static_cast<int>(pairs_.size()); }
     const ContactPair& getPair(int i) const { return pairs_.at(i).pair; }
+    const FrictionSettings& getFrictionSettings() const { return friction_; }
+    bool hasAnchors() const { return friction_.model == FrictionModel::Anchor; }
 
     const EnabledFlags& getEnabledFlags(const SimTK::State& state) const {
         return SimTK::Value<EnabledFlags>::downcast(
@@ -112,22 +153,44 @@ public:
             .upd();
     }
 
+    // Pair i's anchor deflection z (m) in its body a's frame; zero without anchors.
+    SimTK::Vec3 getAnchorDeflection(const SimTK::State& state, int i) const {
+        if (!hasAnchors()) return SimTK::Vec3(0);
+        const SimTK::Vector& z = forces_.getZ(state);
+        const int k = zStart_ + kAnchorSize * i;
+        return {z[k], z[k + 1], z[k + 2]};
+    }
+    double getAnchorSliding(const SimTK::State& state, int i) const {
+        return hasAnchors() ? forces_.getZ(state)[zStart_ + kAnchorSize * i + 3] : 0.0;
+    }
+
     void realizeTopology(SimTK::State& state) const override {
         EnabledFlags defaults;
         for (const PreparedPair& p : pairs_) defaults.push_back(p.pair.enabledByDefault);
         enabledIndex_ = forces_.allocateDiscreteVariable(state, SimTK::Stage::Instance,
                                                          new SimTK::Value<EnabledFlags>(defaults));
+        if (hasAnchors()) zStart_ = forces_.allocateZ(state, SimTK::Vector(kAnchorSize * getNumPairs(), 0.0));
     }
 
+    // Also sets the anchors' rates: calcForce is called while the State is realized to
+    // Stage::Dynamics, where Z derivatives are written, for every evaluation of an enabled element.
     void calcForce(const SimTK::State& state, SimTK::Vector_<SimTK::SpatialVec>& bodyForces,
                    SimTK::Vector_<SimTK::Vec3>&, SimTK::Vector&) const override {
-        forEachContact(state, [&](int i, const ContactPoint& contact, const BodyMotion& a,
-                                  const BodyMotion& b) {
-            const ContactForce force = calcContactForce(pairs_[i].parameters, contact, a, b);
-            const SimTK::Vec3 F_G = force.normalForce * contact.n_G + force.frictionForce_G;
-            applyForceAtPoint(pairs_[i].pair.a.body, a, contact.p_G, -F_G, bodyForces);
-            applyForceAtPoint(pairs_[i].pair.b.body, b, contact.p_G, F_G, bodyForces);
-        });
+        const EnabledFlags& enabled = getEnabledFlags(state);
+        for (int i = 0; i < getNumPairs(); ++i) {
+            AnchorState rate;
+            if (enabled[i]) {
+                forEachPairForce(state, i, rate, [&](const ContactPoint& contact, const ContactForce& force,
+                                                                 const BodyMotion& a, const BodyMotion& b) {
+                    const SimTK::Vec3 F_G = force.normalForce * contact.n_G + force.frictionForce_G;
+                    applyForceAtPoint(pairs_[i].pair.a.body, a, contact.p_G, -F_G, bodyForces);
+                    applyForceAtPoint(pairs_[i].pair.b.body, b, contact.p_G, F_G, bodyForces);
+                });
+            } else if (hasAnchors()) {
+                rate = calcAnchorRelaxationRate(friction_.anchor, getAnchorState(state, i));
+            }
+            if (hasAnchors()) setAnchorRate(state, i, rate);
+        }
     }
 
     SimTK::Real calcPotentialEnergy(const SimTK::State& state) const override {
@@ -173,34 +236,62 @@ private:
         return contacts;
     }
 
+    // Pair i's anchor with its deflection in Ground.
+    AnchorState getAnchorState(const SimTK::State& state, int i) const {
+        return {pairs_[i].pair.a.body.getBodyRotation(state) * getAnchorDeflection(state, i),
+                getAnchorSliding(state, i)};
+    }
+
+    void setAnchorRate(const SimTK::State& state, int i, const AnchorState& rate) const {
+        const SimTK::Vec3 rate_A = ~pairs_[i].pair.a.body.getBodyRotation(state) * rate.deflection_G;
+        SimTK::Vector& zDot = forces_.updZDot(state);
+        const int first = zStart_ + kAnchorSize * i;
+        for (int k = 0; k < 3; ++k) zDot[first + k] = rate_A[k];
+        zDot[first + 3] = rate.sliding;
+    }
+
+    // Calls visit(contact, force, motionA, motionB) for every contact point of pair i with its
+    // normal and friction forces, and sets `rate` to the pair anchor's rate (its relaxation
+    // when the pair has no contact; untouched for the regularized law).
+    template <class Visit>
+    void forEachPairForce(const SimTK::State& state, int i, AnchorState& rate, Visit&& visit) const {
+        const std::vector<ContactPoint>& contacts = findPairContacts(state, i);
+        if (contacts.empty()) {
+            if (hasAnchors()) rate = calcAnchorRelaxationRate(friction_.anchor, getAnchorState(state, i));
+            return;
+        }
+        const ContactParameters& parameters = pairs_[i].parameters;
+        const BodyMotion a = findBodyMotion(state, pairs_[i].pair.a.body);
+        const BodyMotion b = findBodyMotion(state, pairs_[i].pair.b.body);
+        std::vector<ContactForce>& forces = updScratchForces();
+        for (const ContactPoint& contact : contacts) forces.push_back(calcContactForce(parameters, contact, a, b));
+        if (hasAnchors()) {
+            std::vector<double>& weights = updScratchWeights();
+            const AnchorContact pair = makeAnchorContact(parameters, friction_.anchor, contacts, forces, a, b, weights);
+            const AnchorFriction friction =
+                calcAnchorFriction(parameters, friction_.anchor, pair, getAnchorState(state, i));
+            for (std::size_t k = 0; k < forces.size(); ++k) forces[k].frictionForce_G = weights[k] * friction.force_G;
+            rate = friction.rate;
+        } else {
+            for (ContactForce& force : forces) {
+                force.frictionForce_G = calcFrictionForce(parameters, force.normalForce, force.slipVelocity_G);
+            }
+        }
+        for (std::size_t k = 0; k < forces.size(); ++k) visit(contacts[k], forces[k], a, b);
+    }
+
     template <class Selected>
     std::vector<ContactReport> findReports(const SimTK::State& state, Selected&& selected) const {
         std::vector<ContactReport> reports;
-        forEachContact(state, selected, [&](int i, const ContactPoint& contact, const BodyMotion& a, const BodyMotion& b) {
-            reports.push_back(makeReport(i, contact, calcContactForce(pairs_[i].parameters, contact, a, b)));
-        });
-        return reports;
-    }
-
-    // Calls visit(pairIndex, contact, motionA, motionB) for every contact of every enabled
-    // pair. No early exit: a contact with zero force does not hide the ones after it.
-    template <class Visit>
-    void forEachContact(const SimTK::State& state, Visit&& visit) const {
-        const EnabledFlags& enabled = getEnabledFlags(state);
-        forEachContact(state, [&](int i) { return bool(enabled[i]); }, visit);
-    }
-
-    // The same for every pair i with selected(i).
-    template <class Selected, class Visit>
-    void forEachContact(const SimTK::State& state, Selected&& selected, Visit&& visit) const {
         for (int i = 0; i < getNumPairs(); ++i) {
             if (!selected(i)) continue;
-            const std::vector<ContactPoint>& contacts = findPairContacts(state, i);
-            if (contacts.empty()) continue;
-            const BodyMotion a = findBodyMotion(state, pairs_[i].pair.a.body);
-            const BodyMotion b = findBodyMotion(state, pairs_[i].pair.b.body);
-            for (const ContactPoint& contact : contacts) visit(i, contact, a, b);
+            AnchorState unused;
+            forEachPairForce(state, i, unused, [&](const ContactPoint& contact, const ContactForce& force,
+                                                   const BodyMotion&, const BodyMotion&) {
+                reports.push_back(makeReport(i, contact, force));
+            });
         }
+        return reports;
     }
 
     ContactReport makeReport(int i, const ContactPoint& contact, const ContactForce& force) const {
@@ -217,7 +308,9 @@ private:
 
     const SimTK::GeneralForceSubsystem& forces_;
     std::vector<PreparedPair> pairs_;
+    FrictionSettings friction_;
     mutable SimTK::DiscreteVariableIndex enabledIndex_;
+    mutable SimTK::ZIndex zStart_;
 };
 
 namespace {
@@ -230,7 +323,20 @@ const CompliantContactForceImpl& asContactImpl(const SimTK::Force::Custom::Imple
 
 CompliantContactForce::CompliantContactForce(SimTK::GeneralForceSubsystem& forces,
                                              std::vector<ContactPair> pairs)
-    : SimTK::Force::Custom(forces, new CompliantContactForceImpl(forces, std::move(pairs))) {}
+    : CompliantContactForce(forces, std::move(pairs), FrictionSettings()) {}
+
+CompliantContactForce::CompliantContactForce(SimTK::GeneralForceSubsystem& forces, std::vector<ContactPair> pairs,
+                                             const FrictionSettings& friction)
+    : SimTK::Force::Custom(forces, new CompliantContactForceImpl(forces, std::move(pairs), friction)) {}
+
+const FrictionSettings& CompliantContactForce::getFrictionSettings() const {
+    return asContactImpl(getImplementation()).getFrictionSettings();
+}
+
+SimTK::Vec3 CompliantContactForce::getAnchorDeflection(const SimTK::State& state, int pairIndex) const {
+    checkPairIndex(pairIndex);
+    return asContactImpl(getImplementation()).getAnchorDeflection(state, pairIndex);
+}
 
 void CompliantContactForce::checkPairIndex(int pairIndex) const {
     const int count = getNumPairs();

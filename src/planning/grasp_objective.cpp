@@ -98,6 +98,7 @@ double calcObjectWidth(const contact::ContactShape& shape) {
 GraspObjective::GraspObjective(const GraspRequest& request, const GraspTemplate& graspTemplate)
     : m_request(request), m_template(graspTemplate), m_arm(model::buildBodyModel(request.bodyOptions)) {
     for (const std::string& effector : graspTemplate.goalEffectors) m_pads.push_back(findPad(m_arm, effector));
+    m_targetGaps.assign(m_pads.size(), request.targetGap);
     for (const SegmentShape& s : m_arm.getSegmentShapes()) m_inflated.push_back(inflate(s.shape, kClearance));
     setUpVariables(graspTemplate);
     m_objectWidth = calcObjectWidth(request.shape);
@@ -112,9 +113,10 @@ void GraspObjective::setUpVariables(const GraspTemplate& graspTemplate) {
     for (int j = 0; j < static_cast<int>(joints.size()); ++j) {
         if (joints[j].getDofCount() == 0 || !isFingerJoint(joints[j].name)) continue;
         m_freeJoints.push_back(j);
-        m_start.push_back(std::clamp(m_baseAngles[j], joints[j].lower, joints[j].upper));
-        m_lower.push_back(joints[j].lower);
-        m_upper.push_back(joints[j].upper);
+        const double margin = std::min(graspTemplate.jointMargin, (joints[j].upper - joints[j].lower) / 4);
+        m_lower.push_back(joints[j].lower + margin);
+        m_upper.push_back(joints[j].upper - margin);
+        m_start.push_back(std::clamp(m_baseAngles[j], m_lower.back(), m_upper.back()));
         m_steps.push_back(0.1);
     }
     for (size_t k = 0; k < m_freeJoints.size(); ++k) {
@@ -236,7 +238,8 @@ double GraspObjective::calcGravityCost(const SimTK::Transform& X_GS, const SimTK
     if (g == 0) return 0;
     const SimTK::Vec3 down_S = ~X_GS.R() * (m_request.gravity / g);
     const double push = -dot(sumOutward_S, down_S) / double(m_pads.size());
-    return push > 0 ? kGravityWeight * push * push : 0;
+    const double deficit = push + m_template.minSupport;  // > 0: less support than the template asks
+    return deficit > 0 ? kGravityWeight * deficit * deficit : 0;
 }
 
 // Distal and proximal interphalangeal joints of a finger move together, DIP about 2/3 of PIP
@@ -260,7 +263,7 @@ double GraspObjective::evaluate(const double* x) {
         const SimTK::Vec3 p_SE = ~X_GS * (m_X_GB[pad.body] * pad.p_BE);
         const contact::SurfacePoint surface = contact::findSurfacePoint(m_request.shape, p_SE);
         const SimTK::Vec3 n_S = ~X_GS.R() * (m_X_GB[pad.body].R() * pad.n_B);
-        const double gapError = (surface.distance - m_request.targetGap) / kMillimetre;
+        const double gapError = (surface.distance - m_targetGaps[i]) / kMillimetre;
         cost += gapError * gapError + kAlignWeight * (1 + dot(n_S, surface.n_S));
         const double share = i == 0 ? 1.0 : 1.0 / double(m_pads.size() - 1);
         (i == 0 ? p_thumb : p_fingers) += share * surface.p_SP;

@@ -30,6 +30,9 @@ public:
     const std::vector<double>& getLowerBounds() const { return m_lower; }
     const std::vector<double>& getUpperBounds() const { return m_upper; }
     const std::vector<double>& getInitialSteps() const { return m_steps; }
+    // The wanted pad-to-surface distance of goal pad `pad` (m; all start at the request's targetGap).
+    double getTargetGap(std::size_t pad) const { return m_targetGaps.at(pad); }
+    void setTargetGap(std::size_t pad, double gap) { m_targetGaps.at(pad) = gap; }
     double getObjectWidth() const { return m_objectWidth; }
     double getHandSpan() const { return m_handSpan; }
     const std::string& getSpanName() const { return m_spanName; }
@@ -62,6 +65,7 @@ private:
     GraspTemplate m_template;
     ArmKinematics m_arm;
     std::vector<Pad> m_pads;
+    std::vector<double> m_targetGaps;               // per pad (m)
     std::vector<contact::ContactShape> m_inflated;  // segment shapes grown by the clearance
     std::vector<double> m_baseAngles;               // per joint: the template posture
     std::vector<int> m_freeJoints;                  // joint indices the optimizer moves

@@ -2,7 +2,9 @@
 
 #include "grasp_objective.h"
 
+#include "graspsim/contact/surface_point.h"
 #include "graspsim/model/body_model.h"
+#include "graspsim/planning/goal_reach.h"
 #include "graspsim/planning/grasp_template.h"
 #include "graspsim/planning/lateral_pinch.h"
 
@@ -10,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 namespace graspsim::planning {
@@ -76,7 +79,52 @@ int optimize(GraspObjective& objective, std::vector<double>& x) {
     return evaluations;
 }
 
+// The plan at the optimizer's x as a person would write it, with its checks' numbers.
+GraspPlan finishPlan(const GraspRequest& request, GraspObjective& objective, const std::vector<double>& x) {
+    GraspPlan plan = objective.makePlan(x.data());
+    roundPlan(plan);
+    plan.goals = objective.findGoals(plan.jointAngles, plan.X_GO);
+    plan.diagnostics = calcPlanDiagnostics(request, plan);
+    plan.diagnostics.cost = objective.evaluate(x.data());
+    return plan;
+}
+
+// Rounds of re-planning for fingers that cannot press their goals (the reach test), and the least
+// gap a pad is asked for (m): at 0 the rounded plan could start with the pad inside the object.
+constexpr int kReachRounds = 4;
+constexpr double kLeastTargetGap = 0.0002;
+
+// A finger short of its pressed goal by d needs to travel d less: its pad is aimed d nearer the
+// surface and the plan is optimized again from where it stands. Returns whether any gap changed.
+bool aimShortFingersNearer(const PlanDiagnostics& d, const PlanTolerances& tolerances, GraspObjective& objective) {
+    bool changed = false;
+    for (std::size_t i = 0; i < d.goals.size(); ++i) {
+        const GoalCheck& g = d.goals[i];
+        const double gap = objective.getTargetGap(i);
+        const double missing = std::max(g.reachShortfall - tolerances.maxReachShortfall + kLeastTargetGap,
+                                        tolerances.minCommandedPress - g.commandedPress + kLeastTargetGap);
+        if (missing <= kLeastTargetGap || gap <= kLeastTargetGap) continue;
+        objective.setTargetGap(i, std::max(kLeastTargetGap, gap - missing));
+        changed = true;
+    }
+    return changed;
+}
+
+bool isReachable(const PlanDiagnostics& d, const PlanTolerances& tolerances) {
+    for (const GoalCheck& g : d.goals) {
+        if (g.reachShortfall > tolerances.maxReachShortfall || g.commandedPress < tolerances.minCommandedPress) return false;
+    }
+    return true;
+}
+
 }  // namespace
+
+double findPlannedPressDepth(const scenario::Scenario& scenario) {
+    // A goal pressed past half the object's thickness would pass its centre (the reader refuses
+    // it): a thin object (a card in a lateral pinch) is pressed half that deep.
+    const double halfThickness = scenario.object.findHalfThickness(), press = scenario.controller.pressDepth;
+    return press < halfThickness ? press : std::round(halfThickness / 2 / 1e-4) * 1e-4;
+}
 
 GraspRequest makeGraspRequest(const scenario::Scenario& scenario, GraspType type) {
     const model::ModelDescription object = scenario::buildObjectModel(scenario.object);
@@ -87,6 +135,7 @@ GraspRequest makeGraspRequest(const scenario::Scenario& scenario, GraspType type
     request.X_OS = contact::findGeometryPose(geometry);
     request.type = type;
     request.gravity = SimTK::Vec3(scenario.world.gravity[0], scenario.world.gravity[1], scenario.world.gravity[2]);
+    request.pressDepth = findPlannedPressDepth(scenario);
     return request;
 }
 
@@ -113,16 +162,16 @@ GraspPlan planGrasp(const GraspRequest& givenRequest, const PlanTolerances& tole
     checkFits(objective, request.type);
 
     std::vector<double> x = objective.getStart();
-    const int evaluations = optimize(objective, x);
-
-    GraspPlan plan = objective.makePlan(x.data());
-    roundPlan(plan);
-    plan.goals = objective.findGoals(plan.jointAngles, plan.X_GO);
+    int evaluations = optimize(objective, x);
+    GraspPlan plan = finishPlan(request, objective, x);
+    for (int round = 0; round < kReachRounds && !isReachable(plan.diagnostics, tolerances); ++round) {
+        if (!aimShortFingersNearer(plan.diagnostics, tolerances, objective)) break;
+        evaluations += optimize(objective, x);
+        plan = finishPlan(request, objective, x);
+    }
     plan.kp = graspTemplate.kp;
     plan.segmentPoints = request.bodyOptions.segmentPoints;
-    plan.diagnostics = calcPlanDiagnostics(request, plan);
     plan.diagnostics.evaluations = evaluations;
-    plan.diagnostics.cost = objective.evaluate(x.data());
     const std::string failed = findFailedCheck(plan.diagnostics, tolerances);
     if (!failed.empty()) {
         throw NoGraspError("no " + toString(request.type) + " grasp found: " + failed + " (object width " +
@@ -146,6 +195,18 @@ std::string findFailedCheck(const PlanDiagnostics& d, const PlanTolerances& tole
             return out.str();
         }
     }
+    for (const GoalCheck& goal : d.goals) {
+        if (goal.reachShortfall > tolerances.maxReachShortfall) {
+            return "the " + goal.effector + " cannot press its goal: the controller's IK ends " +
+                   formatMm(goal.reachShortfall) + " from it (accepted: " + formatMm(tolerances.maxReachShortfall) + ")";
+        }
+        if (goal.commandedPress < tolerances.minCommandedPress) {
+            char depth[64];
+            std::snprintf(depth, sizeof depth, "%.2f mm inside the object (needed: %.2f mm)", goal.commandedPress * 1000,
+                          tolerances.minCommandedPress * 1000);
+            return "the " + goal.effector + " cannot press its goal: the controller's IK puts its pad " + depth;
+        }
+    }
     if (d.maxPenetration > tolerances.maxPenetration) {
         return "segment '" + d.deepestSegment + "' is " + formatMm(d.maxPenetration) + " inside the object (accepted: " +
                formatMm(tolerances.maxPenetration) + ")";
@@ -161,11 +222,26 @@ std::string findFailedCheck(const PlanDiagnostics& d, const PlanTolerances& tole
     return "";
 }
 
-PlanDiagnostics calcPlanDiagnostics(const GraspRequest& request, const GraspPlan& plan) {
-    GraspTemplate graspTemplate = findGraspTemplate(request.type);
+PlanDiagnostics calcPlanDiagnostics(const GraspRequest& givenRequest, const GraspPlan& plan) {
+    GraspTemplate graspTemplate = findGraspTemplate(givenRequest.type);
     graspTemplate.goalEffectors = plan.goalEffectors;
-    const GraspObjective objective(withSegmentPoints(request, plan.segmentPoints), graspTemplate);
-    return objective.calcDiagnostics(plan.jointAngles, plan.X_GO);
+    const GraspRequest request = withSegmentPoints(givenRequest, plan.segmentPoints);
+    const GraspObjective objective(request, graspTemplate);
+    PlanDiagnostics d = objective.calcDiagnostics(plan.jointAngles, plan.X_GO);
+    // The goals as the controller presses them at t = 0 (simulation/grasp_scene.cpp).
+    std::vector<PressedGoal> pressed;
+    for (const std::string& effector : plan.goalEffectors) {
+        const SimTK::Vec3& p_OP = plan.goals.at(effector);
+        const SimTK::Vec3 n_O = request.X_OS.R() * contact::findSurfacePoint(request.shape, ~request.X_OS * p_OP).n_S;
+        pressed.push_back({effector, plan.X_GO * (p_OP - request.pressDepth * n_O)});
+    }
+    const std::vector<GoalReach> reach = calcGoalReach(request.bodyOptions, plan.jointAngles, pressed);
+    const SimTK::Transform X_GS = plan.X_GO * request.X_OS;
+    for (std::size_t i = 0; i < d.goals.size() && i < reach.size(); ++i) {
+        d.goals[i].reachShortfall = reach[i].shortfall;
+        d.goals[i].commandedPress = -contact::findSurfacePoint(request.shape, ~X_GS * reach[i].p_GE).distance;
+    }
+    return d;
 }
 
 }  // namespace graspsim::planning

@@ -52,6 +52,18 @@ GraspTemplate findGraspTemplate(GraspType type) {
             t.goalEffectors = {"thumb_tip", "index_tip", "middle_tip", "ring_tip", "little_tip"};
             t.kp = 10;  // as ball-clutch.yaml: five fingers hold a 9.5 N pull
             t.startUnderPalm = true;
+            // A wrap carries the object on the fingers (docs/planning.md): squeezed level
+            // between thumb and fingertips, a 200 g cylinder hung on friction alone, the thumb's
+            // friction at its cone's edge, and slid out.
+            if (type == GraspType::PowerCylinder) {
+                t.minSupport = 0.3;
+                // Fingers side by side along the cylinder, as in a wrap, not spread as round the
+                // ball: spread, a 1.90 m man's index and little pads reached past the ends of a
+                // 120 mm cylinder onto its rims, where they cannot press.
+                for (const char* finger : {"index", "middle", "ring", "little"}) {
+                    t.startPose[std::string(finger) + "_mcp_abduction"] = 0;
+                }
+            }
             break;
         case GraspType::Lateral: return findLateralTemplate();
         case GraspType::Pinch:

@@ -70,6 +70,11 @@ GraspTemplate findLateralTemplate() {
     // contact, and its friction in the stiction band (mu N / transition velocity on a 20 g body)
     // stalled the integrator after the release; at 2 it holds with about 0.4 N.
     t.kp = 2;
+    // The thumb reaches over the index only extended to its CMC limit (-20 deg); it presses by
+    // flexing, away from that limit, so the 5 deg margin the other types keep only costs the reach
+    // (the plan's reach test still checks that both pads press). With 5 deg the key's plan put the
+    // pads at opposite corners; with 0.5 deg the 100 kg man's thumb could not press.
+    t.jointMargin = 0;
     return t;
 }
 

@@ -22,10 +22,7 @@ scenario::Scenario applyPlan(const scenario::Scenario& base, const GraspPlan& pl
     s.object.orientation = {xyz[0], xyz[1], xyz[2]};
     s.controller.kp = plan.kp;
     s.bodyOptions.segmentPoints = plan.segmentPoints;
-    // A thin object (a card in a lateral pinch): a goal pressed past half its thickness would pass
-    // the centre (the reader refuses it), so the press goes half that deep.
-    const double halfThickness = s.object.findHalfThickness();
-    if (s.controller.pressDepth >= halfThickness) s.controller.pressDepth = std::round(halfThickness / 2 / 1e-4) * 1e-4;
+    s.controller.pressDepth = findPlannedPressDepth(s);  // as planned: within a thin object's half-thickness
     return s;
 }
 
@@ -63,8 +60,9 @@ std::string formatPlannedScenario(const scenario::Scenario& planned, const Grasp
                   d.deepestSegment.empty() ? "" : " (", d.deepestSegment.empty() ? "" : (d.deepestSegment + ")").c_str());
     header << line;
     for (const GoalCheck& g : d.goals) {
-        std::snprintf(line, sizeof line, "  %s pad %.2f mm off the surface, facing it within %.0f deg\n",
-                      g.effector.c_str(), g.gap * 1000, g.misalignment * 180 / SimTK::Pi);
+        std::snprintf(line, sizeof line, "  %s pad %.2f mm off the surface, facing it within %.0f deg, IK %.2f mm short of its pressed goal, %.2f mm inside\n",
+                      g.effector.c_str(), g.gap * 1000, g.misalignment * 180 / SimTK::Pi, g.reachShortfall * 1000,
+                      g.commandedPress * 1000);
         header << line;
     }
     std::snprintf(line, sizeof line, "Grasp quality Q = %.3g (smallest singular value, unit normal forces)%s.",

@@ -93,6 +93,7 @@ std::string formatSummaryJson(const simulation::SimulationSummary& s) {
     if (!s.complete) j["failure"] = s.failure;
     j["sim_time_s"] = s.simTime;
     j["wall_time_s"] = s.wallTime;
+    j["plan_time_s"] = s.planTime;
     j["steps"] = s.steps;
     j["mean_step_us"] = s.meanStepUs;
     j["ik_us_per_step"] = s.ikUsPerStep;

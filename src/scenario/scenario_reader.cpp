@@ -153,10 +153,26 @@ std::map<std::string, Vec3> readGoals(const YamlField& root, const model::ModelD
     return goals;
 }
 
+// The friction law and the anchor law's parameters (each finite and > 0).
+void readAnchorFriction(const YamlField& section, ContactSpec& contact) {
+    if (const std::optional<YamlField> model = section.find("friction_model")) {
+        const std::string accepted = "friction_model must be regularized or anchor";
+        contact.frictionModel = model->asText(accepted);
+        if (contact.frictionModel != "regularized" && contact.frictionModel != "anchor") model->reject(accepted);
+    }
+    contact.anchorStiffnessRatio = section.findNumber(
+        "anchor_stiffness_ratio", NumberRule::positive("anchor stiffness ratio", "k_t / k_n"), contact.anchorStiffnessRatio);
+    contact.anchorDampingMass = section.findNumber("anchor_damping_mass", NumberRule::positive("anchor damping mass", "kg"),
+                                                   contact.anchorDampingMass);
+    contact.anchorRelaxationTime = section.findNumber(
+        "anchor_relaxation_time", NumberRule::positive("anchor relaxation time", "s"), contact.anchorRelaxationTime);
+}
+
 ContactSpec readContact(const YamlField& root) {
     const YamlField section = root.getSection(
         "contact", {"stiffness", "dissipation", "static_friction", "dynamic_friction", "viscous_friction",
-                    "transition_velocity"});
+                    "transition_velocity", "friction_model", "anchor_stiffness_ratio", "anchor_damping_mass",
+                    "anchor_relaxation_time"});
     ContactSpec contact;
     contact.stiffness = section.findNumber("stiffness", NumberRule::positive("stiffness", "Pa"), contact.stiffness);
     contact.dissipation =
@@ -170,6 +186,7 @@ ContactSpec readContact(const YamlField& root) {
         "viscous_friction", NumberRule::nonNegative("viscous friction", "s/m"), contact.viscousFriction);
     contact.transitionVelocity = section.findNumber(
         "transition_velocity", NumberRule::positive("transition velocity", "m/s"), contact.transitionVelocity);
+    readAnchorFriction(section, contact);
     return contact;
 }
 

@@ -87,7 +87,13 @@ void writeSettings(std::ostringstream& out, const Scenario& s) {
     out << "contact:\n  stiffness: " << formatNumber(c.stiffness) << "\n  dissipation: " << formatNumber(c.dissipation)
         << "\n  static_friction: " << formatNumber(c.staticFriction) << "\n  dynamic_friction: " << formatNumber(c.dynamicFriction)
         << "\n  viscous_friction: " << formatNumber(c.viscousFriction)
-        << "\n  transition_velocity: " << formatNumber(c.transitionVelocity) << "\n\n";
+        << "\n  transition_velocity: " << formatNumber(c.transitionVelocity) << "\n";
+    if (c.frictionModel != "regularized") {  // the default law leaves the file as it was
+        out << "  friction_model: " << c.frictionModel << "\n  anchor_stiffness_ratio: " << formatNumber(c.anchorStiffnessRatio)
+            << "\n  anchor_damping_mass: " << formatNumber(c.anchorDampingMass)
+            << "\n  anchor_relaxation_time: " << formatNumber(c.anchorRelaxationTime) << "\n";
+    }
+    out << "\n";
     const ControllerSpec& k = s.controller;
     out << "controller:\n  approach_time: " << formatNumber(k.approachTime) << "\n  press_depth: " << formatNumber(k.pressDepth)
         << "\n  kp: " << formatNumber(k.kp) << "\n  kd: " << formatNumber(k.kd) << "\n  ik_interval: " << formatNumber(k.ikInterval)

@@ -40,6 +40,16 @@ contact::ContactMaterial makeSurfaceMaterial(const scenario::ContactSpec& c) {
     return m;
 }
 
+// The scenario's friction law for the compliant contact element.
+contact::FrictionSettings makeFrictionSettings(const scenario::ContactSpec& c) {
+    contact::FrictionSettings friction;
+    friction.model = contact::parseFrictionModel(c.frictionModel, "scenario contact.friction_model");
+    friction.anchor.stiffnessRatio = c.anchorStiffnessRatio;
+    friction.anchor.dampingMass = c.anchorDampingMass;
+    friction.anchor.relaxationTime = c.anchorRelaxationTime;
+    return friction;
+}
+
 // The movable joints from the palm out to an end-effector's body (the digit's own joints).
 std::vector<std::string> findFingerJoints(const model::ModelDescription& d, const std::string& endEffector) {
     std::vector<std::string> joints;
@@ -142,7 +152,7 @@ void GraspScene::addContacts() {
         rigidContacts_ = contact::RigidContactSet(model_.updMatter(), pairs);
         return;
     }
-    contacts_ = contact::CompliantContactForce(model_.updForces(), pairs);
+    contacts_ = contact::CompliantContactForce(model_.updForces(), pairs, makeFrictionSettings(scenario_.contact));
 }
 
 // Every movable joint's linear impedance: passive spring and damper, the PD gains (the
@@ -256,7 +266,7 @@ void GraspScene::addController(const SimulationOptions& options) {
     }
     // Approx: the switch runs the IK while the grasp is not approximated, so it can pause it.
     ownedController_.reset(controller_);
-    switch_ = new GraspSwitch(*this, *controller_, options.approx, ikInterval);
+    switch_ = new GraspSwitch(*this, model_.updForces(), *controller_, options.approx, ikInterval);
     model_.updSystem().addEventHandler(switch_);
     if (SimTK::TriggeredEventHandler* witness = switch_->makeDetachWitness()) model_.updSystem().addEventHandler(witness);
 }

@@ -137,8 +137,8 @@ private:
     RunPhase findPhase(const SimTK::State& s) const {
         if (scene_.isObjectHeld(s)) return RunPhase::Held;
         const GraspSwitch* grasp = scene_.getGraspSwitch();
-        if (!grasp || grasp->getEvents().empty()) return RunPhase::FullContact;
-        const auto& events = grasp->getEvents();
+        if (!grasp || grasp->getEvents(s).empty()) return RunPhase::FullContact;
+        const auto& events = grasp->getEvents(s);
         const bool released = std::any_of(events.begin(), events.end(), [](const GraspEvent& e) { return e.kind == GraspEventKind::Release; });
         return grasp->isEngaged(s) && !released ? RunPhase::FirstEngagement : RunPhase::AfterEngagement;  // detach events (multi) keep the first engagement
     }
@@ -219,7 +219,7 @@ void summarizeCost(const GraspScene& scene, const PhaseTimer& timer, double ikSe
     summary.dynamicsUsPerStep = (summary.wallTime - ikSeconds) * perStep;
 }
 
-void summarizeSwitch(const GraspScene& scene, const PhaseTimer& timer, SimulationResult& result) {
+void summarizeSwitch(const GraspScene& scene, const PhaseTimer& timer, const SimTK::State& last, SimulationResult& result) {
     SimulationSummary& summary = result.summary;
     summary.fullStepUs = timer.findUsPerStep(RunPhase::FullContact);
     summary.approxStepUs = timer.findUsPerStep(RunPhase::FirstEngagement);
@@ -229,10 +229,10 @@ void summarizeSwitch(const GraspScene& scene, const PhaseTimer& timer, Simulatio
     summary.approxSteps = timer.getSteps(RunPhase::FirstEngagement);
     const GraspSwitch* grasp = scene.getGraspSwitch();
     if (!grasp) return;
-    result.events = grasp->getEvents();
-    summary.qThreshold = grasp->getQualityThreshold();
-    summary.qMinimum = grasp->getQualityMinimum();
-    const PenetrationStats& penetration = grasp->getTracker().getPenetration();
+    result.events = grasp->getEvents(last);
+    summary.qThreshold = grasp->getQualityThreshold(last);
+    summary.qMinimum = grasp->getQualityMinimum(last);
+    const PenetrationStats& penetration = grasp->getTracker(last).getPenetration();
     summary.engagedPenetrationAtEngage = penetration.atEngage;
     summary.maxEngagedPenetration = penetration.maxWhileEngaged;
     summary.maxEngagedPenetrationGrowth = penetration.maxGrowth;
@@ -269,7 +269,7 @@ void summarizeRun(const GraspScene& scene, const PhaseTimer& phases, double ikSe
     summarizeCost(scene, phases, ikSeconds, summary);
     summarizeDrift(result, summary);
     summarizeGrip(scene, last, summary);
-    summarizeSwitch(scene, phases, result);
+    summarizeSwitch(scene, phases, last, result);
 }
 
 // Runs `scene` on `stepper` (an integration::Stepper or the rigid model's RigidStepper) from its

@@ -101,11 +101,62 @@ std::string toString(GraspEventKind kind) {
     throw Error("grasp event: unknown kind " + std::to_string(static_cast<int>(kind)));
 }
 
-GraspSwitch::GraspSwitch(const GraspScene& scene, const control::GraspController& controller,
-                         const ApproxOptions& options, double interval)
+// The memo of calcEngagedQuality(): the last engaged Q and the state it was computed for (time
+// and Y; the discrete state changes only in engage, detach and release, which forget it).
+struct QualityMemo {
+    double time = -1;
+    SimTK::Vector y;
+    double quality = 0;
+    bool isFor(const SimTK::State& state) const {
+        const SimTK::Vector& stateY = state.getY();
+        if (time != state.getTime() || y.size() != stateY.size()) return false;
+        if (y.hasContiguousData() && stateY.hasContiguousData()) {
+            return std::equal(&y[0], &y[0] + y.size(), &stateY[0]);  // element access costs a call each
+        }
+        for (int i = 0; i < y.size(); ++i) {
+            if (y[i] != stateY[i]) return false;
+        }
+        return true;
+    }
+};
+
+// Keeps the switch's record in the State: a force element that applies no force, there only to
+// allocate the record (a Report-stage discrete variable) and the quality memo (a cache entry,
+// which any State, even a const one, may update).
+class GraspSwitch::RecordKeeper : public SimTK::Force::Custom::Implementation {
+public:
+    RecordKeeper(const SimTK::GeneralForceSubsystem& forces, GraspSwitchRecord initial)
+        : forces_(forces), initial_(std::move(initial)) {}
+
+    void realizeTopology(SimTK::State& state) const override {
+        recordIndex_ = forces_.allocateDiscreteVariable(state, SimTK::Stage::Report, new SimTK::Value<GraspSwitchRecord>(initial_));
+        memoIndex_ = forces_.allocateCacheEntry(state, SimTK::Stage::Topology, SimTK::Stage::Infinity, new SimTK::Value<QualityMemo>());
+    }
+    const GraspSwitchRecord& getRecord(const SimTK::State& state) const {
+        return SimTK::Value<GraspSwitchRecord>::downcast(forces_.getDiscreteVariable(state, recordIndex_)).get();
+    }
+    GraspSwitchRecord& updRecord(SimTK::State& state) const {
+        return SimTK::Value<GraspSwitchRecord>::updDowncast(forces_.updDiscreteVariable(state, recordIndex_)).upd();
+    }
+    QualityMemo& updMemo(const SimTK::State& state) const {
+        return SimTK::Value<QualityMemo>::updDowncast(forces_.updCacheEntry(state, memoIndex_)).upd();
+    }
+
+    void calcForce(const SimTK::State&, SimTK::Vector_<SimTK::SpatialVec>&, SimTK::Vector_<SimTK::Vec3>&,
+                   SimTK::Vector&) const override {}
+    SimTK::Real calcPotentialEnergy(const SimTK::State&) const override { return 0; }
+
+private:
+    const SimTK::GeneralForceSubsystem& forces_;
+    GraspSwitchRecord initial_;
+    mutable SimTK::DiscreteVariableIndex recordIndex_;  // set once, at realizeTopology (Simbody's pattern)
+    mutable SimTK::CacheEntryIndex memoIndex_;
+};
+
+GraspSwitch::GraspSwitch(const GraspScene& scene, SimTK::GeneralForceSubsystem& forces,
+                         const control::GraspController& controller, const ApproxOptions& options, double interval)
     : SimTK::PeriodicEventHandler(interval), scene_(scene), controller_(controller),
-      attachment_(findAttachment(scene)), options_(resolveOptions(options, scene.getScenario().approximation)),
-      tracker_(scene) {
+      attachment_(findAttachment(scene)), options_(resolveOptions(options, scene.getScenario().approximation)) {
     if (!(options_.qThreshold >= 0) || !(options_.qMinimum >= 0)) {
         throw InputError("approx: the quality thresholds Q_Th and Q_M must be >= 0 (0 = automatic)");
     }
@@ -114,14 +165,20 @@ GraspSwitch::GraspSwitch(const GraspScene& scene, const control::GraspController
     if (options_.qThreshold > 0 && options_.qMinimum >= options_.qThreshold) {
         throw InputError(format("approx: Q_M (%g N) must be below Q_Th (%g N)", options_.qMinimum, options_.qThreshold));
     }
-    qThreshold_ = options_.qThreshold;
-    qMinimum_ = options_.qMinimum > 0 ? options_.qMinimum : options_.hysteresisFraction * qThreshold_;
+    GraspSwitchRecord initial{options_.qThreshold, 0, SimTK::Transform(), {}, EngagedGraspTracker(scene)};
+    initial.qMinimum = options_.qMinimum > 0 ? options_.qMinimum : options_.hysteresisFraction * initial.qThreshold;
+    auto* keeper = new RecordKeeper(forces, std::move(initial));
+    SimTK::Force::Custom(forces, keeper);
+    keeper_ = keeper;
     const model::ModelDescription& d = scene.getModel().getDescription();
     for (const std::string& e : scene.getGoalEndEffectors()) goalBodies_.push_back(d.findEndEffector(e)->body);
     if (scene.getMultiAttachment()) multi_ = std::make_unique<MultiAttachmentSwitch>(scene, options.releaseSlideDistance, options.maxEngagedPenetration);
 }
 
 GraspSwitch::~GraspSwitch() = default;
+
+const GraspSwitchRecord& GraspSwitch::getRecord(const SimTK::State& state) const { return keeper_->getRecord(state); }
+GraspSwitchRecord& GraspSwitch::updRecord(SimTK::State& state) const { return keeper_->updRecord(state); }
 
 // See makeDetachWitness(). Velocity stage: the parts' forces depend on the relative velocity.
 class GraspSwitch::DetachWitness : public SimTK::TriggeredEventHandler {
@@ -170,30 +227,19 @@ double GraspSwitch::calcQualityOf(const SimTK::State& state, const std::vector<c
     return calcContactGraspQuality(reports, scene_.getObject().getBodyTransform(state), quality);
 }
 
-bool GraspSwitch::QualityMemo::isFor(const SimTK::State& state) const {
-    const SimTK::Vector& stateY = state.getY();
-    if (time != state.getTime() || y.size() != stateY.size()) return false;
-    if (y.hasContiguousData() && stateY.hasContiguousData()) {
-        return std::equal(&y[0], &y[0] + y.size(), &stateY[0]);  // element access costs a call each
-    }
-    for (int i = 0; i < y.size(); ++i) {
-        if (y[i] != stateY[i]) return false;
-    }
-    return true;
-}
-
 double GraspSwitch::calcEngagedQuality(const SimTK::State& state) const {
-    if (qualityMemo_.isFor(state)) return qualityMemo_.quality;
+    QualityMemo& memo = keeper_->updMemo(state);
+    if (memo.isFor(state)) return memo.quality;
     double q = 0;
     if (!multi_) {
-        q = tracker_.calcQuality(state);
+        q = getRecord(state).tracker.calcQuality(state);
     } else {
         // Multi: the fingers move on their own and the palm-fixed tracker does not apply; Q is that
         // of the contacts every pair would produce in `state`, switched on or not.
         scene_.getSystem().realize(state, SimTK::Stage::Velocity);
         q = calcQualityOf(state, scene_.getCompliantContacts().findContactReports(state, scene_.getCompliantContacts().findAllPairIndices()));
     }
-    qualityMemo_ = {state.getTime(), state.getY(), q};
+    keeper_->updMemo(state) = {state.getTime(), state.getY(), q};
     return q;
 }
 
@@ -220,35 +266,38 @@ void GraspSwitch::checkEngage(SimTK::State& state) const {
     const std::vector<contact::ContactReport> reports = scene_.getCompliantContacts().findContactReports(state);
     if (!isFullContact(reports)) return;
     const double q = calcQualityOf(state, reports);
-    if (qThreshold_ == 0) {
+    if (getRecord(state).qThreshold == 0) {
         // Automatic Q_Th from the first full-contact check once the grasp has settled.
         if (state.getTime() < scene_.getScenario().simulation.settleTime - 1e-12) return;
-        qThreshold_ = options_.autoThresholdFraction * q;
-        if (options_.qMinimum == 0) qMinimum_ = options_.hysteresisFraction * qThreshold_;
+        GraspSwitchRecord& record = updRecord(state);
+        record.qThreshold = options_.autoThresholdFraction * q;
+        if (options_.qMinimum == 0) record.qMinimum = options_.hysteresisFraction * record.qThreshold;
     }
     if (!isSticking(reports)) return;
     // Not at the instant of a release (a witness may release at a check's time): the contacts just
     // restored still carry the pre-release state, and would re-engage what just failed.
-    if (!events_.empty() && events_.back().kind == GraspEventKind::Release && !(state.getTime() > events_.back().time)) return;
-    if (q > 0 && q >= qThreshold_) engage(state, q, reports);
+    const std::vector<GraspEvent>& events = getRecord(state).events;
+    if (!events.empty() && events.back().kind == GraspEventKind::Release && !(state.getTime() > events.back().time)) return;
+    if (q > 0 && q >= getRecord(state).qThreshold) engage(state, q, reports);
 }
 
 // The engage event's text: the threshold and the limits (one force and one torque for the thesis's
 // box, every axis for per-axis limits).
-std::string GraspSwitch::describeEngagement(const SimTK::Vec6& limits) const {
+std::string GraspSwitch::describeEngagement(double qThreshold, const SimTK::Vec6& limits) const {
     if (options_.limitModel == grasp::FrictionLimitModel::Thesis) {
-        return format("Q >= Q_Th = %.6g N; limits %.6g N", qThreshold_, limits[3]) + format(", %.6g N m", limits[0]);
+        return format("Q >= Q_Th = %.6g N; limits %.6g N", qThreshold, limits[3]) + format(", %.6g N m", limits[0]);
     }
-    return format("Q >= Q_Th = %.6g N; contact limits %.6g", qThreshold_, limits[3]) + format(" %.6g", limits[4]) +
+    return format("Q >= Q_Th = %.6g N; contact limits %.6g", qThreshold, limits[3]) + format(" %.6g", limits[4]) +
            format(" %.6g N, ", limits[5]) + format("%.6g %.6g", limits[0], limits[1]) + format(" %.6g N m", limits[2]);
 }
 
 void GraspSwitch::engage(SimTK::State& state, double quality, const std::vector<contact::ContactReport>& reports) const {
-    qualityMemo_ = {};
-    tracker_.capture(state, reports);  // penetration, for both attachments; Q tracking is merged's
+    keeper_->updMemo(state) = {};
+    updRecord(state).tracker.capture(state, reports);  // penetration, for both attachments; Q tracking is merged's
+    const double qThreshold = getRecord(state).qThreshold;
     if (multi_) {
         const std::string limitsText = multi_->engage(state, reports);
-        events_.push_back({state.getTime(), GraspEventKind::Engage, quality, format("Q >= Q_Th = %.6g N; ", qThreshold_) + limitsText});
+        updRecord(state).events.push_back({state.getTime(), GraspEventKind::Engage, quality, format("Q >= Q_Th = %.6g N; ", qThreshold) + limitsText});
         return;
     }
     grasp::AttachmentEngagement engagement;
@@ -267,8 +316,10 @@ void GraspSwitch::engage(SimTK::State& state, double quality, const std::vector<
     scene_.getCompliantContacts().setPairsEnabled(state, scene_.getCompliantContacts().findAllPairIndices(), false);  // (b)
     setFingersMerged(state, true);                                                        // (c)
     attachment_.engage(state, engagement);                                                // (d)
-    X_HO_engaged_ = ~scene_.getPalm().getBodyTransform(state) * scene_.getObject().getBodyTransform(state);
-    events_.push_back({state.getTime(), GraspEventKind::Engage, quality, describeEngagement(engagement.limits)});  // (e)
+    const SimTK::Transform X_HO = ~scene_.getPalm().getBodyTransform(state) * scene_.getObject().getBodyTransform(state);
+    GraspSwitchRecord& record = updRecord(state);
+    record.X_HO_engaged = X_HO;
+    record.events.push_back({state.getTime(), GraspEventKind::Engage, quality, describeEngagement(qThreshold, engagement.limits)});  // (e)
 }
 
 // F on the palm and M on the object coincide at the contact centroid, with O's orientation.
@@ -281,34 +332,38 @@ void GraspSwitch::placeConstraintFrames(const SimTK::State& state, const SimTK::
 }
 
 void GraspSwitch::checkRelease(SimTK::State& state) const {
-    const std::size_t eventsBefore = events_.size();
+    const std::size_t eventsBefore = getRecord(state).events.size();
     double q = 0;
     std::string reason;
-    tracker_.measurePenetration(state);
+    updRecord(state).tracker.measurePenetration(state);
     if (multi_) {
         q = calcEngagedQuality(state);
-        reason = multi_->update(state, q, events_);
-        if (reason.empty() && q < qMinimum_) reason = format("Q < Q_M = %.6g N", qMinimum_);
+        std::vector<GraspEvent> events = getRecord(state).events;
+        reason = multi_->update(state, q, events);
+        updRecord(state).events = std::move(events);
+        const double qMinimum = getRecord(state).qMinimum;
+        if (reason.empty() && q < qMinimum) reason = format("Q < Q_M = %.6g N", qMinimum);
     } else {
         q = calcEngagedQuality(state);
         reason = describeRelease(state, q);
     }
     if (!reason.empty()) release(state, q, reason);
-    if (events_.size() != eventsBefore) qualityMemo_ = {};  // a detach or the release changed the state
+    if (getRecord(state).events.size() != eventsBefore) keeper_->updMemo(state) = {};  // a detach or the release changed the state
 }
 
 // Empty while the approximation still holds; otherwise the first reason to release, with numbers.
 std::string GraspSwitch::describeRelease(const SimTK::State& state, double quality) const {
     scene_.getSystem().realize(state, SimTK::Stage::Position);
     const SimTK::Transform X_HO = ~scene_.getPalm().getBodyTransform(state) * scene_.getObject().getBodyTransform(state);
-    const double slide = (X_HO.p() - X_HO_engaged_.p()).norm();
+    const GraspSwitchRecord& record = getRecord(state);
+    const double slide = (X_HO.p() - record.X_HO_engaged.p()).norm();
     if (slide > options_.releaseSlideDistance) {
         return format("object slid %.6g m in the hand (limit %.6g m)", slide, options_.releaseSlideDistance);
     }
     const double distance = scene_.findMaxFingertipGoalDistance(state);
     const double tolerance = scene_.getScenario().simulation.heldTolerance;
     if (distance > tolerance) return format("fingertip %.6g m from its goal (held tolerance %.6g m)", distance, tolerance);
-    if (quality < qMinimum_) return format("Q < Q_M = %.6g N", qMinimum_);
+    if (quality < record.qMinimum) return format("Q < Q_M = %.6g N", record.qMinimum);
     return {};
 }
 
@@ -319,7 +374,8 @@ void GraspSwitch::release(SimTK::State& state, double quality, const std::string
     attachment_.release(state);
     if (!multi_) setFingersMerged(state, false);  // multi never merges them
     scene_.getCompliantContacts().setPairsEnabled(state, scene_.getCompliantContacts().findAllPairIndices(), true);
-    events_.push_back({state.getTime(), GraspEventKind::Release, quality, reason, findVelocityJump(state, v_before)});
+    const double velocityJump = findVelocityJump(state, v_before);
+    updRecord(state).events.push_back({state.getTime(), GraspEventKind::Release, quality, reason, velocityJump});
 }
 
 // The object's velocity as the integrator will restart from it: realized after the switch and

@@ -227,7 +227,7 @@ const std::vector<std::string>& getRunOptionNames() {
 const std::vector<std::string>& getMeasureNames() {
     static const std::vector<std::string> names{
         "held", "object_displacement_m", "max_penetration_m", "initial_penetration_m", "max_grasp_quality_n", "max_fingertip_goal_distance_m",
-        "wall_time_s", "sim_time_s", "steps", "mean_step_us", "full_wall_s_per_sim_s", "engaged", "engage_time_s",
+        "wall_time_s", "plan_time_s", "sim_time_s", "steps", "mean_step_us", "full_wall_s_per_sim_s", "engaged", "engage_time_s",
         "release_time_s", "q_at_engage_n", "q_threshold_n", "q_minimum_n", "min_engaged_grasp_quality_n",
         "max_engaged_penetration_growth_m", "max_release_velocity_jump_m_s", "approx_step_us"};
     return names;

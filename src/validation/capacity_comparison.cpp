@@ -70,7 +70,9 @@ std::vector<CapacityRow> runCapacityComparison(const CapacityPlan& plan, const C
                 request.directionName = load.name;
                 request.torque = load.torque;
                 CapacityRow row{experiment, load.name, variant, {}, false, 0};
-                row.measured = capacity::measureGraspCapacityRamp(scenario, makeVariantOptions(variant, "none", 0), request);
+                simulation::SimulationOptions options = makeVariantOptions(variant, "none", 0);
+                options.accuracy = plan.accuracy;
+                row.measured = capacity::measureGraspCapacityRamp(scenario, options, request);
                 const capacity::CapacityFigures& f = row.measured.trace.figures;
                 if (variant != "full" && rows[full].measured.trace.figures.slipped && f.slipped) {
                     row.hasReference = true;

@@ -80,7 +80,7 @@ public:
 private:
     void observeReleased(const simulation::GraspScene& scene, const SimTK::State& state, const simulation::GraspSwitch& grasp,
                          const Mark& here) {
-        if (!grasp.isEngaged(state) && grasp.getEvents().empty()) {
+        if (!grasp.isEngaged(state) && grasp.getEvents(state).empty()) {
             cost_.fullRealizeUs = timeRealization(scene.getSystem(), state, realizations_);
         } else if (grasp.isEngaged(state) && !engaged_.isSet()) {
             engaged_ = here;

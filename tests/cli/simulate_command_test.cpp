@@ -161,6 +161,8 @@ TEST_F(SimulateCommand, RejectsBadOptionsWithoutTouchingTheOutputFolder) {
     expectBadInput("simulate ball-clutch --perturbation f7" + out, {"--perturbation", "f7"});
     expectBadInput("simulate ball-clutch --contact soft" + out, {"--contact", "soft", "compliant or rigid"});
     expectBadInput("simulate ball-clutch --integrator euler" + out, {"--integrator", "euler", "simbody or cvode"});
+    expectBadInput("simulate ball-clutch --friction lugre" + out, {"--friction", "lugre", "regularized or anchor"});
+    expectBadInput("simulate ball-clutch --contact rigid --friction anchor" + out, {"--friction", "anchor", "rigid"});
     expectBadInput("simulate ball-clutch --duration -1" + out, {"--duration", "-1"});
     expectBadInput("simulate ball-clutch --duration soon" + out, {"--duration", "soon"});
     expectBadInput("simulate ball-clutch --mode approx --q-threshold -1" + out, {"--q-threshold", "-1"});
@@ -187,6 +189,7 @@ TEST_F(SimulateCommand, RejectsBadScenarioFilesNamingFileAndField) {
     };
     check("static_friction: 0.9", "static_friction: -0.9", {"static_friction", "-0.9"});
     check("stiffness: 5.0e5", "stiffness: -5.0e5", {"stiffness"});
+    check("stiffness: 5.0e5", "stiffness: 5.0e5\n  anchor_damping_mass: -0.02", {"contact.anchor_damping_mass", "-0.02"});
     check("mass: 0.200", "mas: 0.200", {"mas"});
     check("index_tip: [0.0199", "index_tip: [0.0599", {"goals.index_tip", "off"});
 }

@@ -222,12 +222,23 @@ void expectSameContacts(const std::vector<ContactPoint>& actual,
     }
 }
 
+// A corner pushed to the palm's mid-plane (where the box's depth is capped) is as deep below its
+// upper face as below its lower: which face it is pushed out through is decided by rounding (a
+// clang build and a gcc build choose differently), so such contacts compare nothing.
+std::vector<ContactPoint> dropMidPlaneContacts(std::vector<ContactPoint> contacts, double halfThickness) {
+    contacts.erase(std::remove_if(contacts.begin(), contacts.end(),
+                                  [&](const ContactPoint& c) { return c.depth > halfThickness - 1e-9; }),
+                   contacts.end());
+    return contacts;
+}
+
 // A palm box pressed into a phone-sized box at random poses: the mesh of the phone gives the
 // contacts of box vs box (vertices, edges, edge-edge crossings).
 TEST(ObjectShapeContact, MeshOfABoxEqualsTheBoxForAPalmBox) {
     const ContactShape phone = ContactShape::box(kPhone);
     const ContactShape mesh = test::makeMeshShape(test::makeBoxMesh(kPhone));
-    const ContactShape palm = ContactShape::box(Vec3(0.04, 0.05, 0.01));
+    constexpr double kPalmHalfThickness = 0.01;
+    const ContactShape palm = ContactShape::box(Vec3(0.04, 0.05, kPalmHalfThickness));
     std::mt19937 random(5);
     std::uniform_real_distribution<double> offset(-0.05, 0.05), angle(-SimTK::Pi, SimTK::Pi);
     int withContacts = 0;
@@ -235,10 +246,12 @@ TEST(ObjectShapeContact, MeshOfABoxEqualsTheBoxForAPalmBox) {
         const Transform X_GP(Rotation(SimTK::BodyRotationSequence, angle(random), SimTK::XAxis,
                                       angle(random), SimTK::YAxis, angle(random), SimTK::ZAxis),
                              X_GO * Vec3(offset(random), offset(random), 0.6 * offset(random)));
-        const std::vector<ContactPoint> expected = findContacts(palm, X_GP, phone, X_GO);
+        const std::vector<ContactPoint> expected =
+            dropMidPlaneContacts(findContacts(palm, X_GP, phone, X_GO), kPalmHalfThickness);
+        const std::vector<ContactPoint> actual =
+            dropMidPlaneContacts(findContacts(palm, X_GP, mesh, X_GO), kPalmHalfThickness);
         withContacts += !expected.empty();
-        expectSameContacts(findContacts(palm, X_GP, mesh, X_GO), expected, 1e-9,
-                           "pose " + std::to_string(i));
+        expectSameContacts(actual, expected, 1e-9, "pose " + std::to_string(i));
         if (!expected.empty() && i % 10 == 0) expectMirrored(palm, X_GP, mesh, X_GO);
     }
     EXPECT_GT(withContacts, 100);
@@ -273,7 +286,8 @@ TEST(ObjectShapeContact, FineCylinderMeshApproachesTheCylinder) {
 // ---- palm box against the curved objects ------------------------------------------------
 
 TEST(ObjectShapeContact, PalmBoxFaceOnCylinderSideAndEnd) {
-    const ContactShape palm = ContactShape::box(Vec3(0.04, 0.05, 0.01));
+    constexpr double kPalmHalfThickness = 0.01;
+    const ContactShape palm = ContactShape::box(Vec3(0.04, 0.05, kPalmHalfThickness));
     const ContactShape cylinder = ContactShape::cylinder(0.03, 0.2);
     // Cylinder along x_O (its z turned onto x), palm above it, its lower face 1 mm into the top
     // line. Contacts: the side line's middle under the palm face (radius 0.03), and the palm's
@@ -306,7 +320,8 @@ TEST(ObjectShapeContact, PalmBoxFaceOnCylinderSideAndEnd) {
 }
 
 TEST(ObjectShapeContact, PalmBoxFaceOnEllipsoidPole) {
-    const ContactShape palm = ContactShape::box(Vec3(0.04, 0.05, 0.01));
+    constexpr double kPalmHalfThickness = 0.01;
+    const ContactShape palm = ContactShape::box(Vec3(0.04, 0.05, kPalmHalfThickness));
     const double a = kSemiAxes[0], b = kSemiAxes[1], c = kSemiAxes[2];
     const Transform X_OP(Vec3(0.003, 0.002, c + 0.01 - 0.0012));
     const std::vector<ContactPoint> contacts = findContacts(palm, X_GO * X_OP, kEllipsoid, X_GO);
@@ -328,7 +343,8 @@ TEST(ObjectShapeContact, PalmBoxFaceOnEllipsoidPole) {
 // A capsule object (already a swept sphere) lying on the palm face along the palm's x: one
 // contact at the middle of the flat stretch, the capsule's radius.
 TEST(ObjectShapeContact, CapsuleObjectOnThePalm) {
-    const ContactShape palm = ContactShape::box(Vec3(0.04, 0.05, 0.01));
+    constexpr double kPalmHalfThickness = 0.01;
+    const ContactShape palm = ContactShape::box(Vec3(0.04, 0.05, kPalmHalfThickness));
     const ContactShape bottle = ContactShape::capsule(0.025, 0.06);
     const Transform X_OB(Rotation(SimTK::Pi / 2, SimTK::YAxis), Vec3(0.01, 0, 0.01 + 0.025 - 0.002));
     const std::vector<ContactPoint> contacts = findContacts(palm, X_GO, bottle, X_GO * X_OB);

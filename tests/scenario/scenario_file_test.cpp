@@ -336,7 +336,13 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"malformed YAML", "position: [0.4, -0.2, 0]", "position: [0.4, -0.2, 0",
                  {"malformed YAML"}},
         BadInput{"bad indentation", "  radius: 0.045", "   radius: 0.045", {"test.yaml:5:", "malformed YAML"}},
-        BadInput{"a list, not a map", kBase, "- a\n- b\n", {"the document", "'[a, b]'", "must be a map"}}),
+        BadInput{"a list, not a map", kBase, "- a\n- b\n", {"the document", "'[a, b]'", "must be a map"}},
+        BadInput{"unknown friction law", "  stiffness: 5.0e5\n", "  stiffness: 5.0e5\n  friction_model: lugre\n",
+                 {"'contact.friction_model'", "'lugre'", "regularized or anchor"}},
+        BadInput{"zero anchor damping mass", "  stiffness: 5.0e5\n", "  stiffness: 5.0e5\n  anchor_damping_mass: 0\n",
+                 {"'contact.anchor_damping_mass'", "'0'", "> 0 kg"}},
+        BadInput{"infinite anchor relaxation time", "  stiffness: 5.0e5\n",
+                 "  stiffness: 5.0e5\n  anchor_relaxation_time: .inf\n", {"'contact.anchor_relaxation_time'"}}),
     [](const ::testing::TestParamInfo<BadInput>& param) {
         std::string name;
         for (char c : param.param.what) name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';

@@ -59,6 +59,10 @@ void expectSameScenario(const Scenario& a, const Scenario& b) {
     EXPECT_EQ(a.contact.dynamicFriction, b.contact.dynamicFriction);
     EXPECT_EQ(a.contact.viscousFriction, b.contact.viscousFriction);
     EXPECT_EQ(a.contact.transitionVelocity, b.contact.transitionVelocity);
+    EXPECT_EQ(a.contact.frictionModel, b.contact.frictionModel);
+    EXPECT_EQ(a.contact.anchorStiffnessRatio, b.contact.anchorStiffnessRatio);
+    EXPECT_EQ(a.contact.anchorDampingMass, b.contact.anchorDampingMass);
+    EXPECT_EQ(a.contact.anchorRelaxationTime, b.contact.anchorRelaxationTime);
     EXPECT_EQ(a.controller.approachTime, b.controller.approachTime);
     EXPECT_EQ(a.controller.pressDepth, b.controller.pressDepth);
     EXPECT_EQ(a.controller.kp, b.controller.kp);
@@ -97,6 +101,18 @@ TEST(ScenarioWriter, DefaultsAndEditedFieldsAreWrittenOut) {
         EXPECT_NE(text.find(key), std::string::npos) << key;
     }
     expectSameScenario(edited, parseScenario(text, "written.yaml"));
+}
+
+// The default friction law writes nothing new (result folders stay as they were); the anchor
+// law writes itself and its parameters, and reads back.
+TEST(ScenarioWriter, AnchorFrictionIsWrittenOnlyWhenChosen) {
+    Scenario s = findBuiltinScenario("ball-clutch");
+    EXPECT_EQ(formatScenarioYaml(s).find("friction_model"), std::string::npos);
+    s.contact.frictionModel = "anchor";
+    s.contact.anchorDampingMass = 0.05;
+    const std::string text = formatScenarioYaml(s);
+    EXPECT_NE(text.find("friction_model: anchor"), std::string::npos);
+    expectSameScenario(s, parseScenario(text, "written.yaml"));
 }
 
 // The point where the ray from O through p meets the surface (every shape is star-shaped from

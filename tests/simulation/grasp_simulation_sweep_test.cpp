@@ -40,12 +40,13 @@ double findResidentBytes() {
     return static_cast<double>(resident) * static_cast<double>(::sysconf(_SC_PAGESIZE));
 }
 
-// Run k of the sweep: scenario, mode, subject and perturbation all vary with k. The release,
-// the contacts and the perturbation fall inside the short run.
+// Run k of the sweep: scenario, mode, subject mass and perturbation all vary with k. The release,
+// the contacts and the perturbation fall inside the short run. The stature stays the thesis's:
+// the hand-found grasp poses fit only it (a stature 0.7 % off already leaves the phone's thumb
+// 5 mm from its goal, which the set-up check refuses).
 scenario::Scenario makeScenario(int k) {
     scenario::Scenario s = scenario::findBuiltinScenario(k % 2 == 0 ? "ball-clutch" : "phone-pinch");
     s.bodyOptions.subject.mass *= 0.9 + 0.2 * (k % 11) / 10.0;        // 0.9 to 1.1 of the reference
-    s.bodyOptions.subject.stature *= 0.99 + 0.02 * (k % 7) / 6.0;     // 0.99 to 1.01
     s.controller.approachTime = 0.01;
     for (scenario::Perturbation& p : s.perturbations) {
         p.start = 0.015;

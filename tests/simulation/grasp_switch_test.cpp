@@ -186,6 +186,43 @@ TEST(GraspSwitch, WeldObjectIsHeldByTheGroundWeldThenByTheMobilizerLock) {
     EXPECT_LT(drift, 1e-12);
 }
 
+// The switch keeps its record in the State: each recorded sample carries the events up to its
+// own time (none up to the engagement, the engage event after it), the automatic Q_Th appears
+// once set, and a State copied before the engagement keeps its empty history after the run went on.
+// Oracle: the run's own event list (summary) and the sample times.
+TEST(GraspSwitch, EachStateCarriesItsOwnRecord) {
+    const scenario::Scenario s = scenario::findBuiltinScenario("phone-pinch");
+    std::vector<SimTK::State> samples;
+    const simulation::SampleObserver observe = [&](const simulation::GraspScene&, const SimTK::State& state) {
+        samples.push_back(state);
+    };
+    const auto r = simulation::runGraspSimulation(
+        s, makeOptions(simulation::SimulationMode::Approx, s.simulation.settleTime + 0.3), {}, observe);
+    ASSERT_TRUE(r.summary.complete) << r.summary.failure;
+    ASSERT_TRUE(r.summary.engaged);
+    ASSERT_FALSE(r.events.empty());
+    const double engageTime = r.events.front().time;
+    // A fresh scene reads the copied States (the record lives in them, not in the switch).
+    simulation::SimulationOptions options = makeOptions(simulation::SimulationMode::Approx, 1);
+    simulation::GraspScene scene(s, options);
+    const simulation::GraspSwitch& grasp = *scene.getGraspSwitch();
+    int before = 0, after = 0;
+    for (const SimTK::State& state : samples) {
+        const std::vector<simulation::GraspEvent>& events = grasp.getEvents(state);
+        if (state.getTime() <= engageTime) {  // a sample at an event's instant precedes the event
+            EXPECT_TRUE(events.empty()) << "t = " << state.getTime();
+            ++before;
+        } else {
+            ASSERT_FALSE(events.empty()) << "t = " << state.getTime();
+            EXPECT_EQ(events.front().time, engageTime);
+            EXPECT_EQ(grasp.getQualityThreshold(state), r.summary.qThreshold);
+            ++after;
+        }
+    }
+    EXPECT_GT(before, 10);
+    EXPECT_GT(after, 10);
+}
+
 TEST(GraspSwitch, PhonePinchEngages) {
     const scenario::Scenario s = scenario::findBuiltinScenario("phone-pinch");
     const auto r = simulation::runGraspSimulation(s, makeOptions(simulation::SimulationMode::Approx, s.simulation.settleTime + 0.3));

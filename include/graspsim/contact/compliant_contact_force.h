@@ -12,20 +12,26 @@
 /// V_GB the bodies' spatial velocities:
 ///  - relative velocity of b's material point at P w.r.t. a's: v = v_GB(P) - v_GA(P);
 ///  - penetration rate xdot = -v . n; slip velocity v_t = v - (v . n) n;
-///  - normal force f_n and friction f_t from contact_force_law.h with the pair's combined
-///    materials; body b receives F = f_n n + f_t at P, body a receives -F at P.
+///  - normal force f_n from contact_force_law.h with the pair's combined materials, and friction
+///    f_t from the chosen law: the regularized one of contact_force_law.h (default, stateless)
+///    or the elastic anchor of anchor_friction.h (true stiction, one anchor per pair held in the
+///    State as 4 Z variables); body b receives F = f_n n + f_t at P, body a receives -F at P.
 /// Potential energy: sum over contacts of (8/15) E* sqrt(R) x^(5/2) (elastic part only; the
-/// dissipation and friction are not conservative).
+/// dissipation and friction are not conservative, and the anchor springs' energy is not counted).
 ///
 /// Stages: forces are computed when the system is realized to Stage::Dynamics (they need
 /// positions and velocities); the potential energy needs Stage::Position; reports need
 /// Stage::Velocity. The element keeps no cache: every evaluation redoes the geometry.
+/// With anchors, the anchors' rates (Z derivatives) are set in the same Dynamics-stage pass; do
+/// not disable the element as a whole (Force::disable) then, as its anchors would get no rate
+/// (disable its pairs instead: a disabled pair's anchor relaxes to zero).
 
 #include "graspsim/simbody.h"
 
 #include <string>
 #include <vector>
 
+#include "graspsim/contact/anchor_friction.h"
 #include "graspsim/contact/contact_pair.h"
 
 namespace graspsim::contact {
@@ -78,6 +84,19 @@ public:
     /// @throws graspsim::InputError naming the pair for an invalid material or a pair of two
     ///         half-spaces.
     CompliantContactForce(SimTK::GeneralForceSubsystem& forces, std::vector<ContactPair> pairs);
+
+    /// As above with the friction law chosen by `friction` (the default is the regularized law).
+    /// @throws graspsim::InputError as above, or naming the anchor parameter that is not finite
+    ///         and > 0 (AnchorFrictionParameters::validate()).
+    CompliantContactForce(SimTK::GeneralForceSubsystem& forces, std::vector<ContactPair> pairs,
+                          const FrictionSettings& friction);
+
+    /// The friction law and its parameters, as given to the constructor.
+    const FrictionSettings& getFrictionSettings() const;
+    /// Pair `pairIndex`'s anchor deflection z (m): position of body b's contact material relative
+    /// to its anchor, expressed in the frame of the pair's body a; zero with the regularized law.
+    /// Needs Stage::Model. @throws graspsim::InputError if pairIndex is out of range.
+    SimTK::Vec3 getAnchorDeflection(const SimTK::State& state, int pairIndex) const;
 
     /// Number of contact pairs.
     int getNumPairs() const;

@@ -54,6 +54,7 @@ struct GraspRequest {
     SimTK::Transform X_OS;                      ///< shape frame in the object frame O (usually identity)
     GraspType type = GraspType::PowerSphere;
     double targetGap = 0.0015;                  ///< wanted pad-to-surface distance in the plan (m), > 0
+    double pressDepth = 0.002;                  ///< the controller's press depth (m): goals are reached this far inside
     SimTK::Vec3 gravity{0, -9.81, 0};           ///< gravity in G (m/s^2): the pads should not push along it
 };
 
@@ -62,6 +63,8 @@ struct GoalCheck {
     std::string effector;     ///< e.g. "index_tip"
     double gap = 0;           ///< signed distance of its pad point to the surface (m)
     double misalignment = 0;  ///< angle between the pad's outward normal and the inward surface normal (rad)
+    double reachShortfall = 0;///< the controller's IK from the plan ends this far from the goal pressed pressDepth in (m), goal_reach.h
+    double commandedPress = 0;///< how deep inside the surface that IK solution puts the pad (m): what makes the finger press
 };
 
 /// How good the plan is: the numbers its checks look at.
@@ -97,6 +100,16 @@ struct PlanTolerances {
     double maxGap = 0.005;        ///< "within a few mm of the surface"
     double maxMisalignment = 1.134; ///< pad facing the surface: within 65 deg (the thesis's hand-found ball clutch, which holds, has 62)
     double maxPenetration = 0.001;///< no segment deeper than 1 mm in the object
+    /// The set-up check's reach limit (simulation::kGoalReachTolerance, setup_check.h): the
+    /// controller's IK from the plan must end within this of each goal pressed pressDepth inside,
+    /// so a planned scenario is never refused by the check.
+    double maxReachShortfall = 0.003;
+    /// Each goal pad's IK solution must lie at least this deep inside the object (m): a pad the IK
+    /// leaves at the surface (on a rim, or with a joint at its limit) never presses, its finger
+    /// leaves the object once it settles, and the approximation, which engages on full contact,
+    /// never does. An eighth of the 2 mm press; the planned grasps of the study's tables command
+    /// 0.34 mm (a tripod thumb on a 15 mm ball) or more.
+    double minCommandedPress = 0.00025;
 };
 
 /// Plans the grasp. Deterministic: the same request gives the same plan, bit for bit.
@@ -104,6 +117,10 @@ struct PlanTolerances {
 ///         found fails a check (the message names the check and its numbers).
 /// @throws InputError for an invalid shape or subject.
 GraspPlan planGrasp(const GraspRequest& request, const PlanTolerances& tolerances = {});
+
+/// The press depth a plan for `scenario` uses (m): the scenario's, or for an object thinner than
+/// twice it (a card, a key), half the object's half-thickness, rounded to 0.1 mm.
+double findPlannedPressDepth(const scenario::Scenario& scenario);
 
 /// The object of a scenario as the planner's shape: the object body's (only) geometry.
 /// @throws InputError if the contact layer has no shape for it.

@@ -17,6 +17,15 @@ struct GraspTemplate {
     std::map<std::string, double> startPose;   ///< arm posture (kept) and finger start (optimized)
     std::vector<std::string> goalEffectors;    ///< end-effectors on the object, thumb first
     double kp = 5;                             ///< finger PD gain for the scenario (N m/rad)
+    /// The goal pads' mean inward surface normal must point against gravity by at least this
+    /// (a cosine, 0 = horizontal squeeze allowed): the fingers curl under the object, so their
+    /// normal forces, not friction alone, carry part of its weight.
+    double minSupport = 0;
+    /// A planned finger joint stays this far inside its range of motion (rad), so that the
+    /// controller can still move it both ways: a digit planned at a limit cannot press along the
+    /// surface normal (the thumb planned hyperextended at its IP and MCP limits stopped 2.4 mm
+    /// short of its goal pressed 2 mm into a cylinder, and the grasp had no thumb).
+    double jointMargin = 5 * 3.14159265358979323846 / 180;
     /// Power grasps: the object starts where the thesis's ball sits under the palm of the
     /// start pose (ball-clutch.yaml: centre p_GO at this point in G for the male reference
     /// subject, radius ballRadius), scaled with the hand length and moved palmar by the

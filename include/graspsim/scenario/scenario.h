@@ -121,6 +121,18 @@ struct ContactSpec {
     double viscousFriction = 0.0;
     /// Slip speed at which friction passes from static to dynamic (m/s), > 0; default 1e-3.
     double transitionVelocity = 1e-3;
+    /// Friction law: "regularized" (default: friction a function of slip speed, creeps under any
+    /// load) or "anchor" (an elastic anchor per contact pair, true stiction; contact layer,
+    /// anchor_friction.h). transitionVelocity applies to the regularized law only.
+    std::string frictionModel = "regularized";
+    /// Anchor law: tangential over normal contact stiffness (dimensionless), > 0; default 2/3
+    /// (Mindlin, skin's Poisson ratio 0.5).
+    double anchorStiffnessRatio = 2.0 / 3.0;
+    /// Anchor law: mass on which the anchor spring is critically damped (kg), > 0; default 0.02,
+    /// one finger segment.
+    double anchorDampingMass = 0.02;
+    /// Anchor law: time in which a sliding or unloaded anchor catches up (s), > 0; default 1e-3.
+    double anchorRelaxationTime = 1e-3;
 };
 
 /// The grasp controller. At t = 0 the hand is placed in the grasp pose kinematically (the thesis's

@@ -83,7 +83,7 @@ private:
     };
     SimTK::SpatialVec findConstraintWrench(const SimTK::State& state) const;
 
-    const GraspScene& scene_;
+    const GraspScene* scene_;  // a pointer, so that the tracker copies and assigns as part of a State
     std::vector<TrackedContact> tracked_;
     std::map<int, double> depthAtEngage_;  // by contact pair index (m)
     PenetrationStats penetration_;

@@ -44,6 +44,7 @@ struct SimulationSummary {
     std::string failure;            ///< why it stopped early, with the time and the last event
     double simTime = 0;             ///< simulated time reached (s)
     double wallTime = 0;            ///< wall-clock time of the integration (s)
+    double planTime = 0;            ///< wall-clock time of planning the grasp when loaded (s; grasp: {type}), 0 if not planned
     long steps = 0;                 ///< integrator steps taken
     double meanStepUs = 0;          ///< wall time per step (µs)
     double ikUsPerStep = 0;         ///< of which inverse kinematics (µs)

@@ -59,8 +59,10 @@
 ///
 /// Every switch changes Instance-stage variables (pair flags, locks, constraint flags); doing it in
 /// an event handler makes the TimeStepper re-realize and reinitialize the integrator.
-/// The handler keeps the event log and the engagement pose outside the State: it assumes one
-/// forward run (a TimeStepper never rewinds), as the run of grasp_simulation.h is.
+/// What the switch has decided (the thresholds in use, the engagement pose, the event log, the
+/// tracked contacts) is a GraspSwitchRecord kept in the State, in a Report-stage discrete
+/// variable: writing it changes no dynamics, so it restarts no integrator, and a copied State
+/// carries its own history.
 
 #include "graspsim/control/grasp_controller.h"
 #include "graspsim/grasp/grasp_attachment.h"
@@ -99,6 +101,15 @@ struct GraspEvent {
     double velocityJump = 0;
 };
 
+/// The switch's decisions so far, part of the State (see the file comment).
+struct GraspSwitchRecord {
+    double qThreshold = 0;           ///< Q_Th in use (N); 0 until the automatic threshold is set
+    double qMinimum = 0;             ///< Q_M in use (N)
+    SimTK::Transform X_HO_engaged;   ///< object frame O in the palm frame H at the last engagement (m)
+    std::vector<GraspEvent> events;  ///< the switches so far, in time order
+    EngagedGraspTracker tracker;     ///< the contacts tracked while engaged, the penetration so far
+};
+
 /// The periodic event handler described in the file comment (owned by the System once added).
 class GraspSwitch : public SimTK::PeriodicEventHandler {
 public:
@@ -107,8 +118,9 @@ public:
     /// @param controller the IK controller this handler runs while ungrasped (not itself added
     ///        to the System, so IK can be paused).
     /// @throws graspsim::InputError for a negative threshold or a slide distance <= 0.
-    GraspSwitch(const GraspScene& scene, const control::GraspController& controller, const ApproxOptions& options,
-                double interval);
+    /// @param forces where the switch keeps its GraspSwitchRecord (an element that applies no force).
+    GraspSwitch(const GraspScene& scene, SimTK::GeneralForceSubsystem& forces, const control::GraspController& controller,
+                const ApproxOptions& options, double interval);
     ~GraspSwitch() override;
 
     void handleEvent(SimTK::State& state, SimTK::Real accuracy, bool& shouldTerminate) const override;
@@ -121,12 +133,14 @@ public:
 
     /// Whether the approximation is engaged in `state`.
     bool isEngaged(const SimTK::State& state) const;
-    /// The switches so far, in time order.
-    const std::vector<GraspEvent>& getEvents() const { return events_; }
+    /// The switch's decisions up to `state`.
+    const GraspSwitchRecord& getRecord(const SimTK::State& state) const;
+    /// The switches up to `state`, in time order.
+    const std::vector<GraspEvent>& getEvents(const SimTK::State& state) const { return getRecord(state).events; }
     /// Q_Th in use (N); 0 until the automatic threshold has been set.
-    double getQualityThreshold() const { return qThreshold_; }
+    double getQualityThreshold(const SimTK::State& state) const { return getRecord(state).qThreshold; }
     /// Q_M in use (N).
-    double getQualityMinimum() const { return qMinimum_; }
+    double getQualityMinimum(const SimTK::State& state) const { return getRecord(state).qMinimum; }
 
     /// Grasp quality of the contacts active in `state` (N). Needs Stage::Velocity.
     double calcQuality(const SimTK::State& state) const;
@@ -137,11 +151,13 @@ public:
     /// Asked twice for the same state (the switch's check, then the sample recorded at that
     /// instant), the second call returns the first's value.
     double calcEngagedQuality(const SimTK::State& state) const;
-    /// The contacts tracked while engaged and the penetration measured so far.
-    const EngagedGraspTracker& getTracker() const { return tracker_; }
+    /// The contacts tracked while engaged and the penetration measured up to `state`.
+    const EngagedGraspTracker& getTracker(const SimTK::State& state) const { return getRecord(state).tracker; }
 
 private:
     class DetachWitness;
+    class RecordKeeper;
+    GraspSwitchRecord& updRecord(SimTK::State& state) const;
     void checkEngage(SimTK::State& state) const;
     void checkRelease(SimTK::State& state) const;
     bool isFullContact(const std::vector<contact::ContactReport>& reports) const;
@@ -153,7 +169,7 @@ private:
     void release(SimTK::State& state, double quality, const std::string& reason) const;
     void setFingersMerged(SimTK::State& state, bool merged) const;
     std::string describeRelease(const SimTK::State& state, double quality) const;
-    std::string describeEngagement(const SimTK::Vec6& limits) const;
+    std::string describeEngagement(double qThreshold, const SimTK::Vec6& limits) const;
     double findVelocityJump(SimTK::State& state, const SimTK::Vec3& v_before) const;
 
     const GraspScene& scene_;
@@ -163,20 +179,7 @@ private:
     std::unique_ptr<MultiAttachmentSwitch> multi_;  // ApproxAttach::Multi: replaces the merge (c) and (d)
     std::vector<std::string> goalBodies_;  // body of each goal end-effector
 
-    mutable double qThreshold_ = 0;
-    mutable double qMinimum_ = 0;
-    mutable SimTK::Transform X_HO_engaged_;  // object pose in the palm frame at engagement
-    mutable std::vector<GraspEvent> events_;
-    mutable EngagedGraspTracker tracker_;
-    // The last engaged Q and the state it was computed for (time and Y; the discrete state changes
-    // only in engage, detach and release, which forget it).
-    struct QualityMemo {
-        double time = -1;
-        SimTK::Vector y;
-        double quality = 0;
-        bool isFor(const SimTK::State& state) const;
-    };
-    mutable QualityMemo qualityMemo_;
+    const RecordKeeper* keeper_ = nullptr;  // owned by the force subsystem
 };
 
 }  // namespace graspsim::simulation

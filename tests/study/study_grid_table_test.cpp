@@ -1,0 +1,51 @@
+// results.md: cases with made-up summaries (the oracle is the hand-written table they must give):
+// one column per base scenario (file stem), one row per value of the other axes, full mode's
+// held/drift/overlap/plan time first and approx mode's engagement after; a case that failed
+// shows its error once, without the case's scenario path.
+
+#include "graspsim/study/study_case.h"
+#include "graspsim/study/study_folder.h"
+#include "graspsim/study/study_grid_table.h"
+
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+using namespace graspsim::study;
+namespace fs = std::filesystem;
+
+TEST(StudyGridTable, OneColumnPerBaseOneRowPerOtherAxisCellsFromTheirCases) {
+    const fs::path dir = fs::temp_directory_path() / ("graspsim_grid_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const StudySpec spec = parseStudy("name: g\nbase: [types/ball.yaml, types/rod.yaml]\n"
+                                      "axes:\n  subject.mass: [60, 80]\n  mode: [full, approx]\nmeasures: [held]\n",
+                                      (dir / "s.yaml").string());
+    const std::string folder = (dir / "out").string();
+    prepareStudyFolder(folder, spec, "base");
+    for (const StudyCase& c : expandCases(spec)) {
+        // values: base, subject.mass, mode; the rod for 80 kg cannot be planned
+        const bool rod = c.values[0] == "types/rod.yaml", heavy = c.values[1] == "80", approx = c.values[2] == "approx";
+        const fs::path tmp = fs::path(findCaseFolder(folder, c.index) + ".tmp-1");
+        fs::create_directories(tmp);
+        if (rod && heavy) {
+            commitCase(folder, tmp.string(), {c.index, CaseStatus::Failed, "/x/0007.tmp-9/scenario.yaml: no grasp | rims", c.values});
+            continue;
+        }
+        std::ofstream(tmp / "summary.json") << "{\"held\": " << (rod ? "false" : "true")
+                                             << ", \"object_displacement_m\": " << (rod ? 0.25 : 0.00123)
+                                             << ", \"initial_penetration_m\": 0.0004, \"plan_time_s\": 1.5, \"engaged\": "
+                                             << (approx && !heavy ? "true" : "false") << "}";
+        commitCase(folder, tmp.string(), {c.index, CaseStatus::Ok, "", c.values});
+    }
+    EXPECT_EQ(formatGridTable(spec, folder),
+              "| subject.mass | ball | rod |\n"
+              "|---|---|---|\n"
+              "| 60 | held, drift 1.2 mm, 0.4 mm inside at t = 0; plan 1.50 s; approx engaged | DROPPED, drift 250.0 mm, "
+              "0.4 mm inside at t = 0; plan 1.50 s; approx engaged |\n"
+              "| 80 | held, drift 1.2 mm, 0.4 mm inside at t = 0; plan 1.50 s; approx NOT engaged | no grasp / rims |\n");
+    fs::remove_all(dir);
+}
