@@ -159,7 +159,13 @@ TEST(LateralPinch, ThePlannedScenarioReadsBackWithItsEndEffector) {
     base.object.mass = 0.02;
     const GraspPlan plan = planGrasp(makeGraspRequest(base, GraspType::Lateral));
     const scenario::Scenario planned = applyPlan(base, plan);
-    EXPECT_LT(planned.controller.pressDepth, 0.0015);  // within half the key's thickness, as the reader requires
+    // Within half the key's thickness, as the reader requires: half of its half-thickness 1.5 mm,
+    // to 0.1 mm; a 3 cm ball keeps the default 2 mm.
+    EXPECT_DOUBLE_EQ(planned.controller.pressDepth, 0.0008);
+    scenario::Scenario ball = base;
+    ball.object.shape = scenario::ObjectShape::Sphere;
+    ball.object.radius = 0.015;
+    EXPECT_EQ(findPlannedPressDepth(ball), scenario::ControllerSpec{}.pressDepth);
     const scenario::Scenario reread = scenario::parseScenario(formatPlannedScenario(planned, plan), "key.yaml");
     ASSERT_EQ(reread.bodyOptions.segmentPoints.size(), 1u);
     for (int i = 0; i < 3; ++i) EXPECT_EQ(reread.bodyOptions.segmentPoints[0].p_B[i], plan.segmentPoints[0].p_B[i]);
