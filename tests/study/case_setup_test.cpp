@@ -110,15 +110,15 @@ TEST(CaseSetup, EachCaseStartsFromTheBaseItsBaseAxisNames) {
     }
 }
 
-// The shipped grasp-types study: four planned bases, each with the four subjects' sections.
+// The shipped grasp-types study: five planned bases, each with the four subjects' sections.
 TEST(CaseSetup, ShippedGraspTypesStudyIsAccepted) {
     const StudySpec spec = loadStudyFile(std::string(GRASPSIM_SOURCE_DIR) + "/models/studies/grasp-types.yaml");
-    ASSERT_EQ(spec.bases.size(), 4u);
+    ASSERT_EQ(spec.bases.size(), 5u);
     const std::vector<scenario::ScenarioText> bases = readBaseScenarios(spec);
     EXPECT_NO_THROW(checkStudyValues(spec, bases));
     const std::vector<StudyCase> cases = expandCases(spec);
-    ASSERT_EQ(cases.size(), 32u);
+    ASSERT_EQ(cases.size(), 40u);
     const scenario::Scenario last = scenario::parseScenario(makeCaseSetup(spec, bases, cases.back()).scenarioYaml, "case");
-    EXPECT_EQ(last.graspType, "power-cylinder");
+    EXPECT_EQ(last.graspType, "lateral");
     EXPECT_EQ(last.bodyOptions.subject.stature, 1.90);
 }
