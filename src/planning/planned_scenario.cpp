@@ -34,9 +34,10 @@ void completeScenario(scenario::Scenario& scenario) {
     if (scenario.graspType.empty()) return;
     const GraspType type = parseGraspType(scenario.graspType, scenario.source + ": field 'grasp.type'");
     try {
-        const double kp = scenario.controller.kp;  // the file's (or the default) gain stays
+        const bool kpGiven = scenario.controller.kpGiven;
+        const double kp = scenario.controller.kp;
         scenario = planScenario(scenario, type);
-        scenario.controller.kp = kp;
+        if (kpGiven) scenario.controller.kp = kp;  // the file's gain stays; otherwise the plan's
     } catch (const NoGraspError& e) {
         throw NoGraspError(scenario.source + ": " + e.what());
     }

@@ -190,7 +190,9 @@ ContactSpec readContact(const YamlField& root) {
     return contact;
 }
 
-ControllerSpec readController(const YamlField& root, const ObjectSpec& object) {
+// `planned`: the grasp is planned on load, which sets the press depth for the object
+// (planning::findPlannedPressDepth), so a default that does not fit a thin object is no error.
+ControllerSpec readController(const YamlField& root, const ObjectSpec& object, bool planned) {
     const YamlField section =
         root.getSection("controller", {"approach_time", "press_depth", "kp", "kd", "ik_interval"});
     ControllerSpec controller;
@@ -199,8 +201,10 @@ ControllerSpec readController(const YamlField& root, const ObjectSpec& object) {
     NumberRule depth =
         NumberRule::closed("press depth (less than half the object's thickness)", "m", 0, object.findHalfThickness());
     depth.upperOpen = true;
-    controller.pressDepth = readFitting(section, "press_depth", depth, controller.pressDepth);
+    controller.pressDepth = planned ? section.findNumber("press_depth", depth, controller.pressDepth)
+                                    : readFitting(section, "press_depth", depth, controller.pressDepth);
     controller.kp = section.findNumber("kp", NumberRule::positive("kp", "N m/rad"), controller.kp);
+    controller.kpGiven = section.find("kp").has_value();
     controller.kd = section.findNumber("kd", NumberRule::nonNegative("kd", "N m s/rad"), controller.kd);
     controller.ikInterval =
         section.findNumber("ik_interval", NumberRule::positive("IK interval", "s"), controller.ikInterval);
@@ -315,7 +319,7 @@ Scenario readScenario(const YamlField& root) {
         scenario.goals = readGoals(root, body, scenario.object);
     }
     scenario.contact = readContact(root);
-    scenario.controller = readController(root, scenario.object);
+    scenario.controller = readController(root, scenario.object, !scenario.graspType.empty());
     scenario.simulation = readSimulation(root, scenario.controller);
     scenario.perturbations = readPerturbations(root, scenario.simulation);
     scenario.approximation = readApproximation(root);

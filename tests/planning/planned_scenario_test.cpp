@@ -33,12 +33,29 @@ TEST(PlannedScenario, AGraspTypeIsPlannedWhenTheScenarioIsCompleted) {
     EXPECT_EQ(s.goals.size(), 5u);
     EXPECT_FALSE(s.graspPose.empty());
     for (const auto& [effector, goal] : s.goals) EXPECT_LT(std::abs(s.object.calcSurfaceDistance(goal)), 2e-4) << effector;
-    EXPECT_EQ(s.controller.kp, scenario::ControllerSpec{}.kp);  // the file's gain stays
+    EXPECT_EQ(s.controller.kp, 10.0);  // no gain in the file: the plan's (a five-finger clutch, as ball-clutch.yaml)
     // the completed scenario is an ordinary one: written and read back, the same pose and goals
     const scenario::Scenario reread = scenario::parseScenario(scenario::formatScenarioYaml(s), "resolved.yaml");
     ASSERT_EQ(reread.graspPose.size(), s.graspPose.size());
     for (const auto& [joint, angle] : s.graspPose) EXPECT_NEAR(reread.graspPose.at(joint), angle, 1e-12) << joint;
     for (const auto& [effector, goal] : s.goals) EXPECT_NEAR(reread.goals.at(effector)[0], goal[0], 1e-15) << effector;
+}
+
+TEST(PlannedScenario, AGainGivenInTheFileStays) {
+    scenario::Scenario s = scenario::parseScenario(std::string(kPlannedBall) + "controller: {kp: 7}\n", "ball.yaml");
+    planning::completeScenario(s);
+    EXPECT_EQ(s.controller.kp, 7.0);
+}
+
+// A key in a lateral pinch with no controller section: the default 2 mm press does not fit its
+// 3 mm thickness, and the plan sets both the press (below the half-thickness) and its gain.
+TEST(PlannedScenario, AThinObjectTakesThePlansPressAndGain) {
+    scenario::Scenario s = scenario::parseScenario(
+        "name: key\nobject: {shape: box, mass: 0.02, size: [0.05, 0.02, 0.003]}\ngrasp: {type: lateral}\n", "key.yaml");
+    planning::completeScenario(s);
+    EXPECT_EQ(s.controller.kp, 2.0);
+    EXPECT_GT(s.controller.pressDepth, 0);
+    EXPECT_LT(s.controller.pressDepth, 0.0015);  // the reader's rule: below the half-thickness
 }
 
 TEST(PlannedScenario, AScenarioWithAPoseIsLeftAsItIs) {

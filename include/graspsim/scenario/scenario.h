@@ -149,6 +149,9 @@ struct ControllerSpec {
     double pressDepth = 0.002;
     /// Proportional gain of the finger and thumb joints' PD controller (N m/rad), > 0; default 5.
     double kp = 5.0;
+    /// Whether the file gave kp: a grasp planned on load (`grasp: {type}`) keeps a given gain and
+    /// otherwise takes the plan's (the lateral pinch's is 2).
+    bool kpGiven = false;
     /// Derivative gain of the finger and thumb joints' PD controller (N m s/rad), >= 0; default 0.05.
     double kd = 0.05;
     /// Time between two IK solutions (s), > 0; default 0.01.
