@@ -136,4 +136,15 @@ CaseRecord readCaseRecord(const std::string& folder, int index) {
     return record;
 }
 
+nlohmann::json readCaseSummary(const std::string& folder, int index) {
+    const std::string path = findCaseFolder(folder, index) + "/summary.json";
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) return nlohmann::json::object();
+    try {
+        return nlohmann::json::parse(io::readTextFile(path));
+    } catch (const nlohmann::json::exception& e) {
+        throw InputError(path + ": is not readable JSON (" + std::string(e.what()) + ")");
+    }
+}
+
 }  // namespace graspsim::study

@@ -16,17 +16,6 @@ namespace graspsim::study {
 
 namespace {
 
-nlohmann::json readSummary(const std::string& caseFolder) {
-    const std::string path = caseFolder + "/summary.json";
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) return nlohmann::json::object();
-    try {
-        return nlohmann::json::parse(io::readTextFile(path));
-    } catch (const nlohmann::json::exception& e) {
-        throw InputError(path + ": is not readable JSON (" + std::string(e.what()) + ")");
-    }
-}
-
 std::string formatNumber(const char* pattern, double value) {
     char text[64];
     std::snprintf(text, sizeof text, pattern, value);
@@ -79,7 +68,7 @@ std::string formatGridTable(const StudySpec& spec, const std::string& folder) {
         const bool approx = modeAxis >= 0 && c.values[modeAxis] == "approx";
         std::string text = "not run";
         if (isCaseFinished(folder, c.index)) {
-            text = describeCase(readCaseRecord(folder, c.index), readSummary(findCaseFolder(folder, c.index)), approx);
+            text = describeCase(readCaseRecord(folder, c.index), readCaseSummary(folder, c.index), approx);
         }
         std::string& cell = cells[{row, c.values[baseAxis]}];
         if (cell.find(text.substr(text.find(": ") == std::string::npos ? 0 : text.find(": ") + 2)) != std::string::npos) continue;  // the same refusal in both modes

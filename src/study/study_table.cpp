@@ -46,17 +46,6 @@ std::string formatRow(const StudySpec& spec, const StudyCase& studyCase, const C
     return row + "," + quoteCsv(record ? record->error : "") + "\n";
 }
 
-nlohmann::json readSummary(const std::string& caseFolder) {
-    const std::string path = caseFolder + "/summary.json";
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) return nlohmann::json::object();
-    try {
-        return nlohmann::json::parse(io::readTextFile(path));
-    } catch (const nlohmann::json::exception& e) {
-        throw InputError(path + ": is not readable JSON (" + std::string(e.what()) + ")");
-    }
-}
-
 }  // namespace
 
 StudyTable collectStudyTable(const StudySpec& spec, const std::string& folder) {
@@ -71,7 +60,7 @@ StudyTable collectStudyTable(const StudySpec& spec, const std::string& folder) {
         }
         const CaseRecord record = readCaseRecord(folder, studyCase.index);
         if (record.status != CaseStatus::Ok) table.failed.push_back(studyCase.index);
-        table.csv += formatRow(spec, studyCase, &record, readSummary(findCaseFolder(folder, studyCase.index)));
+        table.csv += formatRow(spec, studyCase, &record, readCaseSummary(folder, studyCase.index));
     }
     return table;
 }

@@ -15,6 +15,8 @@
 
 #include "graspsim/study/study_spec.h"
 
+#include <nlohmann/json_fwd.hpp>
+
 #include <string>
 #include <vector>
 
@@ -66,5 +68,10 @@ void commitCase(const std::string& folder, const std::string& tmpFolder, const C
 /// The record of finished case `index`.
 /// @throws graspsim::InputError when its case.json is missing or cannot be read.
 CaseRecord readCaseRecord(const std::string& folder, int index);
+
+/// The summary.json of case `index` (what `graspsim simulate` wrote); an empty object when the
+/// case wrote none (it failed before).
+/// @throws graspsim::InputError when the file is not readable JSON.
+nlohmann::json readCaseSummary(const std::string& folder, int index);
 
 }  // namespace graspsim::study
