@@ -52,7 +52,8 @@ TEST(EndEffectorsField, APointOnASegmentBecomesAnEndEffectorAGoalMayName) {
     EXPECT_EQ(p.body, "index_middle");
     EXPECT_DOUBLE_EQ(p.p_B[1], -0.0134);
     EXPECT_DOUBLE_EQ(p.p_B[2], 0.0081);
-    const model::EndEffector* e = model::buildBodyModel(s.bodyOptions).findEndEffector("index_side");
+    const model::ModelDescription built = model::buildBodyModel(s.bodyOptions);
+    const model::EndEffector* e = built.findEndEffector("index_side");
     ASSERT_NE(e, nullptr);
     EXPECT_EQ(e->body, "index_middle");
     EXPECT_DOUBLE_EQ(e->p_BE[2], 0.0081);
