@@ -180,6 +180,16 @@ private:
     std::vector<std::string> goalBodies_;  // body of each goal end-effector
 
     const RecordKeeper* keeper_ = nullptr;  // owned by the force subsystem
+    // A cache, not state: the last engaged Q and the (time, Y) it is a function of, so that the
+    // check and the sample recorded at the same instant (two State objects with equal values)
+    // compute it once. Engage, detach and release change the discrete state and forget it.
+    struct QualityMemo {
+        double time = -1;
+        SimTK::Vector y;
+        double quality = 0;
+        bool isFor(const SimTK::State& state) const;
+    };
+    mutable QualityMemo memo_;
 };
 
 }  // namespace graspsim::simulation
