@@ -2,6 +2,7 @@
 
 #include "graspsim/error.h"
 
+#include <cmath>
 #include <cstdlib>
 
 namespace graspsim::cli {
@@ -20,6 +21,15 @@ double parseAccuracy(const std::string& text) {
     if (text.empty()) return 0;
     const double value = parseNumber(text, "--accuracy", "a number in (0, 1)");
     if (!(value > 0 && value < 1)) throw InputError("--accuracy: value " + text + " is not accepted; use a number in (0, 1)");
+    return value;
+}
+
+double parseStepSize(const std::string& text) {
+    if (text.empty()) return 0;
+    const double value = parseNumber(text, "--step-size", "a finite number > 0 (s)");
+    if (!(value > 0 && std::isfinite(value))) {
+        throw InputError("--step-size: value " + text + " is not accepted; use a finite number > 0 (s)");
+    }
     return value;
 }
 

@@ -13,4 +13,7 @@ double parseNumber(const std::string& text, const std::string& flag, const std::
 // --accuracy: an integrator relative accuracy in (0, 1); empty keeps the scenario's (returns 0).
 double parseAccuracy(const std::string& text);
 
+// --step-size: the fixed step (s), finite and > 0; empty keeps the scenario's (returns 0).
+double parseStepSize(const std::string& text);
+
 }  // namespace graspsim::cli

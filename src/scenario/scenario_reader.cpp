@@ -213,7 +213,7 @@ ControllerSpec readController(const YamlField& root, const ObjectSpec& object, b
 
 SimulationSpec readSimulation(const YamlField& root, const ControllerSpec& controller) {
     const YamlField section =
-        root.getSection("simulation", {"duration", "output_interval", "accuracy", "settle_time", "held_tolerance"});
+        root.getSection("simulation", {"duration", "output_interval", "accuracy", "step_size", "settle_time", "held_tolerance"});
     SimulationSpec simulation;
     simulation.duration = section.findNumber("duration", NumberRule::positive("duration", "s"), simulation.duration);
     NumberRule output = NumberRule::closed("output interval (at most the duration)", "s", 0, simulation.duration);
@@ -222,6 +222,7 @@ SimulationSpec readSimulation(const YamlField& root, const ControllerSpec& contr
     NumberRule accuracy = NumberRule::closed("accuracy", "", 0, 1);
     accuracy.lowerOpen = accuracy.upperOpen = true;
     simulation.accuracy = section.findNumber("accuracy", accuracy, simulation.accuracy);
+    simulation.stepSize = section.findNumber("step_size", NumberRule::positive("step size", "s"), simulation.stepSize);
     const NumberRule settle = NumberRule::closed("settle time (from controller.approach_time to the duration)", "s",
                                                  controller.approachTime, simulation.duration);
     simulation.settleTime = readFitting(section, "settle_time", settle, simulation.settleTime);

@@ -100,7 +100,7 @@ void writeSettings(std::ostringstream& out, const Scenario& s) {
         << "\n\n";
     const SimulationSpec& m = s.simulation;
     out << "simulation:\n  duration: " << formatNumber(m.duration) << "\n  output_interval: " << formatNumber(m.outputInterval)
-        << "\n  accuracy: " << formatNumber(m.accuracy) << "\n  settle_time: " << formatNumber(m.settleTime)
+        << "\n  accuracy: " << formatNumber(m.accuracy) << "\n  step_size: " << formatNumber(m.stepSize) << "\n  settle_time: " << formatNumber(m.settleTime)
         << "\n  held_tolerance: " << formatNumber(m.heldTolerance) << "\n\n";
     const ApproximationSpec& a = s.approximation;
     out << "approximation:\n  relaxed_axes: [";

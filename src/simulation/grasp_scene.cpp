@@ -157,7 +157,7 @@ void GraspScene::addContacts() {
 
 // Every movable joint's linear impedance: passive spring and damper, the PD gains (the
 // controller drives every movable joint), and its limit stop.
-void GraspScene::addImplicitImpedance() {
+std::vector<system::JointImpedance> GraspScene::findJointImpedances() const {
     std::vector<system::JointImpedance> joints;
     const std::vector<std::string>& controlled = pd_->getJointNames();
     for (const std::string& name : model_.getJointNames()) {
@@ -172,7 +172,11 @@ void GraspScene::addImplicitImpedance() {
         }
         joints.push_back(impedance);
     }
-    impedance_ = system::ImplicitJointImpedance(model_.updForces(), model_.getMatter(), joints);
+    return joints;
+}
+
+void GraspScene::addImplicitImpedance() {
+    impedance_ = system::ImplicitJointImpedance(model_.updForces(), model_.getMatter(), findJointImpedances());
 }
 
 std::vector<contact::ContactReport> GraspScene::findContactReports(const SimTK::State& state) const {

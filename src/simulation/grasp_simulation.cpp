@@ -2,7 +2,10 @@
 
 
 #include "graspsim/error.h"
+#include "graspsim/contact/compliant_contact_jacobian.h"
 #include "graspsim/integration/cvode_integrator.h"
+#include "graspsim/integration/joint_impedance_jacobian.h"
+#include "graspsim/integration/linearly_implicit_stepper.h"
 #include "graspsim/integration/simbody_stepper.h"
 #include "graspsim/simulation/contact_grasp_quality.h"
 #include "graspsim/simulation/grasp_scene.h"
@@ -184,17 +187,44 @@ void stepThroughSamples(const GraspScene& scene, AnyStepper& stepper, Recorder& 
     }
 }
 
-// The accuracy is a relative tolerance for both; CVODE takes its atol and constraint tolerance
-// from it as Simbody's integrators do (cvode_integrator.h).
-std::unique_ptr<integration::Stepper> makeStepper(const SimTK::System& system, const SimulationOptions& options,
-                                                  double scenarioAccuracy) {
-    const double accuracy = options.accuracy > 0 ? options.accuracy : scenarioAccuracy;
+// A stepper with what it needs kept alive: the linearly implicit one's force Jacobians.
+struct SceneStepper {
+    std::vector<std::unique_ptr<integration::ForceJacobianContributor>> jacobians;
+    std::unique_ptr<integration::Stepper> stepper;
+};
+
+// The linearly implicit stepper with the joints' impedance and the compliant contacts implicit.
+SceneStepper makeLinearlyImplicitStepper(const GraspScene& scene, double stepSize) {
+    SceneStepper made;
+    const SimTK::SimbodyMatterSubsystem& matter = scene.getModel().getMatter();
+    made.jacobians.push_back(std::make_unique<integration::JointImpedanceJacobian>(
+        matter, scene.getModel().getForces(), scene.findJointImpedances()));
+    made.jacobians.push_back(std::make_unique<contact::CompliantContactJacobian>(matter, scene.getCompliantContacts()));
+    std::vector<const integration::ForceJacobianContributor*> contributors;
+    for (const auto& j : made.jacobians) contributors.push_back(j.get());
+    integration::LinearlyImplicitOptions implicit;
+    implicit.stepSize = stepSize;
+    made.stepper = std::make_unique<integration::LinearlyImplicitStepper>(scene.getSystem(), contributors, implicit);
+    return made;
+}
+
+// The accuracy is a relative tolerance for both BDF integrators; CVODE takes its atol and
+// constraint tolerance from it as Simbody's integrators do (cvode_integrator.h).
+SceneStepper makeStepper(const GraspScene& scene, const SimulationOptions& options) {
+    const scenario::SimulationSpec& spec = scene.getScenario().simulation;
+    if (options.integrator == IntegratorChoice::LinearlyImplicit) {
+        return makeLinearlyImplicitStepper(scene, options.stepSize > 0 ? options.stepSize : spec.stepSize);
+    }
+    const double accuracy = options.accuracy > 0 ? options.accuracy : spec.accuracy;
+    SceneStepper made;
     if (options.integrator == IntegratorChoice::SimbodyCpodes) {
-        return std::make_unique<integration::SimbodyCpodesStepper>(system, accuracy);
+        made.stepper = std::make_unique<integration::SimbodyCpodesStepper>(scene.getSystem(), accuracy);
+        return made;
     }
     integration::CvodeOptions cvode;
     cvode.relativeTolerance = accuracy;
-    return std::make_unique<integration::CvodeIntegrator>(system, cvode);
+    made.stepper = std::make_unique<integration::CvodeIntegrator>(scene.getSystem(), cvode);
+    return made;
 }
 
 SimulationSummary makeSummaryHeader(const scenario::Scenario& scenario, const SimulationOptions& options, double duration) {
@@ -317,7 +347,8 @@ SimulationResult runGraspSimulation(const scenario::Scenario& scenario, const Si
         result.summary.integrator = "simbody-semiexpliciteuler-pgs";
         return result;
     }
-    const std::unique_ptr<integration::Stepper> stepper = makeStepper(scene.getSystem(), options, scenario.simulation.accuracy);
+    const SceneStepper made = makeStepper(scene, options);
+    const std::unique_ptr<integration::Stepper>& stepper = made.stepper;
     runScene(scene, *stepper, duration, "integration failed", progress, observer, result);
     result.summary.integrator = stepper->getMethodName();
     result.summary.integratorStatistics = stepper->getStatistics();

@@ -21,10 +21,14 @@ SimulationMode parseSimulationMode(const std::string& text, const std::string& s
 IntegratorChoice parseIntegratorChoice(const std::string& text, const std::string& source) {
     if (text == "simbody") return IntegratorChoice::SimbodyCpodes;
     if (text == "cvode") return IntegratorChoice::Cvode;
-    throw InputError(source + ": integrator '" + text + "' is not accepted; use simbody or cvode");
+    if (text == "implicit") return IntegratorChoice::LinearlyImplicit;
+    throw InputError(source + ": integrator '" + text + "' is not accepted; use simbody, cvode or implicit");
 }
 
-std::string toString(IntegratorChoice integrator) { return integrator == IntegratorChoice::Cvode ? "cvode" : "simbody"; }
+std::string toString(IntegratorChoice integrator) {
+    if (integrator == IntegratorChoice::Cvode) return "cvode";
+    return integrator == IntegratorChoice::LinearlyImplicit ? "implicit" : "simbody";
+}
 
 ApproxConstraint parseApproxConstraint(const std::string& text, const std::string& source) {
     if (text == "bushing") return ApproxConstraint::Bushing;

@@ -166,6 +166,8 @@ struct SimulationSpec {
     double outputInterval = 0.01;
     /// Relative accuracy of the integrator, in (0, 1); default 1e-3.
     double accuracy = 1e-3;
+    /// Step size of the fixed-step linearly implicit integrator (s), > 0; default 0.001.
+    double stepSize = 1e-3;
     /// Time from which the grasp counts as settled, and the object's drift is measured (s), in
     /// [ControllerSpec::approachTime, duration]; default 1.
     double settleTime = 1.0;

@@ -83,6 +83,9 @@ public:
     const contact::RigidContactSet& getRigidContacts() const { return rigidContacts_; }
     /// The implicit joint impedance element; an empty handle with ContactModel::Compliant.
     const system::ImplicitJointImpedance& getImpedance() const { return impedance_; }
+    /// Every movable joint's linear impedance (passive spring and damper, PD gains, limit stop):
+    /// what implicit steppers treat implicitly.
+    std::vector<system::JointImpedance> findJointImpedances() const;
     /// Every finger-object contact at `state` with its forces, from the contact model in use
     /// (rigid: from the multipliers of the step that produced `state`). Needs Stage::Velocity.
     std::vector<contact::ContactReport> findContactReports(const SimTK::State& state) const;

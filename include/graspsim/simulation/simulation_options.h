@@ -30,7 +30,10 @@ enum class SimulationMode {
 /// Which integrator advances the simulation.
 enum class IntegratorChoice {
     SimbodyCpodes,  ///< Simbody's CPodes (BDF, Newton), stepped as by SimTK::TimeStepper (simbody_stepper.h): the default
-    Cvode           ///< SUNDIALS CVODE (BDF, Newton), the reference (integration/cvode_integrator.h)
+    Cvode,          ///< SUNDIALS CVODE (BDF, Newton), the reference (integration/cvode_integrator.h)
+    /// Fixed-step linearly implicit Euler with analytic contact and joint force Jacobians
+    /// (integration/linearly_implicit_stepper.h); compliant contact only
+    LinearlyImplicit
 };
 
 /// Which realization of the friction-limited 6-DOF palm-object constraint the approximation uses.
@@ -99,6 +102,8 @@ struct SimulationOptions {
     /// Integrator accuracy (relative tolerance; CVODE's atol and both integrators' constraint
     /// tolerance follow it); 0 takes the scenario's simulation.accuracy.
     double accuracy = 0;
+    /// Step size (s) of IntegratorChoice::LinearlyImplicit; 0 takes the scenario's simulation.step_size.
+    double stepSize = 0;
     /// A load on the object growing in time (the holding-capacity protocol, ramp_load.h); unset: none.
     std::optional<LoadRampSpec> loadRamp;
 };
@@ -107,7 +112,7 @@ struct SimulationOptions {
 ContactModel parseContactModel(const std::string& text, const std::string& source);
 /// Parses "full" or "approx". @throws graspsim::InputError naming `source`, the value and the choices.
 SimulationMode parseSimulationMode(const std::string& text, const std::string& source);
-/// Parses "simbody" or "cvode". @throws graspsim::InputError naming `source`, the value and the choices.
+/// Parses "simbody", "cvode" or "implicit". @throws graspsim::InputError naming `source`, the value and the choices.
 IntegratorChoice parseIntegratorChoice(const std::string& text, const std::string& source);
 std::string toString(ContactModel model);
 std::string toString(IntegratorChoice integrator);

@@ -1,0 +1,28 @@
+#pragma once
+/// @file
+/// The derivatives of a System's applied generalized forces with respect to the generalized
+/// speeds and coordinates, supplied by the force elements that know them analytically: what a
+/// linearly implicit stepper (linearly_implicit_stepper.h) needs, without the integration layer
+/// knowing any force law.
+
+#include "graspsim/simbody.h"
+
+namespace graspsim::integration {
+
+/// One force element's share of the force Jacobians, added in place.
+///
+/// With f the generalized forces (N m or N, one per mobility, nu of them):
+///  - D = df/du (N m s/rad ...), the damping Jacobian;
+///  - K = df/dq expressed per mobility: the change of f when the coordinates move by
+///    q + N(q) dx for a small mobility-space displacement dx (for hinges and sliders dx = dq),
+///    so K is nu x nu even where nq != nu (quaternions).
+/// Dissipative and restoring forces make D and K negative semi-definite.
+class ForceJacobianContributor {
+public:
+    virtual ~ForceJacobianContributor() = default;
+    /// Adds this element's D and K (both nu x nu, already sized) at `state`, realized through
+    /// Stage::Velocity (Acceleration where the stepper calls it).
+    virtual void addForceJacobians(const SimTK::State& state, SimTK::Matrix& D, SimTK::Matrix& K) const = 0;
+};
+
+}  // namespace graspsim::integration

@@ -1,0 +1,80 @@
+#pragma once
+/// @file
+/// A fixed-step linearly implicit ("semi-implicit") Euler stepper for stiff contact, in the manner
+/// of MuJoCo's implicit integrator: one dynamics evaluation and one small linear solve per step,
+/// no Newton iteration, no error control.
+///
+/// Per step of size h from (t, q, u, z), realized through Stage::Acceleration:
+///
+///     f  = M udot                                   (every applied and Coriolis force)
+///     D, K from the ForceJacobianContributor list  (force_jacobian.h)
+///     (M - h D - h^2 K) du = h (f + h K u)          (forces at the step's end, linearized)
+///     u' = u + du,  q' = q + h N(q) u',  z' = z + h zdot
+///
+/// (a locked mobilizer's rows are du = 0), then q' and u' are projected onto the constraints (and quaternions normalized) with
+/// System::project. With D and K of the stiff forces (contact, joint impedance) the step is
+/// stable where explicit Euler would need microsecond steps; forces left out of D and K are
+/// treated explicitly (symplectic Euler). First order: the error falls linearly with h.
+///
+/// Events: scheduled events and reports land exactly on their times (the interval up to each
+/// is cut into equal steps no longer than h); event triggers (witness functions) are checked at
+/// the end of every step and a sign change in a direction the event asks for is handled there,
+/// at the step's end (localized to within one step, not to a root tolerance). A handler's change
+/// needs no restart (a one-step method keeps no history): the next step starts from the changed
+/// state. Auto-update discrete variables are updated after every step.
+
+#include "graspsim/integration/force_jacobian.h"
+#include "graspsim/integration/stepper.h"
+
+#include "graspsim/simbody.h"
+
+#include <string>
+#include <vector>
+
+namespace graspsim::integration {
+
+/// Settings of the linearly implicit stepper.
+struct LinearlyImplicitOptions {
+    double stepSize = 1e-3;             ///< h (s), the longest step; finite and > 0
+    double constraintTolerance = 1e-6;  ///< System::project accuracy after each step
+};
+
+/// The fixed-step linearly implicit Euler stepper (see the file comment). The System and the
+/// contributors must outlive it.
+class LinearlyImplicitStepper : public Stepper {
+public:
+    /// @throws graspsim::InputError naming the option when the step size or the tolerance is not
+    ///         finite and > 0.
+    LinearlyImplicitStepper(const SimTK::MultibodySystem& system, std::vector<const ForceJacobianContributor*> contributors,
+                            const LinearlyImplicitOptions& options = {});
+
+    void initialize(const SimTK::State& initial) override;
+    void stepTo(double time) override;
+    const SimTK::State& getState() const override { return state_; }
+    long getNumStepsTaken() const override { return steps_ - stepsAtInitialize_; }
+    IntegrationStatistics getStatistics() const override;
+    std::string getMethodName() const override { return "linearly-implicit-euler"; }
+    const LinearlyImplicitOptions& getOptions() const { return options_; }
+
+private:
+    bool handleDueScheduledEvents();
+    void advance(double tStop);
+    bool takeStep(double h);
+    void solveVelocityChange(double h, SimTK::Vector& du) const;
+    void holdLockedSpeeds(SimTK::Matrix& A, SimTK::Vector& rhs) const;
+    void handleResults(const SimTK::HandleEventsResults& results);
+    SimTK::Array_<SimTK::EventId> findTriggeredEvents() const;
+
+    const SimTK::MultibodySystem& system_;
+    std::vector<const ForceJacobianContributor*> contributors_;
+    LinearlyImplicitOptions options_;
+    SimTK::State state_;
+    SimTK::Vector triggers_;                         // the event triggers at the state's time
+    SimTK::Array_<SimTK::EventTriggerInfo> triggerInfo_;
+    double lastEventTime_ = -SimTK::Infinity, lastReportTime_ = -SimTK::Infinity;
+    long steps_ = 0, stepsAtInitialize_ = 0, evaluations_ = 0, projections_ = 0;
+    long scheduledEvents_ = 0, triggeredEvents_ = 0;
+    bool initialized_ = false, terminated_ = false;
+};
+
+}  // namespace graspsim::integration
