@@ -1,6 +1,7 @@
 #include "graspsim/contact/compliant_contact_jacobian.h"
 
 #include <algorithm>
+#include <vector>
 
 namespace graspsim::contact {
 
@@ -69,35 +70,54 @@ CompliantContactJacobian::CompliantContactJacobian(const SimTK::SimbodyMatterSub
 
 namespace {
 
-// A += J^T B J for a 3 x nu J and a 3x3 B.
-void addProjected(const SimTK::Matrix& J, const SimTK::Mat33& B, SimTK::Matrix& A) {
-    const int nu = J.ncol();
-    SimTK::Matrix BJ(3, nu);
-    for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < nu; ++c) BJ(r, c) = B(r, 0) * J(0, c) + B(r, 1) * J(1, c) + B(r, 2) * J(2, c);
+// A += J^T B J for a 3 x nu J and a 3x3 B, on column-major storage (J[r + 3 c], A[r + nu c]):
+// SimTK::Matrix's element access costs more than the arithmetic here.
+void addProjected(const double* J, int nu, const SimTK::Mat33& B, double* A) {
+    thread_local std::vector<double> BJ;
+    BJ.resize(3 * static_cast<std::size_t>(nu));
+    for (int c = 0; c < nu; ++c)
+        for (int r = 0; r < 3; ++r) BJ[r + 3 * c] = B(r, 0) * J[3 * c] + B(r, 1) * J[1 + 3 * c] + B(r, 2) * J[2 + 3 * c];
     for (int r = 0; r < nu; ++r) {
-        if (J(0, r) == 0 && J(1, r) == 0 && J(2, r) == 0) continue;  // mobilities off both bodies' paths
-        for (int c = 0; c < nu; ++c) A(r, c) += J(0, r) * BJ(0, c) + J(1, r) * BJ(1, c) + J(2, r) * BJ(2, c);
+        const double* Jr = J + 3 * r;
+        if (Jr[0] == 0 && Jr[1] == 0 && Jr[2] == 0) continue;  // mobilities off both bodies' paths
+        for (int c = 0; c < nu; ++c) A[r + nu * c] += Jr[0] * BJ[3 * c] + Jr[1] * BJ[1 + 3 * c] + Jr[2] * BJ[2 + 3 * c];
     }
 }
 
 }  // namespace
 
+// Row k of J = J_b(P) - J_a(P) is the generalized force of a unit force along axis k applied at
+// P on b and its opposite on a: three transposed products, where calcStationJacobian for the
+// two stations would take six.
+void CompliantContactJacobian::fillRelativeJacobian(const ContactPair& pair, const SimTK::Vec3& p_G,
+                                                    const SimTK::State& state, std::vector<double>& J) const {
+    const int nu = state.getNU();
+    const SimTK::MobilizedBodyIndex a = pair.a.body.getMobilizedBodyIndex(), b = pair.b.body.getMobilizedBodyIndex();
+    const SimTK::Vec3 r_a = p_G - pair.a.body.getBodyOriginLocation(state);
+    const SimTK::Vec3 r_b = p_G - pair.b.body.getBodyOriginLocation(state);
+    SimTK::Vector_<SimTK::SpatialVec> F(matter_.getNumBodies(), SimTK::SpatialVec(SimTK::Vec3(0), SimTK::Vec3(0)));
+    SimTK::Vector row;
+    for (int k = 0; k < 3; ++k) {
+        SimTK::Vec3 e(0);
+        e[k] = 1;
+        F[b] += SimTK::SpatialVec(r_b % e, e);
+        F[a] -= SimTK::SpatialVec(r_a % e, e);
+        matter_.multiplyBySystemJacobianTranspose(state, F, row);
+        for (int c = 0; c < nu; ++c) J[k + 3 * c] = row[c];
+        F[a] = F[b] = SimTK::SpatialVec(SimTK::Vec3(0), SimTK::Vec3(0));
+    }
+}
+
 void CompliantContactJacobian::addForceJacobians(const SimTK::State& state, SimTK::Matrix& D, SimTK::Matrix& K) const {
-    SimTK::Matrix JS, J(3, state.getNU());
+    const int nu = state.getNU();
+    std::vector<double> J(3 * static_cast<std::size_t>(nu));
     for (const ContactReport& report : contacts_.findContactReports(state)) {
         if (report.normalForce <= 0) continue;
         const ContactPair& pair = contacts_.getPair(report.pairIndex);
-        const SimTK::Array_<SimTK::MobilizedBodyIndex> bodies{pair.b.body.getMobilizedBodyIndex(),
-                                                              pair.a.body.getMobilizedBodyIndex()};
-        const SimTK::Array_<SimTK::Vec3> stations{pair.b.body.findStationAtGroundPoint(state, report.p_G),
-                                                  pair.a.body.findStationAtGroundPoint(state, report.p_G)};
-        matter_.calcStationJacobian(state, bodies, stations, JS);
-        for (int r = 0; r < 3; ++r)
-            for (int c = 0; c < J.ncol(); ++c) J(r, c) = JS(r, c) - JS(r + 3, c);
+        fillRelativeJacobian(pair, report.p_G, state, J);
         const ContactForceDerivatives d = calcContactForceDerivatives(parameters_[report.pairIndex], report, withFriction_);
-        addProjected(J, d.dF_dv, D);
-        if (withStiffness_) addProjected(J, d.dF_dp, K);
+        addProjected(J.data(), nu, d.dF_dv, D.updContiguousScalarData());
+        if (withStiffness_) addProjected(J.data(), nu, d.dF_dp, K.updContiguousScalarData());
     }
 }
 

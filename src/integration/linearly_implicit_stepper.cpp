@@ -123,12 +123,7 @@ bool LinearlyImplicitStepper::takeStep(double h) {
     state_.updQ() = q;
     state_.updU() = u;
     state_.updZ() = zNext;
-    try {
-        system_.project(state_, options_.constraintTolerance);
-    } catch (const std::exception& e) {
-        throw NumericalError("linearly implicit stepper at " + timeText(state_) + ": cannot project onto the constraints: " + e.what());
-    }
-    ++projections_;
+    projectStep();
     system_.realize(state_, SimTK::Stage::Acceleration);
     ++evaluations_;
     ++steps_;
@@ -146,6 +141,57 @@ bool LinearlyImplicitStepper::takeStep(double h) {
     return true;
 }
 
+namespace {
+
+// Solves A x = b in place (A n x n column-major, overwritten by its LU factors; b becomes x) by
+// Gaussian elimination with partial pivoting. False if A is singular. A hand-written loop: at
+// the sizes of a hand (a few dozen mobilities) SimTK::Matrix's element access and FactorLU's
+// copies cost more than the arithmetic.
+bool solveInPlace(std::vector<double>& A, int n, std::vector<double>& b) {
+    for (int k = 0; k < n; ++k) {
+        int pivot = k;
+        for (int r = k + 1; r < n; ++r)
+            if (std::abs(A[r + n * k]) > std::abs(A[pivot + n * k])) pivot = r;
+        if (A[pivot + n * k] == 0) return false;
+        if (pivot != k) {
+            for (int c = 0; c < n; ++c) std::swap(A[k + n * c], A[pivot + n * c]);
+            std::swap(b[k], b[pivot]);
+        }
+        const double inverse = 1 / A[k + n * k];
+        for (int r = k + 1; r < n; ++r) {
+            const double factor = A[r + n * k] * inverse;
+            if (factor == 0) continue;
+            for (int c = k + 1; c < n; ++c) A[r + n * c] -= factor * A[k + n * c];
+            b[r] -= factor * b[k];
+        }
+    }
+    for (int k = n - 1; k >= 0; --k) {
+        double sum = b[k];
+        for (int c = k + 1; c < n; ++c) sum -= A[k + n * c] * b[c];
+        b[k] = sum / A[k + n * k];
+    }
+    return true;
+}
+
+}  // namespace
+
+// Onto the constraints, or with none only the quaternions normalized (System::project would
+// realize and check the velocity level too: about 8 % of a step).
+void LinearlyImplicitStepper::projectStep() {
+    const SimTK::SimbodyMatterSubsystem& matter = system_.getMatterSubsystem();
+    if (matter.getNumConstraints() == 0) {
+        system_.realize(state_, SimTK::Stage::Time);
+        matter.normalizeQuaternions(state_);
+        return;
+    }
+    try {
+        system_.project(state_, options_.constraintTolerance);
+    } catch (const std::exception& e) {
+        throw NumericalError("linearly implicit stepper at " + timeText(state_) + ": cannot project onto the constraints: " + e.what());
+    }
+    ++projections_;
+}
+
 // (M - h D - h^2 K) du = h (f + h K u) with f = M udot at the step's start.
 void LinearlyImplicitStepper::solveVelocityChange(double h, SimTK::Vector& du) const {
     const SimTK::SimbodyMatterSubsystem& matter = system_.getMatterSubsystem();
@@ -156,28 +202,42 @@ void LinearlyImplicitStepper::solveVelocityChange(double h, SimTK::Vector& du) c
     matter.multiplyByM(state_, state_.getUDot(), f);
     SimTK::Matrix D(nu, nu, 0.0), K(nu, nu, 0.0);
     for (const ForceJacobianContributor* c : contributors_) c->addForceJacobians(state_, D, K);
-    SimTK::Matrix A = M - h * D - (h * h) * K;
-    SimTK::Vector rhs = h * (f + h * (K * state_.getU()));
-    holdLockedSpeeds(A, rhs);
-    SimTK::FactorLU(A).solve(rhs, du);
+    const double* m = M.getContiguousScalarData();
+    const double* d = D.getContiguousScalarData();
+    const double* k = K.getContiguousScalarData();
+    const SimTK::Vector& u = state_.getU();
+    std::vector<double> A(static_cast<std::size_t>(nu) * nu), x(static_cast<std::size_t>(nu));
+    for (std::size_t i = 0; i < A.size(); ++i) A[i] = m[i] - h * d[i] - h * h * k[i];
     for (int i = 0; i < nu; ++i) {
-        if (!std::isfinite(du[i])) {
-            throw NumericalError("linearly implicit stepper at " + timeText(state_) + ": the step's linear system is singular");
+        double Ku = 0;
+        for (int j = 0; j < nu; ++j) Ku += k[i + nu * j] * u[j];
+        x[i] = h * (f[i] + h * Ku);
+    }
+    holdLockedSpeeds(A, x);
+    if (!solveInPlace(A, nu, x)) {
+        throw NumericalError("linearly implicit stepper at " + timeText(state_) + ": the step's linear system is singular");
+    }
+    du.resize(nu);
+    for (int i = 0; i < nu; ++i) {
+        if (!std::isfinite(x[i])) {
+            throw NumericalError("linearly implicit stepper at " + timeText(state_) + ": the step's velocity change is not finite");
         }
+        du[i] = x[i];
     }
 }
 
 // A locked mobilizer's speeds (SimTK::MobilizedBody::lock) do not change: du = 0 there, and the
 // other rows see no coupling to them. Their lock force is in f; it keeps the rest at rest.
-void LinearlyImplicitStepper::holdLockedSpeeds(SimTK::Matrix& A, SimTK::Vector& rhs) const {
+void LinearlyImplicitStepper::holdLockedSpeeds(std::vector<double>& A, std::vector<double>& rhs) const {
     const SimTK::SimbodyMatterSubsystem& matter = system_.getMatterSubsystem();
+    const int n = static_cast<int>(rhs.size());
     for (SimTK::MobilizedBodyIndex b(1); b < matter.getNumBodies(); ++b) {
         const SimTK::MobilizedBody& mobod = matter.getMobilizedBody(b);
         if (!mobod.isLocked(state_)) continue;
         const int first = mobod.getFirstUIndex(state_);
         for (int i = first; i < first + mobod.getNumU(state_); ++i) {
-            for (int k = 0; k < A.nrow(); ++k) A(i, k) = A(k, i) = 0;
-            A(i, i) = 1;
+            for (int k = 0; k < n; ++k) A[i + n * k] = A[k + n * i] = 0;
+            A[i + n * i] = 1;
             rhs[i] = 0;
         }
     }

@@ -35,6 +35,10 @@ public:
     void addForceJacobians(const SimTK::State& state, SimTK::Matrix& D, SimTK::Matrix& K) const override;
 
 private:
+    // J = J_b(P) - J_a(P) (3 x nu, column-major) for the pair's two bodies at P (in Ground, m).
+    void fillRelativeJacobian(const ContactPair& pair, const SimTK::Vec3& p_G, const SimTK::State& state,
+                              std::vector<double>& J) const;
+
     const SimTK::SimbodyMatterSubsystem& matter_;
     CompliantContactForce contacts_;
     std::vector<ContactParameters> parameters_;  // per pair, combined once

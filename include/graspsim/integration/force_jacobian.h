@@ -20,7 +20,8 @@ namespace graspsim::integration {
 class ForceJacobianContributor {
 public:
     virtual ~ForceJacobianContributor() = default;
-    /// Adds this element's D and K (both nu x nu, already sized) at `state`, realized through
+    /// Adds this element's D and K (both nu x nu, already sized, with contiguous column-major
+    /// storage, so an element may write through updContiguousScalarData()) at `state`, realized through
     /// Stage::Velocity (Acceleration where the stepper calls it).
     virtual void addForceJacobians(const SimTK::State& state, SimTK::Matrix& D, SimTK::Matrix& K) const = 0;
 };

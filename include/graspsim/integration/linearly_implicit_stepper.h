@@ -60,8 +60,9 @@ private:
     bool handleDueScheduledEvents();
     void advance(double tStop);
     bool takeStep(double h);
+    void projectStep();
     void solveVelocityChange(double h, SimTK::Vector& du) const;
-    void holdLockedSpeeds(SimTK::Matrix& A, SimTK::Vector& rhs) const;
+    void holdLockedSpeeds(std::vector<double>& A, std::vector<double>& rhs) const;
     void handleResults(const SimTK::HandleEventsResults& results);
     SimTK::Array_<SimTK::EventId> findTriggeredEvents() const;
 
