@@ -1,0 +1,137 @@
+// The contact force Jacobians against a second method, central finite differences of the force
+// law itself, and integrated: a frictionless, undamped ball dropped on a floor and stepped by the
+// linearly implicit stepper at 1 ms bounces without gaining energy (implicit Euler may only lose it).
+
+#include "graspsim/contact/compliant_contact_jacobian.h"
+
+#include "contact_scenes.h"
+#include "graspsim/integration/linearly_implicit_stepper.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace graspsim::contact {
+namespace {
+
+using SimTK::Vec3;
+
+ContactParameters makeParameters(double staticFriction, double dynamicFriction) {
+    ContactParameters p;
+    p.effectiveStiffness = 1e6;
+    p.dissipation = 2;
+    p.staticFriction = staticFriction;
+    p.dynamicFriction = dynamicFriction;
+    p.viscousFriction = 0.1;
+    p.transitionVelocity = 1e-3;
+    return p;
+}
+
+// The force on b, F = f_n n + f_t, for relative velocity v at fixed depth (the force law only).
+Vec3 calcForce(const ContactParameters& p, const SimTK::UnitVec3& n, double depth, const Vec3& v) {
+    const double fn = calcNormalForce(p, 0.01, depth, -SimTK::dot(v, n));
+    return fn * n.asVec3() + calcFrictionForce(p, fn, v - SimTK::dot(v, n) * n);
+}
+
+ContactReport makeReport(const ContactParameters& p, const SimTK::UnitVec3& n, double depth, const Vec3& v) {
+    ContactReport r;
+    r.n_G = n;
+    r.depth = depth;
+    r.depthRate = -SimTK::dot(v, n);
+    r.slipVelocity_G = v - SimTK::dot(v, n) * n;
+    r.normalForce = calcNormalForce(p, 0.01, depth, r.depthRate);
+    return r;
+}
+
+void expectMatchesFiniteDifferences(const ContactParameters& p, const Vec3& v) {
+    const SimTK::UnitVec3 n(0.3, 1, -0.2);
+    const double depth = 2e-4;
+    const ContactForceDerivatives d = calcContactForceDerivatives(p, makeReport(p, n, depth, v), true);
+    const double dv = 1e-9;
+    for (int c = 0; c < 3; ++c) {
+        Vec3 e(0);
+        e[c] = dv;
+        const Vec3 fd = (calcForce(p, n, depth, v + e) - calcForce(p, n, depth, v - e)) / (2 * dv);
+        for (int r = 0; r < 3; ++r) EXPECT_NEAR(d.dF_dv(r, c), fd[r], 1e-5 * (1 + std::abs(fd[r]))) << r << "," << c;
+    }
+    const double dx = 1e-10;  // depth grows as b moves against n
+    const Vec3 fdDepth = (calcForce(p, n, depth + dx, v) - calcForce(p, n, depth - dx, v)) / (2 * dx);
+    const Vec3 analytic = -(d.dF_dp * n.asVec3());
+    for (int r = 0; r < 3; ++r) EXPECT_NEAR(analytic[r], fdDepth[r], 1e-5 * (1 + std::abs(fdDepth[r]))) << r;
+}
+
+TEST(CompliantContactJacobian, MatchesFiniteDifferencesBelowTransition) {
+    // Slip 0.5 mm/s (half the transition velocity) while approaching at 2 mm/s.
+    const SimTK::UnitVec3 n(0.3, 1, -0.2);
+    const Vec3 slip = SimTK::UnitVec3(Vec3(1, 0, 0) - Vec3(1, 0, 0).elementwiseMultiply(n.asVec3()).sum() * n).asVec3() * 5e-4;
+    expectMatchesFiniteDifferences(makeParameters(0.9, 0.7), slip - 2e-3 * n.asVec3());
+}
+
+TEST(CompliantContactJacobian, MatchesFiniteDifferencesWhileSliding) {
+    // Slip 5 mm/s, beyond the transition, with mu_s = mu_d (no falling branch to clamp).
+    const SimTK::UnitVec3 n(0.3, 1, -0.2);
+    const Vec3 t = SimTK::UnitVec3(SimTK::cross(n.asVec3(), Vec3(0, 0, 1))).asVec3();
+    expectMatchesFiniteDifferences(makeParameters(0.8, 0.8), 5e-3 * t + 1e-3 * n.asVec3());
+}
+
+// A 200 g ball of radius 45 mm dropped 20 mm onto a floor, drifting sideways; no dissipation and
+// no friction, so the continuous motion conserves kinetic + gravity + Hertz energy. Stepped by the
+// linearly implicit stepper at `h` for 150 ms (it falls in 64 ms and bounces back up).
+struct BounceResult {
+    double highestGain = -1;  // largest (E - E0) / E_drop over the run
+    double lostShare = 0;     // (E0 - E_end) / E_drop
+    double lowest = 1, highestAfterContact = -1;  // ball centre heights (m)
+};
+
+BounceResult runBounce(double h) {
+    constexpr double kMass = 0.2, kRadius = 0.045, kDrop = 0.02, kG = 9.81;
+    test::Scene scene;
+    SimTK::Force::Gravity gravity(scene.forces, scene.matter, Vec3(0, -kG, 0));
+    SimTK::MobilizedBody::Free ball = scene.addFree(kMass, kRadius);
+    const ContactMaterial m = test::makeMaterial(1e6, 0);
+    CompliantContactForce force(scene.forces,
+                                {{test::makeSurface(ball, "ball", ContactShape::sphere(kRadius), m), scene.makeFloor(m)}});
+    const CompliantContactJacobian jacobian(scene.matter, force);
+    SimTK::State state = scene.system.realizeTopology();
+    scene.system.realizeModel(state);
+    ball.setQToFitTranslation(state, Vec3(0, kRadius + kDrop, 0));
+    ball.setUToFitLinearVelocity(state, Vec3(0.1, 0, 0.05));
+    integration::LinearlyImplicitOptions options;
+    options.stepSize = h;
+    integration::LinearlyImplicitStepper stepper(scene.system, {&jacobian}, options);
+    stepper.initialize(state);
+    const double e0 = scene.system.calcEnergy(stepper.getState());
+    const double drop = kMass * kG * kDrop + 0.5 * kMass * 0.05 * 0.05;  // energy above rest at contact height
+    BounceResult r;
+    bool touched = false;
+    for (int i = 1; i <= 150; ++i) {
+        stepper.stepTo(i * 1e-3);
+        const SimTK::State& s = stepper.getState();
+        r.highestGain = std::max(r.highestGain, (scene.system.calcEnergy(s) - e0) / drop);
+        const double height = ball.getBodyOriginLocation(s)[1];
+        r.lowest = std::min(r.lowest, height);
+        touched = touched || height < kRadius;
+        if (touched) r.highestAfterContact = std::max(r.highestAfterContact, height);
+    }
+    r.lostShare = (e0 - scene.system.calcEnergy(stepper.getState())) / drop;
+    return r;
+}
+
+TEST(CompliantContactJacobian, UndampedBounceCreatesNoEnergy) {
+    constexpr double kRadius = 0.045;
+    double previousLoss = 1;
+    for (double h : {1e-3, 2.5e-4}) {
+        const BounceResult r = runBounce(h);
+        RecordProperty("energy_lost_share_at_h_us_" + std::to_string(static_cast<int>(h * 1e6)), std::to_string(r.lostShare));
+        EXPECT_LT(r.lowest, kRadius - 1e-4) << h;                   // it hit the floor
+        EXPECT_GT(r.highestAfterContact, kRadius + 2e-3) << h;      // and bounced back up
+        EXPECT_LT(r.highestGain, 1e-9) << h;                        // never above its start energy
+        EXPECT_LT(r.lostShare, previousLoss) << h;                  // the scheme's loss shrinks with h
+        previousLoss = r.lostShare;
+    }
+}
+
+}  // namespace
+}  // namespace graspsim::contact
