@@ -58,9 +58,11 @@ SimulateCommand::SimulateCommand(CLI::App& app) : options_(std::make_shared<Opti
     command_->add_option("--perturbation", o.perturbation, "none (default) or a perturbation of the scenario (f1, f2)");
     command_->add_option("--duration", o.duration, "simulated time in s (default: the scenario's)");
     command_->add_option("--integrator", o.integrator,
-                         "simbody (default: Simbody's CPodes BDF), cvode (the SUNDIALS CVODE BDF reference) or implicit "
-                         "(fixed-step linearly implicit Euler with analytic contact Jacobians; compliant contact)");
-    command_->add_option("--step-size", o.stepSize, "implicit: step size in s, > 0 (default: the scenario's simulation.step_size, 0.001)");
+                         "simbody (default: Simbody's CPodes BDF), cvode (the SUNDIALS CVODE BDF reference), implicit "
+                         "(linearly implicit Rosenbrock with analytic contact Jacobians, error-controlled steps up to "
+                         "--step-size; compliant contact) or implicit-fixed (the same at fixed steps)");
+    command_->add_option("--step-size", o.stepSize,
+                         "implicit: longest step, implicit-fixed: the step, in s, > 0 (default: the scenario's simulation.step_size, 0.005)");
     command_->add_option("--accuracy", o.accuracy, "integrator relative accuracy in (0, 1) (default: the scenario's)");
     command_->add_option("--q-threshold", o.qThreshold, "approx: grasp quality Q_Th (N) to engage (default: 0.8 x the settled grasp's)");
     command_->add_option("--q-minimum", o.qMinimum, "approx: grasp quality Q_M (N) below which to release (default: 0.5 x Q_Th)");
@@ -180,7 +182,7 @@ results::RunProvenance makeRunProvenance(const std::vector<std::string>& command
     run.run["integrator"] = simulation::toString(options.integrator);
     run.run["duration_s"] = formatOverride(options.duration);
     run.run["accuracy"] = formatOverride(options.accuracy);
-    if (options.integrator == simulation::IntegratorChoice::LinearlyImplicit) run.run["step_size_s"] = formatOverride(options.stepSize);
+    if (options.integrator >= simulation::IntegratorChoice::LinearlyImplicit) run.run["step_size_s"] = formatOverride(options.stepSize);
     if (options.mode == simulation::SimulationMode::Approx) {
         run.run["constraint"] = simulation::toString(options.approx.constraint);
         run.run["attach"] = simulation::toString(options.approx.attach);

@@ -1,6 +1,7 @@
 #include "graspsim/integration/linearly_implicit_stepper.h"
 
 #include "scheduled_times.h"
+#include "step_matrix.h"
 
 #include "graspsim/error.h"
 
@@ -17,6 +18,13 @@ void checkOptions(const LinearlyImplicitOptions& o) {
     const auto positive = [](double v) { return v > 0 && std::isfinite(v); };
     if (!positive(o.stepSize)) {
         throw InputError("step size: value " + std::to_string(o.stepSize) + " s is not accepted; use a finite number > 0");
+    }
+    if (o.order != 1 && o.order != 2) {
+        throw InputError("LinearlyImplicitOptions.order: value " + std::to_string(o.order) + " is not accepted; use 1 or 2");
+    }
+    if (!(o.accuracy >= 0 && std::isfinite(o.accuracy)) || (o.accuracy > 0 && o.order != 2)) {
+        throw InputError("LinearlyImplicitOptions.accuracy: value " + std::to_string(o.accuracy) +
+                         " is not accepted; use 0 (fixed steps) or, with order 2, a finite number > 0");
     }
     if (!positive(o.constraintTolerance)) {
         throw InputError("LinearlyImplicitOptions.constraintTolerance: value " + std::to_string(o.constraintTolerance) +
@@ -99,33 +107,66 @@ bool LinearlyImplicitStepper::handleDueScheduledEvents() {
     return true;
 }
 
-// Equal steps no longer than h up to tStop, or up to the first step whose end triggers an event.
+// Up to tStop, or up to the first step whose end triggers an event: equal steps no longer than
+// h, or with error control steps chosen from the error estimate, never longer than h.
 void LinearlyImplicitStepper::advance(double tStop) {
+    if (options_.accuracy > 0) {
+        advanceControlled(tStop);
+        return;
+    }
     const double t0 = state_.getTime();
     const double span = tStop - t0;
     const long n = std::max(1L, static_cast<long>(std::ceil(span / options_.stepSize * (1 - 1e-12))));
     for (long k = 1; k <= n && !terminated_; ++k) {
         const double h = (k == n ? tStop : t0 + span * static_cast<double>(k) / static_cast<double>(n)) - state_.getTime();
-        if (takeStep(h)) return;
+        double error = 0;
+        if (takeStep(h, error)) return;
     }
 }
 
-// One step of size h (see the header). True if the step's end triggered an event (handled).
-bool LinearlyImplicitStepper::takeStep(double h) {
-    SimTK::Vector du;
-    solveVelocityChange(h, du);
-    const SimTK::Vector u = state_.getU() + du;
-    const SimTK::Vector zNext = state_.getZ() + h * state_.getZDot();
-    SimTK::Vector qdot;
-    system_.getMatterSubsystem().multiplyByN(state_, false, u, qdot);
-    const SimTK::Vector q = state_.getQ() + h * qdot;
-    state_.updTime() += h;
-    state_.updQ() = q;
-    state_.updU() = u;
-    state_.updZ() = zNext;
+// A step whose error estimate exceeds the accuracy is taken again from its start, shorter; the
+// next step grows by the usual second-order rule, 0.9 error^(-1/2), by 5x at most, up to h. A
+// stop closer than 1.5 steps is reached in one or two equal steps, so no sliver step is left.
+void LinearlyImplicitStepper::advanceControlled(double tStop) {
+    while (!terminated_ && state_.getTime() < tStop) {
+        const double t = state_.getTime(), remaining = tStop - t;
+        double h = std::min(nextStepSize_, options_.stepSize);
+        if (remaining < 1.5 * h) h = remaining <= h ? remaining : remaining / 2;
+        const SimTK::Vector q = state_.getQ(), u = state_.getU(), z = state_.getZ();
+        double error = 0;
+        if (takeStep(h, error)) return;
+        nextStepSize_ = h * std::clamp(0.9 / std::sqrt(std::max(error, 1e-10)), 0.2, 5.0);
+        if (error <= 1 || h <= kMinStepSize) continue;
+        ++rejectedSteps_;
+        setState(t, q, u, z);
+        system_.realize(state_, SimTK::Stage::Acceleration);
+        ++evaluations_;
+    }
+}
+
+namespace {
+
+std::vector<double> toStd(const SimTK::Vector& v) { return std::vector<double>(&v[0], &v[0] + v.size()); }
+SimTK::Vector toSimTK(const std::vector<double>& v) { return SimTK::Vector(static_cast<int>(v.size()), v.data()); }
+
+// a + s b
+std::vector<double> addScaled(const std::vector<double>& a, double s, const std::vector<double>& b) {
+    std::vector<double> out(a);
+    for (std::size_t i = 0; i < out.size(); ++i) out[i] += s * b[i];
+    return out;
+}
+
+}  // namespace
+
+// One step of size h (see the header); `error` receives its error estimate (weighted RMS
+// against the accuracy; 0 for Euler). True if the step's end triggered an event (handled); a
+// step about to be rejected (error > 1 under error control) is not looked at for events.
+bool LinearlyImplicitStepper::takeStep(double h, double& error) {
+    error = options_.order == 2 ? takeRosenbrockStep(h) : (takeEulerStep(h), 0.0);
     projectStep();
     system_.realize(state_, SimTK::Stage::Acceleration);
     ++evaluations_;
+    if (options_.accuracy > 0 && error > 1 && h > kMinStepSize) return false;
     ++steps_;
     state_.autoUpdateDiscreteVariables();
     const SimTK::Array_<SimTK::EventId> triggered = findTriggeredEvents();
@@ -141,39 +182,70 @@ bool LinearlyImplicitStepper::takeStep(double h) {
     return true;
 }
 
-namespace {
-
-// Solves A x = b in place (A n x n column-major, overwritten by its LU factors; b becomes x) by
-// Gaussian elimination with partial pivoting. False if A is singular. A hand-written loop: at
-// the sizes of a hand (a few dozen mobilities) SimTK::Matrix's element access and FactorLU's
-// copies cost more than the arithmetic.
-bool solveInPlace(std::vector<double>& A, int n, std::vector<double>& b) {
-    for (int k = 0; k < n; ++k) {
-        int pivot = k;
-        for (int r = k + 1; r < n; ++r)
-            if (std::abs(A[r + n * k]) > std::abs(A[pivot + n * k])) pivot = r;
-        if (A[pivot + n * k] == 0) return false;
-        if (pivot != k) {
-            for (int c = 0; c < n; ++c) std::swap(A[k + n * c], A[pivot + n * c]);
-            std::swap(b[k], b[pivot]);
-        }
-        const double inverse = 1 / A[k + n * k];
-        for (int r = k + 1; r < n; ++r) {
-            const double factor = A[r + n * k] * inverse;
-            if (factor == 0) continue;
-            for (int c = k + 1; c < n; ++c) A[r + n * c] -= factor * A[k + n * c];
-            b[r] -= factor * b[k];
-        }
-    }
-    for (int k = n - 1; k >= 0; --k) {
-        double sum = b[k];
-        for (int c = k + 1; c < n; ++c) sum -= A[k + n * c] * b[c];
-        b[k] = sum / A[k + n * k];
-    }
-    return true;
+// (M - h D - h^2 K) du = h (f + h K u), f = M udot; u' = u + du, q' = q + h N u', z' = z + h zdot.
+void LinearlyImplicitStepper::takeEulerStep(double h) {
+    const StepMatrix A(system_.getMatterSubsystem(), contributors_, state_, h);
+    const std::vector<double> u = toStd(state_.getU());
+    std::vector<double> du = addScaled(A.multiplyByM(toStd(state_.getUDot())), h, A.multiplyByK(u));
+    A.solve(du);
+    const SimTK::Vector uNext = toSimTK(addScaled(u, h, du));
+    const SimTK::Vector zNext = state_.getZ() + h * state_.getZDot();
+    SimTK::Vector qdot;
+    system_.getMatterSubsystem().multiplyByN(state_, false, uNext, qdot);
+    const SimTK::Vector qNext = state_.getQ() + h * qdot;
+    setState(state_.getTime() + h, qNext, uNext, zNext);
 }
 
-}  // namespace
+// ROS2 (Verwer et al. 1999; L-stable, second order for any approximate Jacobian), on y = (x, u)
+// with x' = u (x a mobility-space displacement, q = q0 + N(q0) x), u' = M^-1 f(x, u) and the
+// Jacobian [[0, I], [M^-1 K, M^-1 D]]. Each stage solves (I - g J) (a; b) = (r1; r2), g = gamma h,
+// which reduces to (M - g D - g^2 K) b = M r2 + g K r1, a = r1 + g b:
+//   stage 1: r = F(y0);                 stage 2: r = F(y0 + h k1) - 2 k1;
+//   y1 = y0 + h (3/2 k1 + 1/2 k2).
+// Z variables get the explicit two-stage (Heun) form of the same tableau.
+double LinearlyImplicitStepper::takeRosenbrockStep(double h) {
+    const double gamma = 1 + 1 / std::sqrt(2.0), g = gamma * h;
+    const SimTK::SimbodyMatterSubsystem& matter = system_.getMatterSubsystem();
+    const StepMatrix A(matter, contributors_, state_, g);
+    const double t0 = state_.getTime();
+    const SimTK::Vector q0 = state_.getQ(), z0 = state_.getZ(), zdot0 = state_.getZDot();
+    const std::vector<double> u0 = toStd(state_.getU());
+    std::vector<double> b1 = addScaled(A.multiplyByM(toStd(state_.getUDot())), g, A.multiplyByK(u0));
+    A.solve(b1);
+    const std::vector<double> a1 = addScaled(u0, g, b1);
+    SimTK::Vector qdot1, qdot2;
+    matter.multiplyByN(state_, false, toSimTK(a1), qdot1);  // N(q0) a1
+    setState(t0 + h, q0 + h * qdot1, toSimTK(addScaled(u0, h, b1)), z0 + h * zdot0);
+    system_.realize(state_, SimTK::Stage::Acceleration);
+    ++evaluations_;
+    const SimTK::Vector zdot2 = state_.getZDot();
+    const std::vector<double> r1 = addScaled(addScaled(u0, h, b1), -2, a1);
+    std::vector<double> b2 = addScaled(A.multiplyByM(addScaled(toStd(state_.getUDot()), -2, b1)), g, A.multiplyByK(r1));
+    A.solve(b2);
+    const std::vector<double> a2 = addScaled(r1, g, b2);
+    state_.updQ() = q0;  // N(q0) for the final combination
+    system_.realize(state_, SimTK::Stage::Position);
+    matter.multiplyByN(state_, false, toSimTK(a2), qdot2);
+    const SimTK::Vector uNext = toSimTK(addScaled(addScaled(u0, 1.5 * h, b1), 0.5 * h, b2));
+    setState(t0 + h, q0 + (1.5 * h) * qdot1 + (0.5 * h) * qdot2, uNext, z0 + (0.5 * h) * (zdot0 + zdot2));
+    return options_.accuracy > 0 ? calcErrorNorm(h, a1, a2, b1, b2, u0) : 0.0;
+}
+
+// The difference from the embedded first-order solution y0 + h k1, h (k1 + k2) / 2, in the
+// weighted RMS norm of Simbody's accuracy convention: each entry over accuracy (1 + |y|), with
+// the displacement x for q (its weight 1) and u.
+double LinearlyImplicitStepper::calcErrorNorm(double h, const std::vector<double>& a1, const std::vector<double>& a2,
+                                              const std::vector<double>& b1, const std::vector<double>& b2,
+                                              const std::vector<double>& u0) const {
+    double sum = 0;
+    const std::size_t n = u0.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        const double ex = 0.5 * h * (a1[i] + a2[i]) / options_.accuracy;
+        const double eu = 0.5 * h * (b1[i] + b2[i]) / (options_.accuracy * (1 + std::abs(u0[i])));
+        sum += ex * ex + eu * eu;
+    }
+    return n > 0 ? std::sqrt(sum / static_cast<double>(2 * n)) : 0.0;
+}
 
 // Onto the constraints, or with none only the quaternions normalized (System::project would
 // realize and check the velocity level too: about 8 % of a step).
@@ -192,55 +264,11 @@ void LinearlyImplicitStepper::projectStep() {
     ++projections_;
 }
 
-// (M - h D - h^2 K) du = h (f + h K u) with f = M udot at the step's start.
-void LinearlyImplicitStepper::solveVelocityChange(double h, SimTK::Vector& du) const {
-    const SimTK::SimbodyMatterSubsystem& matter = system_.getMatterSubsystem();
-    const int nu = state_.getNU();
-    SimTK::Matrix M;
-    matter.calcM(state_, M);
-    SimTK::Vector f;
-    matter.multiplyByM(state_, state_.getUDot(), f);
-    SimTK::Matrix D(nu, nu, 0.0), K(nu, nu, 0.0);
-    for (const ForceJacobianContributor* c : contributors_) c->addForceJacobians(state_, D, K);
-    const double* m = M.getContiguousScalarData();
-    const double* d = D.getContiguousScalarData();
-    const double* k = K.getContiguousScalarData();
-    const SimTK::Vector& u = state_.getU();
-    std::vector<double> A(static_cast<std::size_t>(nu) * nu), x(static_cast<std::size_t>(nu));
-    for (std::size_t i = 0; i < A.size(); ++i) A[i] = m[i] - h * d[i] - h * h * k[i];
-    for (int i = 0; i < nu; ++i) {
-        double Ku = 0;
-        for (int j = 0; j < nu; ++j) Ku += k[i + nu * j] * u[j];
-        x[i] = h * (f[i] + h * Ku);
-    }
-    holdLockedSpeeds(A, x);
-    if (!solveInPlace(A, nu, x)) {
-        throw NumericalError("linearly implicit stepper at " + timeText(state_) + ": the step's linear system is singular");
-    }
-    du.resize(nu);
-    for (int i = 0; i < nu; ++i) {
-        if (!std::isfinite(x[i])) {
-            throw NumericalError("linearly implicit stepper at " + timeText(state_) + ": the step's velocity change is not finite");
-        }
-        du[i] = x[i];
-    }
-}
-
-// A locked mobilizer's speeds (SimTK::MobilizedBody::lock) do not change: du = 0 there, and the
-// other rows see no coupling to them. Their lock force is in f; it keeps the rest at rest.
-void LinearlyImplicitStepper::holdLockedSpeeds(std::vector<double>& A, std::vector<double>& rhs) const {
-    const SimTK::SimbodyMatterSubsystem& matter = system_.getMatterSubsystem();
-    const int n = static_cast<int>(rhs.size());
-    for (SimTK::MobilizedBodyIndex b(1); b < matter.getNumBodies(); ++b) {
-        const SimTK::MobilizedBody& mobod = matter.getMobilizedBody(b);
-        if (!mobod.isLocked(state_)) continue;
-        const int first = mobod.getFirstUIndex(state_);
-        for (int i = first; i < first + mobod.getNumU(state_); ++i) {
-            for (int k = 0; k < n; ++k) A[i + n * k] = A[k + n * i] = 0;
-            A[i + n * i] = 1;
-            rhs[i] = 0;
-        }
-    }
+void LinearlyImplicitStepper::setState(double t, const SimTK::Vector& q, const SimTK::Vector& u, const SimTK::Vector& z) {
+    state_.updTime() = t;
+    state_.updQ() = q;
+    state_.updU() = u;
+    state_.updZ() = z;
 }
 
 // The events whose triggers changed sign over the last step, in a direction they ask for.
@@ -271,6 +299,7 @@ void LinearlyImplicitStepper::handleResults(const SimTK::HandleEventsResults& re
 IntegrationStatistics LinearlyImplicitStepper::getStatistics() const {
     IntegrationStatistics s;
     s.steps = steps_;
+    s.errorTestFailures = rejectedSteps_;
     s.rhsEvaluations = evaluations_;
     s.jacobianEvaluations = steps_;
     s.linearSolverSetups = steps_;

@@ -193,8 +193,9 @@ struct SceneStepper {
     std::unique_ptr<integration::Stepper> stepper;
 };
 
-// The linearly implicit stepper with the joints' impedance and the compliant contacts implicit.
-SceneStepper makeLinearlyImplicitStepper(const GraspScene& scene, double stepSize) {
+// The linearly implicit stepper (ROS2) with the joints' impedance and the compliant contacts
+// implicit; steps up to `stepSize`, chosen by error control at `accuracy` (0: fixed steps).
+SceneStepper makeLinearlyImplicitStepper(const GraspScene& scene, double stepSize, double accuracy) {
     SceneStepper made;
     const SimTK::SimbodyMatterSubsystem& matter = scene.getModel().getMatter();
     made.jacobians.push_back(std::make_unique<integration::JointImpedanceJacobian>(
@@ -204,6 +205,7 @@ SceneStepper makeLinearlyImplicitStepper(const GraspScene& scene, double stepSiz
     for (const auto& j : made.jacobians) contributors.push_back(j.get());
     integration::LinearlyImplicitOptions implicit;
     implicit.stepSize = stepSize;
+    implicit.accuracy = accuracy;
     made.stepper = std::make_unique<integration::LinearlyImplicitStepper>(scene.getSystem(), contributors, implicit);
     return made;
 }
@@ -212,10 +214,13 @@ SceneStepper makeLinearlyImplicitStepper(const GraspScene& scene, double stepSiz
 // constraint tolerance from it as Simbody's integrators do (cvode_integrator.h).
 SceneStepper makeStepper(const GraspScene& scene, const SimulationOptions& options) {
     const scenario::SimulationSpec& spec = scene.getScenario().simulation;
-    if (options.integrator == IntegratorChoice::LinearlyImplicit) {
-        return makeLinearlyImplicitStepper(scene, options.stepSize > 0 ? options.stepSize : spec.stepSize);
-    }
     const double accuracy = options.accuracy > 0 ? options.accuracy : spec.accuracy;
+    if (options.integrator == IntegratorChoice::LinearlyImplicit) {
+        return makeLinearlyImplicitStepper(scene, options.stepSize > 0 ? options.stepSize : spec.stepSize, accuracy);
+    }
+    if (options.integrator == IntegratorChoice::LinearlyImplicitFixed) {
+        return makeLinearlyImplicitStepper(scene, options.stepSize > 0 ? options.stepSize : spec.stepSize, 0.0);
+    }
     SceneStepper made;
     if (options.integrator == IntegratorChoice::SimbodyCpodes) {
         made.stepper = std::make_unique<integration::SimbodyCpodesStepper>(scene.getSystem(), accuracy);

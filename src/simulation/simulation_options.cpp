@@ -22,12 +22,14 @@ IntegratorChoice parseIntegratorChoice(const std::string& text, const std::strin
     if (text == "simbody") return IntegratorChoice::SimbodyCpodes;
     if (text == "cvode") return IntegratorChoice::Cvode;
     if (text == "implicit") return IntegratorChoice::LinearlyImplicit;
-    throw InputError(source + ": integrator '" + text + "' is not accepted; use simbody, cvode or implicit");
+    if (text == "implicit-fixed") return IntegratorChoice::LinearlyImplicitFixed;
+    throw InputError(source + ": integrator '" + text + "' is not accepted; use simbody, cvode, implicit or implicit-fixed");
 }
 
 std::string toString(IntegratorChoice integrator) {
     if (integrator == IntegratorChoice::Cvode) return "cvode";
-    return integrator == IntegratorChoice::LinearlyImplicit ? "implicit" : "simbody";
+    if (integrator == IntegratorChoice::LinearlyImplicit) return "implicit";
+    return integrator == IntegratorChoice::LinearlyImplicitFixed ? "implicit-fixed" : "simbody";
 }
 
 ApproxConstraint parseApproxConstraint(const std::string& text, const std::string& source) {

@@ -73,5 +73,8 @@ TEST(IntegratorChoice, CvodeAgreesWithSimbodyCpodesOnBallClutch) {
 TEST(IntegratorChoice, ParsesNamesAndRejectsOthers) {
     EXPECT_EQ(simulation::parseIntegratorChoice("cvode", "--integrator"), simulation::IntegratorChoice::Cvode);
     EXPECT_EQ(simulation::parseIntegratorChoice("simbody", "--integrator"), simulation::IntegratorChoice::SimbodyCpodes);
+    EXPECT_EQ(simulation::parseIntegratorChoice("implicit", "--integrator"), simulation::IntegratorChoice::LinearlyImplicit);
+    EXPECT_EQ(simulation::parseIntegratorChoice("implicit-fixed", "--integrator"),
+              simulation::IntegratorChoice::LinearlyImplicitFixed);
     EXPECT_THROW(simulation::parseIntegratorChoice("rk4", "--integrator"), InputError);
 }

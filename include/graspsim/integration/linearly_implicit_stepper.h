@@ -37,6 +37,13 @@ namespace graspsim::integration {
 struct LinearlyImplicitOptions {
     double stepSize = 1e-3;             ///< h (s), the longest step; finite and > 0
     double constraintTolerance = 1e-6;  ///< System::project accuracy after each step
+    /// 1: linearly implicit Euler (one dynamics evaluation per step); 2: the two-stage Rosenbrock
+    /// method ROS2 with the same matrix (two evaluations, one factorization per step).
+    int order = 2;
+    /// With order 2: > 0 turns on step-size control, steps no longer than stepSize chosen so that
+    /// the error estimate (the difference from the embedded first-order solution, weighted RMS,
+    /// Simbody's convention: accuracy (1 + |y|) per entry) stays below it; 0: fixed steps.
+    double accuracy = 0;
 };
 
 /// The fixed-step linearly implicit Euler stepper (see the file comment). The System and the
@@ -59,10 +66,14 @@ public:
 private:
     bool handleDueScheduledEvents();
     void advance(double tStop);
-    bool takeStep(double h);
+    void advanceControlled(double tStop);
+    bool takeStep(double h, double& error);
     void projectStep();
-    void solveVelocityChange(double h, SimTK::Vector& du) const;
-    void holdLockedSpeeds(std::vector<double>& A, std::vector<double>& rhs) const;
+    void takeEulerStep(double h);
+    double takeRosenbrockStep(double h);
+    double calcErrorNorm(double h, const std::vector<double>& a1, const std::vector<double>& a2,
+                         const std::vector<double>& b1, const std::vector<double>& b2, const std::vector<double>& u0) const;
+    void setState(double t, const SimTK::Vector& q, const SimTK::Vector& u, const SimTK::Vector& z);
     void handleResults(const SimTK::HandleEventsResults& results);
     SimTK::Array_<SimTK::EventId> findTriggeredEvents() const;
 
@@ -72,6 +83,9 @@ private:
     SimTK::State state_;
     SimTK::Vector triggers_;                         // the event triggers at the state's time
     SimTK::Array_<SimTK::EventTriggerInfo> triggerInfo_;
+    static constexpr double kMinStepSize = 1e-8;  // s; a step this short is accepted whatever its error
+    double nextStepSize_ = SimTK::Infinity;  // s, from the last step's error (error control only)
+    long rejectedSteps_ = 0;
     double lastEventTime_ = -SimTK::Infinity, lastReportTime_ = -SimTK::Infinity;
     long steps_ = 0, stepsAtInitialize_ = 0, evaluations_ = 0, projections_ = 0;
     long scheduledEvents_ = 0, triggeredEvents_ = 0;

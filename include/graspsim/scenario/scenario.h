@@ -166,8 +166,9 @@ struct SimulationSpec {
     double outputInterval = 0.01;
     /// Relative accuracy of the integrator, in (0, 1); default 1e-3.
     double accuracy = 1e-3;
-    /// Step size of the fixed-step linearly implicit integrator (s), > 0; default 0.001.
-    double stepSize = 1e-3;
+    /// Longest step of the linearly implicit integrator (s; its fixed step with implicit-fixed),
+    /// > 0; default 0.005.
+    double stepSize = 5e-3;
     /// Time from which the grasp counts as settled, and the object's drift is measured (s), in
     /// [ControllerSpec::approachTime, duration]; default 1.
     double settleTime = 1.0;

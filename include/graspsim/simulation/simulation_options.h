@@ -31,9 +31,12 @@ enum class SimulationMode {
 enum class IntegratorChoice {
     SimbodyCpodes,  ///< Simbody's CPodes (BDF, Newton), stepped as by SimTK::TimeStepper (simbody_stepper.h): the default
     Cvode,          ///< SUNDIALS CVODE (BDF, Newton), the reference (integration/cvode_integrator.h)
-    /// Fixed-step linearly implicit Euler with analytic contact and joint force Jacobians
-    /// (integration/linearly_implicit_stepper.h); compliant contact only
-    LinearlyImplicit
+    /// Linearly implicit two-stage Rosenbrock (ROS2) with analytic contact and joint force
+    /// Jacobians (integration/linearly_implicit_stepper.h), steps up to stepSize chosen by error
+    /// control at the accuracy; compliant contact only
+    LinearlyImplicit,
+    /// The same at fixed steps of stepSize (no error control)
+    LinearlyImplicitFixed
 };
 
 /// Which realization of the friction-limited 6-DOF palm-object constraint the approximation uses.
@@ -102,7 +105,8 @@ struct SimulationOptions {
     /// Integrator accuracy (relative tolerance; CVODE's atol and both integrators' constraint
     /// tolerance follow it); 0 takes the scenario's simulation.accuracy.
     double accuracy = 0;
-    /// Step size (s) of IntegratorChoice::LinearlyImplicit; 0 takes the scenario's simulation.step_size.
+    /// Longest (LinearlyImplicit) or fixed (LinearlyImplicitFixed) step (s); 0 takes the scenario's
+    /// simulation.step_size.
     double stepSize = 0;
     /// A load on the object growing in time (the holding-capacity protocol, ramp_load.h); unset: none.
     std::optional<LoadRampSpec> loadRamp;
@@ -112,7 +116,7 @@ struct SimulationOptions {
 ContactModel parseContactModel(const std::string& text, const std::string& source);
 /// Parses "full" or "approx". @throws graspsim::InputError naming `source`, the value and the choices.
 SimulationMode parseSimulationMode(const std::string& text, const std::string& source);
-/// Parses "simbody", "cvode" or "implicit". @throws graspsim::InputError naming `source`, the value and the choices.
+/// Parses "simbody", "cvode", "implicit" or "implicit-fixed". @throws graspsim::InputError naming `source`, the value and the choices.
 IntegratorChoice parseIntegratorChoice(const std::string& text, const std::string& source);
 std::string toString(ContactModel model);
 std::string toString(IntegratorChoice integrator);

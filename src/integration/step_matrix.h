@@ -1,0 +1,42 @@
+#pragma once
+// The matrix of a linearly implicit step, A = M - g D - g^2 K (g = the step's implicit factor
+// times h), built from the mass matrix and the force Jacobians at one state and LU-factored once,
+// so that each stage of a step solves with it (linearly_implicit_stepper.h).
+
+#include "graspsim/integration/force_jacobian.h"
+
+#include "graspsim/simbody.h"
+
+#include <vector>
+
+namespace graspsim::integration {
+
+class StepMatrix {
+public:
+    // Builds and factors A at `state` (realized through Acceleration). A locked mobilizer's rows
+    // and columns become the identity (its speeds do not change; see holdLocked()).
+    // @throws graspsim::NumericalError if A is singular.
+    StepMatrix(const SimTK::SimbodyMatterSubsystem& matter, const std::vector<const ForceJacobianContributor*>& contributors,
+               const SimTK::State& state, double g);
+
+    // M v, with the M of the state A was built at.
+    std::vector<double> multiplyByM(const std::vector<double>& v) const;
+    // K v.
+    std::vector<double> multiplyByK(const std::vector<double>& v) const;
+    // x = A^-1 b in place; b's entries for locked speeds are zeroed first.
+    void solve(std::vector<double>& b) const;
+    int size() const { return n_; }
+
+private:
+    void findLocked(const SimTK::SimbodyMatterSubsystem& matter, const SimTK::State& state);
+    void holdLocked(std::vector<double>& A) const;
+    void factor(std::vector<double> A);
+
+    int n_ = 0;
+    std::vector<double> M_, K_;  // column-major n x n
+    std::vector<double> lu_;     // A's LU factors, column-major, rows swapped as pivots_ says
+    std::vector<int> pivots_;
+    std::vector<int> locked_;    // speed indices of locked mobilizers
+};
+
+}  // namespace graspsim::integration
