@@ -10,7 +10,7 @@ namespace graspsim::integration {
 
 StepMatrix::StepMatrix(const SimTK::SimbodyMatterSubsystem& matter,
                        const std::vector<const ForceJacobianContributor*>& contributors, const SimTK::State& state, double g)
-    : n_(state.getNU()) {
+    : n_(state.getNU()), g_(g) {
     SimTK::Matrix M;
     matter.calcM(state, M);
     SimTK::Matrix D(n_, n_, 0.0), K(n_, n_, 0.0);

@@ -26,6 +26,8 @@ public:
     // x = A^-1 b in place; b's entries for locked speeds are zeroed first.
     void solve(std::vector<double>& b) const;
     int size() const { return n_; }
+    // g, the factor A was built with (s).
+    double getFactor() const { return g_; }
 
 private:
     void findLocked(const SimTK::SimbodyMatterSubsystem& matter, const SimTK::State& state);
@@ -33,6 +35,7 @@ private:
     void factor(std::vector<double> A);
 
     int n_ = 0;
+    double g_ = 0;
     std::vector<double> M_, K_;  // column-major n x n
     std::vector<double> lu_;     // A's LU factors, column-major, rows swapped as pivots_ says
     std::vector<int> pivots_;

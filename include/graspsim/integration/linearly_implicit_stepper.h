@@ -48,6 +48,8 @@ struct LinearlyImplicitOptions {
 
 /// The fixed-step linearly implicit Euler stepper (see the file comment). The System and the
 /// contributors must outlive it.
+class StepMatrix;  // src/integration/step_matrix.h
+
 class LinearlyImplicitStepper : public Stepper {
 public:
     /// @throws graspsim::InputError naming the option when the step size or the tolerance is not
@@ -71,7 +73,7 @@ private:
     void projectStep();
     void takeEulerStep(double h);
     double takeRosenbrockStep(double h);
-    double calcErrorNorm(double h, const std::vector<double>& a1, const std::vector<double>& a2,
+    double calcErrorNorm(const StepMatrix& A, double h, const std::vector<double>& a1, const std::vector<double>& a2,
                          const std::vector<double>& b1, const std::vector<double>& b2, const std::vector<double>& u0) const;
     void setState(double t, const SimTK::Vector& q, const SimTK::Vector& u, const SimTK::Vector& z);
     void handleResults(const SimTK::HandleEventsResults& results);
@@ -86,6 +88,7 @@ private:
     static constexpr double kMinStepSize = 1e-8;  // s; a step this short is accepted whatever its error
     double nextStepSize_ = SimTK::Infinity;  // s, from the last step's error (error control only)
     long rejectedSteps_ = 0;
+    bool justRejected_ = false;
     double lastEventTime_ = -SimTK::Infinity, lastReportTime_ = -SimTK::Infinity;
     long steps_ = 0, stepsAtInitialize_ = 0, evaluations_ = 0, projections_ = 0;
     long scheduledEvents_ = 0, triggeredEvents_ = 0;
