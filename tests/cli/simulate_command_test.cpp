@@ -160,7 +160,10 @@ TEST_F(SimulateCommand, RejectsBadOptionsWithoutTouchingTheOutputFolder) {
     expectBadInput("simulate juggling" + out, {"juggling", "ball-clutch"});
     expectBadInput("simulate ball-clutch --perturbation f7" + out, {"--perturbation", "f7"});
     expectBadInput("simulate ball-clutch --contact soft" + out, {"--contact", "soft", "compliant or rigid"});
-    expectBadInput("simulate ball-clutch --integrator euler" + out, {"--integrator", "euler", "simbody or cvode"});
+    expectBadInput("simulate ball-clutch --integrator euler" + out, {"--integrator", "euler", "implicit or implicit-fixed"});
+    expectBadInput("simulate ball-clutch --integrator implicit --step-size 0" + out, {"--step-size", "0", "> 0"});
+    expectBadInput("simulate ball-clutch --integrator implicit --step-size nan" + out, {"--step-size", "nan"});
+    expectBadInput("simulate ball-clutch --integrator implicit --step-size -1e-3" + out, {"--step-size", "-1e-3"});
     expectBadInput("simulate ball-clutch --friction lugre" + out, {"--friction", "lugre", "regularized or anchor"});
     expectBadInput("simulate ball-clutch --contact rigid --friction anchor" + out, {"--friction", "anchor", "rigid"});
     expectBadInput("simulate ball-clutch --duration -1" + out, {"--duration", "-1"});

@@ -112,6 +112,7 @@ simulation:
   duration: 4
   output_interval: 0.05
   accuracy: 1.0e-4
+  step_size: 0.002
   settle_time: 0.75
   held_tolerance: 0.03
 )";
@@ -173,6 +174,7 @@ TEST_F(ScenarioFileEveryField, ContactControllerAndSimulation) {
     EXPECT_DOUBLE_EQ(s.simulation.duration, 4);
     EXPECT_DOUBLE_EQ(s.simulation.outputInterval, 0.05);
     EXPECT_DOUBLE_EQ(s.simulation.accuracy, 1.0e-4);
+    EXPECT_DOUBLE_EQ(s.simulation.stepSize, 0.002);
     EXPECT_DOUBLE_EQ(s.simulation.settleTime, 0.75);
     EXPECT_DOUBLE_EQ(s.simulation.heldTolerance, 0.03);
 }
@@ -324,6 +326,8 @@ INSTANTIATE_TEST_SUITE_P(
                  {"'controller.press_depth'", "'0.05'", "[0, 0.045) m"}},
         BadInput{"accuracy of one", "name: test-ball", "name: test-ball\nsimulation:\n  accuracy: 1",
                  {"'simulation.accuracy'", "'1'", "(0, 1)"}},
+        BadInput{"step size of zero", "name: test-ball", "name: test-ball\nsimulation:\n  step_size: 0",
+                 {"'simulation.step_size'", "'0'", "> 0"}},
         BadInput{"unknown relaxed axis", "name: test-ball", "name: test-ball\napproximation:\n  relaxed_axes: [x, yaw]",
                  {"test.yaml:3:", "'approximation.relaxed_axes[1]'", "'yaw'", "rx, ry, rz, x, y, z"}},
         BadInput{"relaxed axes not a list", "name: test-ball", "name: test-ball\napproximation:\n  relaxed_axes: x",
