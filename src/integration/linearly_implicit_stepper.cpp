@@ -73,6 +73,7 @@ void LinearlyImplicitStepper::initialize(const SimTK::State& initial) {
     system_.calcEventTriggerInfo(state_, triggerInfo_);
     triggers_ = state_.getEventTriggers();
     stepsAtInitialize_ = steps_;
+    massMatrixTime_ = -SimTK::Infinity;
     initialized_ = true;
 }
 
@@ -215,7 +216,12 @@ void LinearlyImplicitStepper::takeEulerStep(double h) {
 double LinearlyImplicitStepper::takeRosenbrockStep(double h) {
     const double gamma = 1 + 1 / std::sqrt(2.0), g = gamma * h;
     const SimTK::SimbodyMatterSubsystem& matter = system_.getMatterSubsystem();
-    const StepMatrix A(matter, contributors_, state_, g);
+    const bool fresh = !(state_.getTime() - massMatrixTime_ < kMassMatrixAge);
+    const StepMatrix A(matter, contributors_, state_, g, fresh ? std::vector<double>() : massMatrix_);
+    if (fresh) {
+        massMatrix_ = A.getMassMatrix();
+        massMatrixTime_ = state_.getTime();
+    }
     const double t0 = state_.getTime();
     const SimTK::Vector q0 = state_.getQ(), z0 = state_.getZ(), zdot0 = state_.getZDot();
     const std::vector<double> u0 = toStd(state_.getU());

@@ -9,17 +9,22 @@
 namespace graspsim::integration {
 
 StepMatrix::StepMatrix(const SimTK::SimbodyMatterSubsystem& matter,
-                       const std::vector<const ForceJacobianContributor*>& contributors, const SimTK::State& state, double g)
+                       const std::vector<const ForceJacobianContributor*>& contributors, const SimTK::State& state, double g,
+                       const std::vector<double>& massMatrix)
     : n_(state.getNU()), g_(g) {
-    SimTK::Matrix M;
-    matter.calcM(state, M);
+    const std::size_t size = static_cast<std::size_t>(n_) * static_cast<std::size_t>(n_);
+    if (massMatrix.size() == size) {
+        M_ = massMatrix;
+    } else {
+        SimTK::Matrix M;
+        matter.calcM(state, M);
+        M_.assign(M.getContiguousScalarData(), M.getContiguousScalarData() + size);
+    }
     SimTK::Matrix D(n_, n_, 0.0), K(n_, n_, 0.0);
     for (const ForceJacobianContributor* c : contributors) c->addForceJacobians(state, D, K);
-    const std::size_t size = static_cast<std::size_t>(n_) * static_cast<std::size_t>(n_);
-    const double* m = M.getContiguousScalarData();
+    const double* m = M_.data();
     const double* d = D.getContiguousScalarData();
     const double* k = K.getContiguousScalarData();
-    M_.assign(m, m + size);
     K_.assign(k, k + size);
     std::vector<double> A(size);
     for (std::size_t i = 0; i < size; ++i) A[i] = m[i] - g * d[i] - g * g * k[i];

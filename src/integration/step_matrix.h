@@ -16,8 +16,12 @@ public:
     // Builds and factors A at `state` (realized through Acceleration). A locked mobilizer's rows
     // and columns become the identity (its speeds do not change; see holdLocked()).
     // @throws graspsim::NumericalError if A is singular.
+    // `massMatrix`: M (column-major) computed earlier, to use instead of calcM at `state`; empty:
+    // calcM here.
     StepMatrix(const SimTK::SimbodyMatterSubsystem& matter, const std::vector<const ForceJacobianContributor*>& contributors,
-               const SimTK::State& state, double g);
+               const SimTK::State& state, double g, const std::vector<double>& massMatrix = {});
+    // The M in use (column-major).
+    const std::vector<double>& getMassMatrix() const { return M_; }
 
     // M v, with the M of the state A was built at.
     std::vector<double> multiplyByM(const std::vector<double>& v) const;

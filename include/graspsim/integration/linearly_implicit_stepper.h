@@ -88,6 +88,11 @@ private:
     static constexpr double kMinStepSize = 1e-8;  // s; a step this short is accepted whatever its error
     double nextStepSize_ = SimTK::Infinity;  // s, from the last step's error (error control only)
     long rejectedSteps_ = 0;
+    // M of the step matrix, kept for kMassMatrixAge: ROS2 is a W-method (second order with any
+    // W), and the arm's mass matrix changes slowly; calcM was a fifth of a step.
+    static constexpr double kMassMatrixAge = 0.01;  // s
+    std::vector<double> massMatrix_;
+    double massMatrixTime_ = -SimTK::Infinity;
     bool justRejected_ = false;
     double lastEventTime_ = -SimTK::Infinity, lastReportTime_ = -SimTK::Infinity;
     long steps_ = 0, stepsAtInitialize_ = 0, evaluations_ = 0, projections_ = 0;
