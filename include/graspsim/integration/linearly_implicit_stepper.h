@@ -1,23 +1,30 @@
 #pragma once
 /// @file
-/// A fixed-step linearly implicit ("semi-implicit") Euler stepper for stiff contact, in the manner
-/// of MuJoCo's implicit integrator: one dynamics evaluation and one small linear solve per step,
-/// no Newton iteration, no error control.
+/// A linearly implicit stepper for stiff contact: analytic force Jacobians, one LU of a
+/// mobility-sized matrix per step, no Newton iteration. Two methods on the same matrix:
 ///
-/// Per step of size h from (t, q, u, z), realized through Stage::Acceleration:
+/// Order 1, linearly implicit ("semi-implicit") Euler, as MuJoCo's implicit integrator. Per step
+/// of size h from (t, q, u, z), realized through Stage::Acceleration:
 ///
 ///     f  = M udot                                   (every applied and Coriolis force)
 ///     D, K from the ForceJacobianContributor list  (force_jacobian.h)
 ///     (M - h D - h^2 K) du = h (f + h K u)          (forces at the step's end, linearized)
 ///     u' = u + du,  q' = q + h N(q) u',  z' = z + h zdot
 ///
-/// (a locked mobilizer's rows are du = 0), then q' and u' are projected onto the constraints (and quaternions normalized) with
-/// System::project. With D and K of the stiff forces (contact, joint impedance) the step is
-/// stable where explicit Euler would need microsecond steps; forces left out of D and K are
-/// treated explicitly (symplectic Euler). First order: the error falls linearly with h.
+/// Order 2 (the default), the Rosenbrock method ROS2 (Verwer et al. 1999): two stages with
+/// M - gamma h D - (gamma h)^2 K, gamma = 1 + 1/sqrt(2), two dynamics evaluations; L-stable, and
+/// second order for any approximate Jacobian (a W-method), so D and K may leave terms out and M
+/// is kept for 10 ms. Optionally error-controlled (LinearlyImplicitOptions::accuracy): steps up
+/// to h chosen from the difference to the embedded first-order solution.
 ///
-/// Events: scheduled events and reports land exactly on their times (the interval up to each
-/// is cut into equal steps no longer than h); event triggers (witness functions) are checked at
+/// A locked mobilizer's rows are du = 0. After each step q and u are projected onto the
+/// constraints with System::project (without constraints, quaternions are only normalized).
+/// With D and K of the stiff forces (contact, joint impedance) the step is stable where explicit
+/// methods need microsecond steps; forces left out of D and K are treated explicitly.
+/// Measurements and why: docs/performance.md.
+///
+/// Events: scheduled events and reports land exactly on their times (fixed steps: the interval up
+/// to each is cut into equal steps no longer than h); event triggers (witness functions) are checked at
 /// the end of every step and a sign change in a direction the event asks for is handled there,
 /// at the step's end (localized to within one step, not to a root tolerance). A handler's change
 /// needs no restart (a one-step method keeps no history): the next step starts from the changed
@@ -46,7 +53,7 @@ struct LinearlyImplicitOptions {
     double accuracy = 0;
 };
 
-/// The fixed-step linearly implicit Euler stepper (see the file comment). The System and the
+/// The linearly implicit stepper (see the file comment). The System and the
 /// contributors must outlive it.
 class StepMatrix;  // src/integration/step_matrix.h
 
