@@ -1,6 +1,8 @@
 // The contact force Jacobians against a second method, central finite differences of the force
 // law itself, and integrated: a frictionless, undamped ball dropped on a floor and stepped by the
-// linearly implicit stepper at 1 ms bounces without gaining energy (implicit Euler may only lose it).
+// linearly implicit stepper (ROS2, fixed 1 ms and 0.25 ms steps) bounces without gaining energy
+// (measured: it loses 35 % and 1.1 % of the drop energy, an L-stable method's damping of the
+// unresolved contact).
 
 #include "graspsim/contact/compliant_contact_jacobian.h"
 
