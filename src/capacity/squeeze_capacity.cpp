@@ -16,6 +16,15 @@ constexpr double kHalfWidth = 0.02;  // m, box half-width along x
 constexpr double kEStar = 1e6;       // Pa, effective Young's modulus (compliant)
 constexpr double kRigidStep = 1e-3;  // s, the rigid stepper's fixed step
 
+// TEMPORARY (removed in the next commit): E* and mu exactly as the former per-surface materials
+// (2^(3/2) E* each, combined by Simbody's rules) gave them, for a byte-identical comparison.
+double combineStiffnessAsBefore(double eStar) {
+    const double surface = std::pow(2.0, 1.5) * eStar;
+    const double k = std::cbrt(surface * surface);
+    return std::pow(k * (k / (k + k)), 1.5);
+}
+double combineFrictionAsBefore(double mu) { return mu + mu > 0 ? 2 * mu * mu / (mu + mu) : 0; }
+
 class SqueezeRun : public LoadedRun {
 public:
     SqueezeRun(const SqueezeCase& c, const simulation::LoadRampSpec& load) : case_(c) {
@@ -58,16 +67,17 @@ private:
         return SimTK::MobilizedBody::Slider(matter_.updGround(), SimTK::Transform(R_GF), body, SimTK::Transform(R_GF));
     }
 
-    std::vector<contact::ContactPair> makePairs() const {
-        contact::ContactMaterial m;
-        m.stiffness = std::pow(2.0, 1.5) * kEStar;  // two equal surfaces combine to E*
-        m.dissipation = 5;
-        m.staticFriction = m.dynamicFriction = case_.mu;
-        m.transitionVelocity = case_.transitionVelocity;
+    std::vector<contact::ContactPair> makePairs(bool rigid) const {
+        contact::ContactParameters p;
+        p.effectiveStiffness = combineStiffnessAsBefore(kEStar);
+        p.dissipation = 5;
+        p.staticFriction = p.dynamicFriction = rigid ? case_.mu : combineFrictionAsBefore(case_.mu);
+        p.viscousFriction = 0;
+        p.transitionVelocity = case_.transitionVelocity;
         const contact::ContactShape ball = contact::ContactShape::sphere(kRadius);
         const contact::ContactSurface b{box_, "box", "box", contact::ContactShape::box(SimTK::Vec3(kHalfWidth, 0.5, 0.02)),
-                                        SimTK::Transform(), m};
-        return {{{left_, "left", "ball", ball, SimTK::Transform(), m}, b}, {{right_, "right", "ball", ball, SimTK::Transform(), m}, b}};
+                                        SimTK::Transform()};
+        return {{{left_, "left", "ball", ball, SimTK::Transform()}, b, p}, {{right_, "right", "ball", ball, SimTK::Transform()}, b, p}};
     }
 
     // Spheres touching the box at `depth` (m) of overlap each.
@@ -81,7 +91,7 @@ private:
 
     // Starts at the static Hertz depth for N, so the squeeze is in equilibrium from the start.
     void startCompliant() {
-        contacts_ = contact::CompliantContactForce(forces_, makePairs());
+        contacts_ = contact::CompliantContactForce(forces_, makePairs(false));
         const double depth = std::pow(3 * case_.press / (4 * kEStar * std::sqrt(kRadius)), 2.0 / 3.0);
         integrator_ = std::make_unique<SimTK::RungeKuttaMersonIntegrator>(system_);
         integrator_->setAccuracy(1e-7);
@@ -90,9 +100,7 @@ private:
     }
 
     void startRigid() {
-        contact::RigidContactParameters parameters;
-        parameters.staticFriction = parameters.dynamicFriction = case_.mu;
-        for (const contact::ContactPair& p : makePairs()) contact::RigidContact::add(matter_, p, parameters);
+        for (const contact::ContactPair& p : makePairs(true)) contact::RigidContact::add(matter_, p);
         rigid_ = std::make_unique<SimTK::SemiExplicitEulerTimeStepper>(system_);
         rigid_->setImpulseSolverType(SimTK::SemiExplicitEulerTimeStepper::PGS);
         rigid_->initialize(makeState(0));

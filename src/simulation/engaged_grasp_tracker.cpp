@@ -72,7 +72,7 @@ double EngagedGraspTracker::calcQuality(const SimTK::State& state) const {
     Eigen::Matrix<double, 6, 1> wrench;
     wrench << toEigen(W[0]), toEigen(W[1]);
     grasp::QualityOptions options;
-    options.mu = scene_->getScenario().contact.staticFriction;  // as the full-contact Q (grasp_simulation.cpp)
+    options.mu = scene_->getContactParameters().staticFriction;  // as the full-contact Q (grasp_simulation.cpp)
     const grasp::ObjectFrame frame = toObjectFrame(X_GO);
     const grasp::WrenchDistribution d = grasp::distributeWrench(contacts, frame, wrench, reference, options.mu);
     for (std::size_t i = 0; i < contacts.size(); ++i) contacts[i].normalForce = d.normalForces[i];

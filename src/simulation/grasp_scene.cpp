@@ -1,5 +1,6 @@
 #include "graspsim/simulation/grasp_scene.h"
 
+#include "graspsim/contact/hand_object_pairs.h"
 #include "graspsim/error.h"
 #include "graspsim/model/body_model.h"
 #include "graspsim/simulation/grasp_switch.h"
@@ -26,28 +27,21 @@ SimTK::Transform toTransform(const model::Transform& X) {
     return SimTK::Transform(SimTK::Rotation(R, true), toVec3(X.p));
 }
 
-// The scenario gives the pair's contact parameters. Both surfaces get one material whose
-// combination by Simbody's rules (contact_force_law.h) reproduces them: equal materials keep
-// their friction and dissipation and halve k^(2/3), so each surface carries 2^(3/2) E*.
-contact::ContactMaterial makeSurfaceMaterial(const scenario::ContactSpec& c) {
-    contact::ContactMaterial m;
-    m.stiffness = std::pow(2.0, 1.5) * c.stiffness;
-    m.dissipation = c.dissipation;
-    m.staticFriction = c.staticFriction;
-    m.dynamicFriction = c.dynamicFriction;
-    m.viscousFriction = c.viscousFriction;
-    m.transitionVelocity = c.transitionVelocity;
-    return m;
-}
-
-// The scenario's friction law for the compliant contact element.
-contact::FrictionSettings makeFrictionSettings(const scenario::ContactSpec& c) {
-    contact::FrictionSettings friction;
-    friction.model = contact::parseFrictionModel(c.frictionModel, "scenario contact.friction_model");
-    friction.anchor.stiffnessRatio = c.anchorStiffnessRatio;
-    friction.anchor.dampingMass = c.anchorDampingMass;
-    friction.anchor.relaxationTime = c.anchorRelaxationTime;
-    return friction;
+// TEMPORARY (removed in the next commit): the contact elements' parameters exactly as the former
+// per-surface materials (2^(3/2) E* each, combined by Simbody's rules) gave them, so that this
+// commit's outputs are byte-identical to the former code's.
+double combineFrictionAsBefore(double mu) { return mu + mu > 0 ? 2 * mu * mu / (mu + mu) : 0; }
+contact::ContactParameters combineAsBefore(const contact::ContactParameters& c) {
+    contact::ContactParameters p = c;
+    const double surface = std::pow(2.0, 1.5) * c.effectiveStiffness;
+    const double k = std::cbrt(surface * surface);
+    const double s = k / (k + k);
+    p.effectiveStiffness = std::pow(k * s, 1.5);
+    p.dissipation = s * c.dissipation + (1 - s) * c.dissipation;
+    p.staticFriction = combineFrictionAsBefore(c.staticFriction);
+    p.dynamicFriction = combineFrictionAsBefore(c.dynamicFriction);
+    p.viscousFriction = combineFrictionAsBefore(c.viscousFriction);
+    return p;
 }
 
 // The movable joints from the palm out to an end-effector's body (the digit's own joints).
@@ -133,26 +127,14 @@ void GraspScene::addObject(bool onPalm) {
 
 void GraspScene::addContacts() {
     const model::ModelDescription objectModel = scenario::buildObjectModel(scenario_.object);
-    const model::Body& objectBody = objectModel.bodies.at(0);
-    const contact::ContactMaterial material = makeSurfaceMaterial(scenario_.contact);
-    std::vector<contact::ContactPair> pairs;
-    for (const model::Body& hand : model_.getDescription().bodies) {
-        if (hand.role == model::BodyRole::Other || hand.isVirtual()) continue;
-        const SimTK::MobilizedBody& handMobod = model_.getMobilizedBody(hand.name);
-        for (const model::Geometry& g : hand.geometry) {
-            for (const model::Geometry& o : objectBody.geometry) {
-                contact::ContactPair pair;
-                pair.a = contact::ContactSurface::fromGeometry(handMobod, hand.name, g, material);
-                pair.b = contact::ContactSurface::fromGeometry(object_, objectBody.name, o, material);
-                pairs.push_back(pair);
-            }
-        }
-    }
+    const std::vector<contact::ContactPair> pairs =
+        contact::makeHandObjectPairs(model_, contact::isHandSegmentBody, object_, objectModel.bodies.at(0),
+                                     combineAsBefore(getContactParameters()));
     if (contactModel_ == ContactModel::Rigid) {
         rigidContacts_ = contact::RigidContactSet(model_.updMatter(), pairs);
         return;
     }
-    contacts_ = contact::CompliantContactForce(model_.updForces(), pairs, makeFrictionSettings(scenario_.contact));
+    contacts_ = contact::CompliantContactForce(model_.updForces(), pairs, scenario_.friction);
 }
 
 // Every movable joint's linear impedance: passive spring and damper, the PD gains (the
