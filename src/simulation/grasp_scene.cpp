@@ -2,6 +2,7 @@
 
 #include "graspsim/contact/hand_object_pairs.h"
 #include "graspsim/error.h"
+#include "graspsim/grasp/limited_bushing_law.h"
 #include "graspsim/model/body_model.h"
 #include "graspsim/simulation/grasp_switch.h"
 
@@ -56,6 +57,18 @@ std::vector<std::string> findFingerJoints(const model::ModelDescription& d, cons
         body = j->parent;
     }
     return joints;
+}
+
+// Stiffness per bushing axis (rotation first) giving the body natural frequency w (rad/s) about
+// and along its central principal axes: I_k w^2 and m w^2.
+SimTK::Vec6 calcBushingStiffness(const SimTK::MassProperties& mp, double w) {
+    const SimTK::Vec3 I = mp.calcCentralInertia().getMoments();
+    SimTK::Vec6 stiffness;
+    for (int k = 0; k < 3; ++k) {
+        stiffness[k] = I[k] * w * w;
+        stiffness[k + 3] = mp.getMass() * w * w;
+    }
+    return stiffness;
 }
 
 // The palm: the one massive body the model builder gave the palm role.
@@ -167,16 +180,9 @@ std::vector<contact::ContactReport> GraspScene::findContactReports(const SimTK::
 void GraspScene::addBushing() {
     const SimTK::MassProperties mp = object_.getBody().getDefaultRigidBodyMassProperties();
     const SimTK::Vec3 I = mp.calcCentralInertia().getMoments();
-    const double w = kBushingFrequency;
-    SimTK::Vec6 stiffness, damping;
-    for (int k = 0; k < 3; ++k) {
-        stiffness[k] = I[k] * w * w;
-        damping[k] = 2 * I[k] * w;
-        stiffness[k + 3] = mp.getMass() * w * w;
-        damping[k + 3] = 2 * mp.getMass() * w;
-    }
+    const SimTK::Vec6 stiffness = calcBushingStiffness(mp, kBushingFrequency);
     bushing_ = grasp::LimitedBushing(model_.updForces(), getPalm(), SimTK::Transform(), object_, SimTK::Transform(),
-                                     stiffness, damping);
+                                     stiffness, grasp::calcCriticalDamping(stiffness, I, mp.getMass()));
     attachment_ = &bushing_;
 }
 
@@ -202,15 +208,10 @@ void GraspScene::addMultiAttachment() {
     }
     const SimTK::MassProperties mp = object_.getBody().getDefaultRigidBodyMassProperties();
     const SimTK::Vec3 I = mp.calcCentralInertia().getMoments();
-    const double w = kBushingFrequency, parts = static_cast<double>(sites.size());
-    SimTK::Vec6 stiffness, damping;
-    for (int k = 0; k < 3; ++k) {
-        stiffness[k] = I[k] * w * w / parts;
-        damping[k] = 2 * I[k] * w / parts;
-        stiffness[k + 3] = mp.getMass() * w * w / parts;
-        damping[k + 3] = 2 * mp.getMass() * w / parts;
-    }
-    multi_ = std::make_unique<grasp::MultiAttachment>(model_.updForces(), object_, sites, stiffness, damping);
+    const SimTK::Vec6 stiffness = calcBushingStiffness(mp, kBushingFrequency);
+    const double parts = static_cast<double>(sites.size());
+    multi_ = std::make_unique<grasp::MultiAttachment>(model_.updForces(), object_, sites, stiffness / parts,
+                                                      grasp::calcCriticalDamping(stiffness, I, mp.getMass()) / parts);
     attachment_ = multi_.get();
 }
 
