@@ -33,8 +33,7 @@ std::vector<ContactPair> makeHandObjectPairs(const system::MultibodyModel& hand,
     }
     std::vector<ContactSurface> objectSurfaces;
     for (const model::Geometry& g : object.geometry) {
-        objectSurfaces.push_back(
-            ContactSurface::fromGeometry(objectMobod, object.name, g));
+        objectSurfaces.push_back(ContactSurface::fromGeometry(objectMobod, object.name, g));
     }
     std::vector<ContactPair> pairs;
     for (const model::Body& body : hand.getDescription().bodies) {
@@ -42,8 +41,7 @@ std::vector<ContactPair> makeHandObjectPairs(const system::MultibodyModel& hand,
         if (body.isVirtual() || body.geometry.empty() || !isHandBody(body)) continue;
         const SimTK::MobilizedBody& mobod = hand.getMobilizedBody(body.name);
         for (const model::Geometry& g : body.geometry) {
-            const ContactSurface handSurface =
-                ContactSurface::fromGeometry(mobod, body.name, g);
+            const ContactSurface handSurface = ContactSurface::fromGeometry(mobod, body.name, g);
             for (const ContactSurface& objectSurface : objectSurfaces) {
                 pairs.push_back({handSurface, objectSurface, parameters, true});
             }

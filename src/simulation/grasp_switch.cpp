@@ -209,9 +209,8 @@ double GraspSwitch::calcQuality(const SimTK::State& state) const {
 }
 
 double GraspSwitch::calcQualityOf(const SimTK::State& state, const std::vector<contact::ContactReport>& reports) const {
-    grasp::QualityOptions quality;
-    quality.mu = scene_.getContactParameters().staticFriction;  // as the recorder (grasp_simulation.cpp)
-    return calcContactGraspQuality(reports, scene_.getObject().getBodyTransform(state), quality);
+    return calcContactGraspQuality(reports, scene_.getObject().getBodyTransform(state),
+                                   makeQualityOptions(scene_.getContactParameters()));
 }
 
 double GraspSwitch::calcEngagedQuality(const SimTK::State& state) const {
