@@ -16,15 +16,6 @@ constexpr double kHalfWidth = 0.02;  // m, box half-width along x
 constexpr double kEStar = 1e6;       // Pa, effective Young's modulus (compliant)
 constexpr double kRigidStep = 1e-3;  // s, the rigid stepper's fixed step
 
-// TEMPORARY (removed in the next commit): E* and mu exactly as the former per-surface materials
-// (2^(3/2) E* each, combined by Simbody's rules) gave them, for a byte-identical comparison.
-double combineStiffnessAsBefore(double eStar) {
-    const double surface = std::pow(2.0, 1.5) * eStar;
-    const double k = std::cbrt(surface * surface);
-    return std::pow(k * (k / (k + k)), 1.5);
-}
-double combineFrictionAsBefore(double mu) { return mu + mu > 0 ? 2 * mu * mu / (mu + mu) : 0; }
-
 class SqueezeRun : public LoadedRun {
 public:
     SqueezeRun(const SqueezeCase& c, const simulation::LoadRampSpec& load) : case_(c) {
@@ -67,11 +58,11 @@ private:
         return SimTK::MobilizedBody::Slider(matter_.updGround(), SimTK::Transform(R_GF), body, SimTK::Transform(R_GF));
     }
 
-    std::vector<contact::ContactPair> makePairs(bool rigid) const {
+    std::vector<contact::ContactPair> makePairs() const {
         contact::ContactParameters p;
-        p.effectiveStiffness = combineStiffnessAsBefore(kEStar);
+        p.effectiveStiffness = kEStar;
         p.dissipation = 5;
-        p.staticFriction = p.dynamicFriction = rigid ? case_.mu : combineFrictionAsBefore(case_.mu);
+        p.staticFriction = p.dynamicFriction = case_.mu;
         p.viscousFriction = 0;
         p.transitionVelocity = case_.transitionVelocity;
         const contact::ContactShape ball = contact::ContactShape::sphere(kRadius);
@@ -91,7 +82,7 @@ private:
 
     // Starts at the static Hertz depth for N, so the squeeze is in equilibrium from the start.
     void startCompliant() {
-        contacts_ = contact::CompliantContactForce(forces_, makePairs(false));
+        contacts_ = contact::CompliantContactForce(forces_, makePairs());
         const double depth = std::pow(3 * case_.press / (4 * kEStar * std::sqrt(kRadius)), 2.0 / 3.0);
         integrator_ = std::make_unique<SimTK::RungeKuttaMersonIntegrator>(system_);
         integrator_->setAccuracy(1e-7);
@@ -100,7 +91,7 @@ private:
     }
 
     void startRigid() {
-        for (const contact::ContactPair& p : makePairs(true)) contact::RigidContact::add(matter_, p);
+        for (const contact::ContactPair& p : makePairs()) contact::RigidContact::add(matter_, p);
         rigid_ = std::make_unique<SimTK::SemiExplicitEulerTimeStepper>(system_);
         rigid_->setImpulseSolverType(SimTK::SemiExplicitEulerTimeStepper::PGS);
         rigid_->initialize(makeState(0));

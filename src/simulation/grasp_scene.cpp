@@ -28,23 +28,6 @@ SimTK::Transform toTransform(const model::Transform& X) {
     return SimTK::Transform(SimTK::Rotation(R, true), toVec3(X.p));
 }
 
-// TEMPORARY (removed in the next commit): the contact elements' parameters exactly as the former
-// per-surface materials (2^(3/2) E* each, combined by Simbody's rules) gave them, so that this
-// commit's outputs are byte-identical to the former code's.
-double combineFrictionAsBefore(double mu) { return mu + mu > 0 ? 2 * mu * mu / (mu + mu) : 0; }
-contact::ContactParameters combineAsBefore(const contact::ContactParameters& c) {
-    contact::ContactParameters p = c;
-    const double surface = std::pow(2.0, 1.5) * c.effectiveStiffness;
-    const double k = std::cbrt(surface * surface);
-    const double s = k / (k + k);
-    p.effectiveStiffness = std::pow(k * s, 1.5);
-    p.dissipation = s * c.dissipation + (1 - s) * c.dissipation;
-    p.staticFriction = combineFrictionAsBefore(c.staticFriction);
-    p.dynamicFriction = combineFrictionAsBefore(c.dynamicFriction);
-    p.viscousFriction = combineFrictionAsBefore(c.viscousFriction);
-    return p;
-}
-
 // The movable joints from the palm out to an end-effector's body (the digit's own joints).
 std::vector<std::string> findFingerJoints(const model::ModelDescription& d, const std::string& endEffector) {
     std::vector<std::string> joints;
@@ -142,7 +125,7 @@ void GraspScene::addContacts() {
     const model::ModelDescription objectModel = scenario::buildObjectModel(scenario_.object);
     const std::vector<contact::ContactPair> pairs =
         contact::makeHandObjectPairs(model_, contact::isHandSegmentBody, object_, objectModel.bodies.at(0),
-                                     combineAsBefore(getContactParameters()));
+                                     getContactParameters());
     if (contactModel_ == ContactModel::Rigid) {
         rigidContacts_ = contact::RigidContactSet(model_.updMatter(), pairs);
         return;

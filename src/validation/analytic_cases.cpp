@@ -55,20 +55,11 @@ struct SqueezeScene {
     }
 };
 
-// TEMPORARY (removed in the next commit): E* and mu exactly as the former per-surface materials
-// (2^(3/2) E* each, combined by Simbody's rules) gave them, for a byte-identical comparison.
-double combineStiffnessAsBefore(double eStar) {
-    const double surface = std::pow(2.0, 1.5) * eStar;
-    const double k = std::cbrt(surface * surface);
-    return std::pow(k * (k / (k + k)), 1.5);
-}
-double combineFrictionAsBefore(double mu) { return mu + mu > 0 ? 2 * mu * mu / (mu + mu) : 0; }
-
 contact::ContactParameters makeParameters() {
     contact::ContactParameters p;
-    p.effectiveStiffness = combineStiffnessAsBefore(kEStar);
+    p.effectiveStiffness = kEStar;
     p.dissipation = 5;
-    p.staticFriction = p.dynamicFriction = combineFrictionAsBefore(kSqueezeMu);
+    p.staticFriction = p.dynamicFriction = kSqueezeMu;
     p.viscousFriction = 0;
     p.transitionVelocity = kSqueezeTransition;
     return p;
@@ -92,9 +83,7 @@ SqueezeOutcome runCompliantSqueeze(double pull, double duration) {
 
 SqueezeOutcome runRigidSqueeze(double pull, double duration) {
     SqueezeScene scene(pull);
-    contact::ContactParameters parameters = makeParameters();
-    parameters.staticFriction = parameters.dynamicFriction = kSqueezeMu;
-    for (const contact::ContactPair& p : scene.makePairs(parameters)) contact::RigidContact::add(scene.matter, p);
+    for (const contact::ContactPair& p : scene.makePairs(makeParameters())) contact::RigidContact::add(scene.matter, p);
     SimTK::SemiExplicitEulerTimeStepper stepper(scene.system);
     stepper.setImpulseSolverType(SimTK::SemiExplicitEulerTimeStepper::PGS);
     stepper.initialize(scene.makeState(0));
