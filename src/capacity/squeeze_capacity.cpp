@@ -59,15 +59,16 @@ private:
     }
 
     std::vector<contact::ContactPair> makePairs() const {
-        contact::ContactMaterial m;
-        m.stiffness = std::pow(2.0, 1.5) * kEStar;  // two equal surfaces combine to E*
-        m.dissipation = 5;
-        m.staticFriction = m.dynamicFriction = case_.mu;
-        m.transitionVelocity = case_.transitionVelocity;
+        contact::ContactParameters p;
+        p.effectiveStiffness = kEStar;
+        p.dissipation = 5;
+        p.staticFriction = p.dynamicFriction = case_.mu;
+        p.viscousFriction = 0;
+        p.transitionVelocity = case_.transitionVelocity;
         const contact::ContactShape ball = contact::ContactShape::sphere(kRadius);
         const contact::ContactSurface b{box_, "box", "box", contact::ContactShape::box(SimTK::Vec3(kHalfWidth, 0.5, 0.02)),
-                                        SimTK::Transform(), m};
-        return {{{left_, "left", "ball", ball, SimTK::Transform(), m}, b}, {{right_, "right", "ball", ball, SimTK::Transform(), m}, b}};
+                                        SimTK::Transform()};
+        return {{{left_, "left", "ball", ball, SimTK::Transform()}, b, p}, {{right_, "right", "ball", ball, SimTK::Transform()}, b, p}};
     }
 
     // Spheres touching the box at `depth` (m) of overlap each.
@@ -90,9 +91,7 @@ private:
     }
 
     void startRigid() {
-        contact::RigidContactParameters parameters;
-        parameters.staticFriction = parameters.dynamicFriction = case_.mu;
-        for (const contact::ContactPair& p : makePairs()) contact::RigidContact::add(matter_, p, parameters);
+        for (const contact::ContactPair& p : makePairs()) contact::RigidContact::add(matter_, p);
         rigid_ = std::make_unique<SimTK::SemiExplicitEulerTimeStepper>(system_);
         rigid_->setImpulseSolverType(SimTK::SemiExplicitEulerTimeStepper::PGS);
         rigid_->initialize(makeState(0));

@@ -203,7 +203,7 @@ int SimulateCommand::run(const std::vector<std::string>& commandLine) const {
     const bool planned = !scenario.graspType.empty();
     planning::completeScenario(scenario);  // plans the grasp if the file asks for one
     const double planTime = planned ? std::chrono::duration<double>(std::chrono::steady_clock::now() - planStart).count() : 0.0;
-    if (!o.friction.empty()) scenario.contact.frictionModel = o.friction;  // scenario.yaml records it
+    if (!o.friction.empty()) scenario.friction.model = contact::parseFrictionModel(o.friction, "--friction");  // scenario.yaml records it
     checkPerturbation(o.perturbation, scenario);
     options.perturbation = o.perturbation;
     simulation::checkApproxAttach(scenario, options);

@@ -20,7 +20,7 @@ using EnabledFlags = std::vector<bool>;
 // Z variables per pair with anchors: the deflection z (3, in body a's frame) and sigma.
 constexpr int kAnchorSize = 4;
 
-// A pair with its materials combined once, at construction.
+// A pair with its parameters next to it (validated once, at construction).
 struct PreparedPair {
     ContactPair pair;
     ContactParameters parameters;
@@ -124,15 +124,14 @@ public:
         pairs_.reserve(pairs.size());
         for (ContactPair& pair : pairs) {
             const std::string name = "contact pair '" + pair.describe() + "'";
-            pair.a.material.validate(name + " material a");
-            pair.b.material.validate(name + " material b");
+            pair.parameters.validate(name);
             if (pair.a.shape.type == ContactShape::Type::HalfSpace &&
                 pair.b.shape.type == ContactShape::Type::HalfSpace) {
                 throw InputError(name + ": two half-spaces cannot be a contact pair");
             }
             pair.a.shape.validate(name + " shape a");
             pair.b.shape.validate(name + " shape b");
-            const ContactParameters parameters = combineMaterials(pair.a.material, pair.b.material);
+            const ContactParameters parameters = pair.parameters;
             pairs_.push_back({std::move(pair), parameters});
         }
     }

@@ -64,7 +64,7 @@ CompliantContactJacobian::CompliantContactJacobian(const SimTK::SimbodyMatterSub
       withFriction_(contacts.getFrictionSettings().model == FrictionModel::Regularized) {
     for (int i = 0; i < contacts_.getNumPairs(); ++i) {
         const ContactPair& pair = contacts_.getPair(i);
-        parameters_.push_back(combineMaterials(pair.a.material, pair.b.material));
+        parameters_.push_back(pair.parameters);
     }
 }
 

@@ -5,28 +5,6 @@
 
 namespace graspsim::contact {
 
-namespace {
-
-// Simbody's combination of two friction coefficients: 2 a b / (a + b), 0 when both are 0.
-double combineFriction(double a, double b) { return a + b > 0 ? 2 * a * b / (a + b) : 0; }
-
-}  // namespace
-
-ContactParameters combineMaterials(const ContactMaterial& a, const ContactMaterial& b) {
-    // Simbody works with k^(2/3): the Hertz force is linear in E*^(2/3) per unit depth.
-    const double kA = std::cbrt(a.stiffness * a.stiffness);
-    const double kB = std::cbrt(b.stiffness * b.stiffness);
-    const double s = kB / (kA + kB);  // a's share
-    ContactParameters p;
-    p.effectiveStiffness = std::pow(kA * s, 1.5);
-    p.dissipation = s * a.dissipation + (1 - s) * b.dissipation;
-    p.staticFriction = combineFriction(a.staticFriction, b.staticFriction);
-    p.dynamicFriction = combineFriction(a.dynamicFriction, b.dynamicFriction);
-    p.viscousFriction = combineFriction(a.viscousFriction, b.viscousFriction);
-    p.transitionVelocity = std::min(a.transitionVelocity, b.transitionVelocity);
-    return p;
-}
-
 double calcHertzForce(const ContactParameters& parameters, double radius, double depth) {
     return (4.0 / 3.0) * parameters.effectiveStiffness * std::sqrt(radius) * depth *
            std::sqrt(depth);

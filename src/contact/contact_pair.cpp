@@ -6,8 +6,7 @@ namespace graspsim::contact {
 
 ContactSurface ContactSurface::fromGeometry(const SimTK::MobilizedBody& body,
                                             const std::string& bodyName,
-                                            const model::Geometry& geometry,
-                                            const ContactMaterial& material) {
+                                            const model::Geometry& geometry) {
     ContactSurface surface;
     surface.body = body;
     surface.bodyName = bodyName;
@@ -18,7 +17,6 @@ ContactSurface ContactSurface::fromGeometry(const SimTK::MobilizedBody& body,
     } catch (const InputError& e) {
         throw InputError("body '" + bodyName + "' " + e.what());
     }
-    surface.material = material;
     return surface;
 }
 

@@ -9,8 +9,7 @@ bool isHandSegmentBody(const model::Body& body) { return body.role != model::Bod
 std::vector<ContactPair> makeHandObjectPairs(const system::MultibodyModel& hand,
                                              const BodyFilter& isHandBody,
                                              const std::string& objectBody,
-                                             const ContactMaterial& handMaterial,
-                                             const ContactMaterial& objectMaterial) {
+                                             const ContactParameters& parameters) {
     const model::Body* object = hand.getDescription().findBody(objectBody);
     if (object == nullptr) {
         throw InputError("hand-object contact: model '" + hand.getDescription().name +
@@ -21,24 +20,20 @@ std::vector<ContactPair> makeHandObjectPairs(const system::MultibodyModel& hand,
                          "' is also chosen as a hand body");
     }
     return makeHandObjectPairs(hand, isHandBody, hand.getMobilizedBody(objectBody), *object,
-                               handMaterial, objectMaterial);
+                               parameters);
 }
 
 std::vector<ContactPair> makeHandObjectPairs(const system::MultibodyModel& hand,
                                              const BodyFilter& isHandBody,
                                              const SimTK::MobilizedBody& objectMobod,
                                              const model::Body& object,
-                                             const ContactMaterial& handMaterial,
-                                             const ContactMaterial& objectMaterial) {
-    handMaterial.validate("hand material");
-    objectMaterial.validate("object material");
+                                             const ContactParameters& parameters) {
     if (object.geometry.empty()) {
         throw InputError("hand-object contact: object body '" + object.name + "' has no geometry");
     }
     std::vector<ContactSurface> objectSurfaces;
     for (const model::Geometry& g : object.geometry) {
-        objectSurfaces.push_back(
-            ContactSurface::fromGeometry(objectMobod, object.name, g, objectMaterial));
+        objectSurfaces.push_back(ContactSurface::fromGeometry(objectMobod, object.name, g));
     }
     std::vector<ContactPair> pairs;
     for (const model::Body& body : hand.getDescription().bodies) {
@@ -46,10 +41,9 @@ std::vector<ContactPair> makeHandObjectPairs(const system::MultibodyModel& hand,
         if (body.isVirtual() || body.geometry.empty() || !isHandBody(body)) continue;
         const SimTK::MobilizedBody& mobod = hand.getMobilizedBody(body.name);
         for (const model::Geometry& g : body.geometry) {
-            const ContactSurface handSurface =
-                ContactSurface::fromGeometry(mobod, body.name, g, handMaterial);
+            const ContactSurface handSurface = ContactSurface::fromGeometry(mobod, body.name, g);
             for (const ContactSurface& objectSurface : objectSurfaces) {
-                pairs.push_back({handSurface, objectSurface, true});
+                pairs.push_back({handSurface, objectSurface, parameters, true});
             }
         }
     }

@@ -3,7 +3,6 @@
 #include <cmath>
 #include <sstream>
 
-#include "graspsim/contact/contact_force_law.h"
 #include "graspsim/contact/rigid_contact_constraint.h"
 #include "graspsim/error.h"
 
@@ -17,40 +16,23 @@ namespace {
     throw InputError(message.str());
 }
 
-bool isFiniteNonNegative(double x) { return std::isfinite(x) && x >= 0; }
-
 }  // namespace
 
-RigidContactParameters RigidContactParameters::fromMaterials(const ContactMaterial& a,
-                                                             const ContactMaterial& b) {
-    const ContactParameters combined = combineMaterials(a, b);
-    RigidContactParameters p;
-    p.staticFriction = combined.staticFriction;
-    p.dynamicFriction = combined.dynamicFriction;
-    p.viscousFriction = combined.viscousFriction;
-    return p;
-}
-
-void RigidContactParameters::validate(const std::string& source) const {
+void RigidContactOptions::validate(const std::string& source) const {
     if (!(minRestitution >= 0 && minRestitution <= 1))
         throwBadField(source, "minRestitution", minRestitution, "in [0, 1]");
-    if (!isFiniteNonNegative(staticFriction))
-        throwBadField(source, "staticFriction", staticFriction, "finite and >= 0");
-    if (!isFiniteNonNegative(dynamicFriction))
-        throwBadField(source, "dynamicFriction", dynamicFriction, "finite and >= 0");
-    if (!isFiniteNonNegative(viscousFriction))
-        throwBadField(source, "viscousFriction", viscousFriction, "finite and >= 0 s/m");
-    if (dynamicFriction > staticFriction)
-        throwBadField(source, "dynamicFriction", dynamicFriction, "<= staticFriction");
     if (!(std::isfinite(searchMargin) && searchMargin > 0))
         throwBadField(source, "searchMargin", searchMargin, "finite and > 0 m");
 }
 
-RigidContact::RigidContact(SimTK::SimbodyMatterSubsystem& matter, const ContactSurface& a,
-                           const ContactSurface& b, const RigidContactParameters& parameters)
-    : UnilateralContact(1), m_a(a), m_b(b), m_parameters(parameters) {
-    const std::string name = "rigid contact " + ContactPair{a, b}.describe();
-    parameters.validate(name);
+RigidContact::RigidContact(SimTK::SimbodyMatterSubsystem& matter, const ContactPair& pair,
+                           const RigidContactOptions& options)
+    : UnilateralContact(1), m_a(pair.a), m_b(pair.b), m_parameters(pair.parameters), m_options(options) {
+    const std::string name = "rigid contact " + pair.describe();
+    pair.parameters.validate(name);
+    options.validate(name);
+    const ContactSurface& a = pair.a;
+    const ContactSurface& b = pair.b;
     a.shape.validate(name + " shape A");
     b.shape.validate(name + " shape B");
     if (!isRigidContactSupported(a.shape, b.shape))
@@ -58,21 +40,21 @@ RigidContact::RigidContact(SimTK::SimbodyMatterSubsystem& matter, const ContactS
                          ": the pair needs a sphere or a capsule on at least one side (box-box "
                          "and box-half-space pairs are not supported by the rigid model)");
     m_constraint = SimTK::Constraint::Custom(new RigidContactConstraint(
-        matter, a.body, a.shape, a.X_BS, b.body, b.shape, b.X_BS, parameters.searchMargin));
+        matter, a.body, a.shape, a.X_BS, b.body, b.shape, b.X_BS, options.searchMargin));
     m_constraint.setIsConditional(true);
     m_constraint.setDisabledByDefault(true);
 }
 
 SimTK::UnilateralContactIndex RigidContact::add(SimTK::SimbodyMatterSubsystem& matter,
                                                 const ContactPair& pair,
-                                                const RigidContactParameters& parameters) {
-    return matter.adoptUnilateralContact(new RigidContact(matter, pair.a, pair.b, parameters));
+                                                const RigidContactOptions& options) {
+    return matter.adoptUnilateralContact(new RigidContact(matter, pair, options));
 }
 
 RigidContactGeometry RigidContact::findGeometryInGround(const SimTK::State& state) const {
     return findRigidContactGeometry(m_a.shape, m_a.body.getBodyTransform(state) * m_a.X_BS,
                                     m_b.shape, m_b.body.getBodyTransform(state) * m_b.X_BS,
-                                    m_parameters.searchMargin);
+                                    m_options.searchMargin);
 }
 
 SimTK::Vec3 RigidContact::findSlipVelocityInGround(const SimTK::State& state,
@@ -108,7 +90,7 @@ SimTK::Real RigidContact::calcEffectiveCOR(const SimTK::State&, SimTK::Real defa
                                            SimTK::Real defaultMinCORSpeed,
                                            SimTK::Real impactSpeed) const {
     return SimTK::ConditionalConstraint::calcEffectiveCOR(
-        m_parameters.minRestitution, defaultCaptureSpeed, defaultMinCORSpeed, impactSpeed);
+        m_options.minRestitution, defaultCaptureSpeed, defaultMinCORSpeed, impactSpeed);
 }
 
 SimTK::Real RigidContact::getPerr(const SimTK::State& state) const {

@@ -51,10 +51,21 @@ RigidContactGeometry RigidContactConstraint::findGeometry(const Transform& X_FA,
                                     m_searchMargin);
 }
 
-RigidContactGeometry RigidContactConstraint::findGeometryFromState(
+void RigidContactConstraint::realizeTopology(SimTK::State& state) const {
+    m_geometryIndex = getMatterSubsystem().allocateLazyCacheEntry(
+        state, SimTK::Stage::Position, new SimTK::Value<RigidContactGeometry>());
+}
+
+const RigidContactGeometry& RigidContactConstraint::findGeometryFromState(
     const SimTK::State& state) const {
-    return findGeometry(getBodyTransformFromState(state, m_bodyA),
-                        getBodyTransformFromState(state, m_bodyB));
+    const SimTK::SimbodyMatterSubsystem& matter = getMatterSubsystem();
+    auto& cached = SimTK::Value<RigidContactGeometry>::updDowncast(matter.updCacheEntry(state, m_geometryIndex));
+    if (!matter.isCacheValueRealized(state, m_geometryIndex)) {
+        cached.upd() = findGeometry(getBodyTransformFromState(state, m_bodyA),
+                                    getBodyTransformFromState(state, m_bodyB));
+        matter.markCacheValueRealized(state, m_geometryIndex);
+    }
+    return cached.get();
 }
 
 Vec3 RigidContactConstraint::findSlipVelocity(const SimTK::State& state,
@@ -96,14 +107,14 @@ void RigidContactConstraint::calcPositionErrors(
 void RigidContactConstraint::calcPositionDotErrors(
     const SimTK::State& state, const Array_<SpatialVec, ConstrainedBodyIndex>& V_AB,
     const Array_<SimTK::Real, SimTK::ConstrainedQIndex>&, Array_<SimTK::Real>& pverr) const {
-    const RigidContactGeometry g = findGeometryFromState(state);
+    const RigidContactGeometry& g = findGeometryFromState(state);
     pverr[0] = ~g.n_F * findSlipVelocity(state, V_AB, g.p_F);
 }
 
 void RigidContactConstraint::calcPositionDotDotErrors(
     const SimTK::State& state, const Array_<SpatialVec, ConstrainedBodyIndex>& A_AB,
     const Array_<SimTK::Real, SimTK::ConstrainedQIndex>&, Array_<SimTK::Real>& paerr) const {
-    const RigidContactGeometry g = findGeometryFromState(state);
+    const RigidContactGeometry& g = findGeometryFromState(state);
     paerr[0] = ~g.n_F * findRelativeAcceleration(state, A_AB, g.p_F);
 }
 
@@ -111,14 +122,14 @@ void RigidContactConstraint::addInPositionConstraintForces(
     const SimTK::State& state, const Array_<SimTK::Real>& multipliers,
     Array_<SpatialVec, ConstrainedBodyIndex>& bodyForcesInA,
     Array_<SimTK::Real, SimTK::ConstrainedQIndex>&) const {
-    const RigidContactGeometry g = findGeometryFromState(state);
+    const RigidContactGeometry& g = findGeometryFromState(state);
     addInContactForce(state, g.p_F, multipliers[0] * Vec3(g.n_F), bodyForcesInA);
 }
 
 void RigidContactConstraint::calcVelocityErrors(
     const SimTK::State& state, const Array_<SpatialVec, ConstrainedBodyIndex>& V_AB,
     const Array_<SimTK::Real, SimTK::ConstrainedUIndex>&, Array_<SimTK::Real>& verr) const {
-    const RigidContactGeometry g = findGeometryFromState(state);
+    const RigidContactGeometry& g = findGeometryFromState(state);
     const auto [tx, ty] = findFrictionDirections(g.n_F);
     const Vec3 v = findSlipVelocity(state, V_AB, g.p_F);
     verr[0] = ~tx * v;
@@ -128,7 +139,7 @@ void RigidContactConstraint::calcVelocityErrors(
 void RigidContactConstraint::calcVelocityDotErrors(
     const SimTK::State& state, const Array_<SpatialVec, ConstrainedBodyIndex>& A_AB,
     const Array_<SimTK::Real, SimTK::ConstrainedUIndex>&, Array_<SimTK::Real>& vaerr) const {
-    const RigidContactGeometry g = findGeometryFromState(state);
+    const RigidContactGeometry& g = findGeometryFromState(state);
     const auto [tx, ty] = findFrictionDirections(g.n_F);
     const Vec3 a = findRelativeAcceleration(state, A_AB, g.p_F);
     vaerr[0] = ~tx * a;
@@ -139,7 +150,7 @@ void RigidContactConstraint::addInVelocityConstraintForces(
     const SimTK::State& state, const Array_<SimTK::Real>& multipliers,
     Array_<SpatialVec, ConstrainedBodyIndex>& bodyForcesInA,
     Array_<SimTK::Real, SimTK::ConstrainedUIndex>&) const {
-    const RigidContactGeometry g = findGeometryFromState(state);
+    const RigidContactGeometry& g = findGeometryFromState(state);
     const auto [tx, ty] = findFrictionDirections(g.n_F);
     addInContactForce(state, g.p_F, multipliers[0] * tx + multipliers[1] * ty, bodyForcesInA);
 }

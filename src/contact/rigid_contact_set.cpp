@@ -55,10 +55,8 @@ std::vector<ContactPair> makeRigidContactPairs(const ContactPair& pair) {
 RigidContactSet::RigidContactSet(SimTK::SimbodyMatterSubsystem& matter, const std::vector<ContactPair>& pairs)
     : matter_(&matter) {
     for (std::size_t i = 0; i < pairs.size(); ++i) {
-        const RigidContactParameters parameters =
-            RigidContactParameters::fromMaterials(pairs[i].a.material, pairs[i].b.material);
         for (const ContactPair& p : makeRigidContactPairs(pairs[i])) {
-            contacts_.push_back(RigidContact::add(matter, p, parameters));
+            contacts_.push_back(RigidContact::add(matter, p));
             pairs_.push_back(p);
             pairIndices_.push_back(static_cast<int>(i));
         }

@@ -455,12 +455,7 @@ void LimitedBushing::engage(SimTK::State& state, const AttachmentEngagement& eng
     const SimTK::Vec3 I = mp.calcCentralInertia().getMoments();
     const SimTK::Vec6 stiffness =
         calcStiffnessForBound(getStiffness(), engagement.limits, engagement.leverArm, engagement.penetrationBound);
-    SimTK::Vec6 damping;
-    for (int k = 0; k < 3; ++k) {
-        damping[k] = 2 * std::sqrt(stiffness[k] * I[k]);
-        damping[k + 3] = 2 * std::sqrt(stiffness[k + 3] * mp.getMass());
-    }
-    setStiffness(state, stiffness, damping);
+    setStiffness(state, stiffness, calcCriticalDamping(stiffness, I, mp.getMass()));
     setLimits(state, engagement.limits);
     for (int k = 0; k < 6; ++k) setAxisLocked(state, static_cast<BushingAxis>(k), engagement.lockedAxes[k]);
     system.realize(state, SimTK::Stage::Position);

@@ -58,4 +58,13 @@ SimTK::Vec6 calcStiffnessForBound(const SimTK::Vec6& minimum, const SimTK::Vec6&
     return stiffness;
 }
 
+SimTK::Vec6 calcCriticalDamping(const SimTK::Vec6& stiffness, const SimTK::Vec3& centralMoments, double mass) {
+    SimTK::Vec6 damping;
+    for (int k = 0; k < 3; ++k) {
+        damping[k] = 2 * std::sqrt(stiffness[k] * centralMoments[k]);
+        damping[k + 3] = 2 * std::sqrt(stiffness[k + 3] * mass);
+    }
+    return damping;
+}
+
 }  // namespace graspsim::grasp

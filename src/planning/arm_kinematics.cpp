@@ -54,6 +54,13 @@ int ArmKinematics::findBodyIndex(const std::string& name) const {
     return -1;
 }
 
+void ArmKinematics::findJointAxis(int joint, const std::vector<SimTK::Transform>& X_GB, SimTK::Vec3& p_GJ,
+                                  SimTK::Vec3& a_G) const {
+    const SimTK::Transform X_GJ = X_GB[m_parentBody[joint]] * m_X_PJ[joint];
+    p_GJ = X_GJ.p();
+    a_G = X_GJ.R() * SimTK::Vec3(m_axis[joint]);
+}
+
 void ArmKinematics::calcBodyPoses(const std::vector<double>& q, std::vector<SimTK::Transform>& X_GB) const {
     X_GB.assign(m_model.bodies.size(), toSimTK(m_model.X_GR));
     for (int j : m_order) {

@@ -5,6 +5,8 @@
 #include "graspsim/model/body_model.h"
 #include "graspsim/system/multibody_model.h"
 
+#include <algorithm>
+
 namespace graspsim::planning {
 
 namespace {
@@ -25,10 +27,18 @@ std::vector<std::string> findDigitJoints(const model::ModelDescription& d, const
     return joints;
 }
 
+// Where joint `j`, driven toward `target` by gain kp against its passive spring, settles (rad),
+// within its range of motion.
+double findSteadyAngle(const model::Joint& j, double target, double kp) {
+    const double q = (kp * target + j.stiffness * j.restAngle) / (kp + j.stiffness);
+    return j.hasLimits() ? std::clamp(q, j.lower, j.upper) : q;
+}
+
 }  // namespace
 
-std::vector<GoalReach> calcGoalReach(const model::BuildOptions& bodyOptions, const std::map<std::string, double>& jointAngles,
-                                  const std::vector<PressedGoal>& goals) {
+GoalReachResult calcGoalReach(const model::BuildOptions& bodyOptions, const std::map<std::string, double>& jointAngles,
+                              const std::vector<PressedGoal>& goals, double kp) {
+    if (!(kp > 0)) throw InputError("goal reach: the controller gain kp must be > 0 N m/rad");
     system::MultibodyModel model(model::buildBodyModel(bodyOptions));
     std::vector<std::string> effectors, joints;
     std::vector<SimTK::Vec3> goals_G;
@@ -43,11 +53,22 @@ std::vector<GoalReach> calcGoalReach(const model::BuildOptions& bodyOptions, con
     const SimTK::Vector q = ik.solve(state, goals_G);
     for (std::size_t k = 0; k < joints.size(); ++k) model.setJointPosition(state, joints[k], q[static_cast<int>(k)]);
     model.getSystem().realize(state, SimTK::Stage::Position);
-    std::vector<GoalReach> reach;
+    GoalReachResult result;
     for (std::size_t k = 0; k < goals.size(); ++k) {
-        reach.push_back({ik.getLastDistances().at(k), model.findEndEffectorLocationInGround(state, goals[k].effector)});
+        result.goals.push_back({ik.getLastDistances().at(k), model.findEndEffectorLocationInGround(state, goals[k].effector)});
     }
-    return reach;
+    result.steadyAngles = jointAngles;
+    const model::ModelDescription& d = model.getDescription();
+    for (std::size_t k = 0; k < joints.size(); ++k) {
+        const double angle = findSteadyAngle(*d.findJoint(joints[k]), q[static_cast<int>(k)], kp);
+        result.steadyAngles[joints[k]] = angle;
+        model.setJointPosition(state, joints[k], angle);
+    }
+    model.getSystem().realize(state, SimTK::Stage::Position);
+    for (std::size_t k = 0; k < goals.size(); ++k) {
+        result.goals[k].p_GE_steady = model.findEndEffectorLocationInGround(state, goals[k].effector);
+    }
+    return result;
 }
 
 }  // namespace graspsim::planning

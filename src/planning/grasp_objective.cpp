@@ -24,6 +24,7 @@ constexpr double kOppositionWeight = 20;
 constexpr double kCouplingWeight = 5;
 constexpr double kCentreWeight = 0.005;
 constexpr double kGravityWeight = 50;
+constexpr double kReleaseWeight = 10;
 // Segments are kept this far off the object (m), so a planned pose touches it only with the pads.
 constexpr double kClearance = 0.001;
 // Friction coefficient of the closure check: the default skin-plastic dynamic friction.
@@ -38,18 +39,34 @@ contact::ContactShape inflate(contact::ContactShape shape, double by) {
     return shape;
 }
 
+// The movable joints from the palm out to `body`: the joints the controller's IK moves for a goal
+// on it (goal_reach.cpp).
+std::vector<int> findDigitJoints(const ArmKinematics& arm, std::string body) {
+    const model::ModelDescription& d = arm.getModel();
+    std::vector<int> joints;
+    while (d.findBody(body) && d.findBody(body)->role != model::BodyRole::Palm) {
+        const model::Joint* j = d.findParentJoint(body);
+        if (!j) break;
+        if (j->getDofCount() > 0) joints.push_back(arm.findJointIndex(j->name));
+        body = j->parent;
+    }
+    return joints;
+}
+
 Pad findPad(const ArmKinematics& arm, const std::string& effector) {
     const model::EndEffector* e = arm.getModel().findEndEffector(effector);
     if (!e) throw InputError("the arm model has no end-effector '" + effector + "'");
     const int body = arm.findBodyIndex(e->body);
     const SimTK::Vec3 p_BE(e->p_BE[0], e->p_BE[1], e->p_BE[2]);
     // The pad faces away from the distal capsule's axis.
-    for (const SegmentShape& s : arm.getSegmentShapes()) {
+    const auto& shapes = arm.getSegmentShapes();
+    for (std::size_t k = 0; k < shapes.size(); ++k) {
+        const SegmentShape& s = shapes[k];
         if (s.body != body || s.shape.type != contact::ContactShape::Type::Capsule) continue;
         const SimTK::Vec3 p_SE = ~s.X_BS * p_BE;
         const double z = std::clamp(p_SE[2], -s.shape.length / 2, s.shape.length / 2);
         const SimTK::Vec3 n_S = p_SE - SimTK::Vec3(0, 0, z);
-        return {effector, body, p_BE, SimTK::UnitVec3(s.X_BS.R() * n_S)};
+        return {effector, body, p_BE, SimTK::UnitVec3(s.X_BS.R() * n_S), static_cast<int>(k), findDigitJoints(arm, e->body)};
     }
     throw InputError("end-effector '" + effector + "' is not on a capsule segment");
 }
@@ -254,7 +271,8 @@ double GraspObjective::calcCouplingCost(const double* x) const {
 }
 
 double GraspObjective::evaluate(const double* x) {
-    m_arm.calcBodyPoses(findJointAngles(x), m_X_GB);
+    const std::vector<double> q = findJointAngles(x);
+    m_arm.calcBodyPoses(q, m_X_GB);
     const SimTK::Transform X_GS = findObjectPose(x) * m_request.X_OS;
     double cost = 0;
     SimTK::Vec3 p_thumb(0), n_thumb(0), p_fingers(0), n_fingers(0);  // surface points and outward normals, in S
@@ -272,6 +290,7 @@ double GraspObjective::evaluate(const double* x) {
     cost += calcOppositionCost(p_thumb, n_thumb, p_fingers, n_fingers);
     cost += calcGravityCost(X_GS, n_thumb + double(m_pads.size() - 1) * n_fingers);
     cost += calcCouplingCost(x);
+    cost += calcReleaseCost(q, X_GS);
     const auto& shapes = m_arm.getSegmentShapes();
     for (size_t i = 0; i < shapes.size(); ++i) {
         for (const contact::ContactPoint& c :
@@ -284,6 +303,87 @@ double GraspObjective::evaluate(const double* x) {
         cost += kStartWeight * d * d;
     }
     return cost;
+}
+
+// The controller's steady state, linearized at the planned pose: the IK moves the pad along the
+// inward normal to the goal pressed pressDepth in (damped least squares over the digit's joints,
+// as FingertipIk), each joint then settles where kp and its passive spring balance
+// (goal_reach.h), and the capsule under the pad, which an oblique pad touches beside the pad
+// point first, is that much deeper than it is now. The finger's stiffness along the normal is
+// that of its joints (kp + spring) through the same Jacobian.
+FingerPress GraspObjective::calcFingerPress(std::size_t i, const std::vector<double>& q,
+                                            const std::vector<SimTK::Transform>& X_GB, const SimTK::Transform& X_GS) const {
+    const Pad& pad = m_pads[i];
+    const SimTK::Vec3 p_GE = X_GB[pad.body] * pad.p_BE;
+    const contact::SurfacePoint surface = contact::findSurfacePoint(m_request.shape, ~X_GS * p_GE);
+    const SimTK::Vec3 n_G = X_GS.R() * surface.n_S;  // outward
+    const auto& joints = m_arm.getModel().joints;
+    std::vector<SimTK::Vec3> columns;
+    SimTK::Mat33 JJt = makeDiagonal(0);
+    for (int j : pad.joints) {
+        SimTK::Vec3 p_GJ, a_G;
+        m_arm.findJointAxis(j, X_GB, p_GJ, a_G);
+        columns.push_back(a_G % (p_GE - p_GJ));
+        JJt += columns.back() * ~columns.back();
+    }
+    const double damping = 1e-8;  // m^2: keeps a straight finger's solve finite
+    for (int k = 0; k < 3; ++k) JJt(k, k) += damping;
+    const SimTK::Vec3 lambda = JJt.invert() * (-(surface.distance + m_request.pressDepth) * n_G);
+    const double kp = m_template.kp;
+    SimTK::Vec3 moved(0);
+    double compliance = 0;
+    for (std::size_t k = 0; k < pad.joints.size(); ++k) {
+        const model::Joint& joint = joints[pad.joints[k]];
+        const double toGoal = dot(columns[k], lambda);
+        const double steady = (kp * (q[pad.joints[k]] + toGoal) + joint.stiffness * joint.restAngle) / (kp + joint.stiffness);
+        moved += (steady - q[pad.joints[k]]) * columns[k];
+        const double along = dot(columns[k], n_G);
+        compliance += along * along / (kp + joint.stiffness);
+    }
+    const SegmentShape& capsule = m_arm.getSegmentShapes()[pad.capsule];
+    const SimTK::Transform X_GC = X_GB[capsule.body] * capsule.X_BS;
+    double capsuleDistance = SimTK::Infinity;
+    for (int k = 0; k <= 8; ++k) {
+        const SimTK::Vec3 p_GA = X_GC * SimTK::Vec3(0, 0, capsule.shape.length * (k / 8.0 - 0.5));
+        capsuleDistance = std::min(capsuleDistance, contact::findSurfacePoint(m_request.shape, ~X_GS * p_GA).distance);
+    }
+    FingerPress press;
+    press.p_GC = X_GS * surface.p_SP;
+    press.n_G = -n_G;
+    press.depth = capsule.shape.radius - capsuleDistance - dot(n_G, moved);
+    press.stiffness = 1 / std::max(compliance, 1e-12);
+    return press;
+}
+
+std::vector<double> GraspObjective::predictReleasedPress(const std::vector<double>& q, const std::vector<SimTK::Transform>& X_GB,
+                                                         const SimTK::Transform& X_GS) const {
+    std::vector<FingerPress> fingers;
+    for (std::size_t i = 0; i < m_pads.size(); ++i) fingers.push_back(calcFingerPress(i, q, X_GB, X_GS));
+    const SimTK::Vec3 p_GCm = X_GS * (~m_request.X_OS * SimTK::Vec3(0));  // O's origin: the centre of mass
+    return calcPressAfterRelease(fingers, p_GCm, m_request.mass, m_request.gravity);
+}
+
+// Once the object is released and the fingers' forces have balanced its weight and one another,
+// every goal finger must still press at least half the press depth (release_press.h). Only a
+// grasp of three or more contacts: two opposed pads squeeze the object between them with one
+// force, so neither can push it off the other (the press depth, findPressForWeakestFinger in
+// grasp_planner.cpp, sees to how hard).
+double GraspObjective::calcReleaseCost(const std::vector<double>& q, const SimTK::Transform& X_GS) const {
+    if (!m_balanceRelease || m_pads.size() < 3) return 0;
+    double cost = 0;
+    const double least = m_request.pressDepth / 2;
+    for (double press : predictReleasedPress(q, m_X_GB, X_GS)) {
+        const double missing = std::max(0.0, least - press) / kMillimetre;
+        cost += kReleaseWeight * missing * missing;
+    }
+    return cost;
+}
+
+std::vector<double> GraspObjective::calcReleasedPress(const std::map<std::string, double>& angles,
+                                                      const SimTK::Transform& X_GO) const {
+    std::vector<double> q(m_arm.getModel().joints.size(), 0.0);
+    for (const auto& [name, angle] : angles) q[m_arm.findJointIndex(name)] = angle;
+    return predictReleasedPress(q, calcBodyPoses(angles), X_GO * m_request.X_OS);
 }
 
 GraspPlan GraspObjective::makePlan(const double* x) const {
@@ -319,6 +419,21 @@ std::map<std::string, SimTK::Vec3> GraspObjective::findGoals(const std::map<std:
         goals[pad.effector] = p_OP;
     }
     return goals;
+}
+
+double GraspObjective::calcEffectorBodyDepth(const std::map<std::string, double>& angles, const SimTK::Transform& X_GO,
+                                             const std::string& effector) const {
+    const std::vector<SimTK::Transform> X_GB = calcBodyPoses(angles);
+    const SimTK::Transform X_GS = X_GO * m_request.X_OS;
+    const int body = findPad(m_arm, effector).body;
+    double depth = 0;
+    for (const SegmentShape& s : m_arm.getSegmentShapes()) {
+        if (s.body != body) continue;
+        for (const contact::ContactPoint& c : contact::findContacts(s.shape, X_GB[s.body] * s.X_BS, m_request.shape, X_GS)) {
+            depth = std::max(depth, c.depth);
+        }
+    }
+    return depth;
 }
 
 PlanDiagnostics GraspObjective::calcDiagnostics(const std::map<std::string, double>& angles,

@@ -7,6 +7,7 @@
 #include "graspsim/planning/arm_kinematics.h"
 #include "graspsim/planning/grasp_planner.h"
 #include "graspsim/planning/grasp_template.h"
+#include "graspsim/planning/release_press.h"
 
 #include <map>
 #include <string>
@@ -14,12 +15,15 @@
 
 namespace graspsim::planning {
 
-// An end-effector's pad: the point and its outward normal in its body frame.
+// An end-effector's pad: the point and its outward normal in its body frame, the capsule it sits
+// on (index into ArmKinematics::getSegmentShapes) and the movable joints from the palm out to it.
 struct Pad {
     std::string effector;
     int body = 0;
     SimTK::Vec3 p_BE{0, 0, 0};
     SimTK::UnitVec3 n_B;
+    int capsule = -1;
+    std::vector<int> joints;
 };
 
 class GraspObjective {
@@ -33,6 +37,11 @@ public:
     // The wanted pad-to-surface distance of goal pad `pad` (m; all start at the request's targetGap).
     double getTargetGap(std::size_t pad) const { return m_targetGaps.at(pad); }
     void setTargetGap(std::size_t pad, double gap) { m_targetGaps.at(pad) = gap; }
+    // Whether the cost asks every goal finger to keep pressing once the object is released (a
+    // grasp of three or more pads; release_press.h).
+    void setReleaseBalanced(bool on) { m_balanceRelease = on; }
+    // The controller's press depth the plan is made for (m): the pads' goals are pressed this far in.
+    void setPressDepth(double depth) { m_request.pressDepth = depth; }
     double getObjectWidth() const { return m_objectWidth; }
     double getHandSpan() const { return m_handSpan; }
     const std::string& getSpanName() const { return m_spanName; }
@@ -47,6 +56,14 @@ public:
     std::map<std::string, SimTK::Vec3> findGoals(const std::map<std::string, double>& angles,
                                                  const SimTK::Transform& X_GO) const;
 
+    // The deepest overlap (m, 0 if none) of the shapes of the body carrying `effector` with the
+    // object, for joint angles (rad, by name) and object pose X_GO.
+    double calcEffectorBodyDepth(const std::map<std::string, double>& angles, const SimTK::Transform& X_GO,
+                                 const std::string& effector) const;
+    // Per goal pad, what it still presses once the object is released (m; release_press.h), for
+    // joint angles (rad, by name) and object pose X_GO.
+    std::vector<double> calcReleasedPress(const std::map<std::string, double>& angles, const SimTK::Transform& X_GO) const;
+
 private:
     void setUpVariables(const GraspTemplate& graspTemplate);
     void placeObjectAtStart();
@@ -57,6 +74,11 @@ private:
                               const SimTK::Vec3& n_fingers) const;
     double calcCouplingCost(const double* x) const;
     double calcGravityCost(const SimTK::Transform& X_GS, const SimTK::Vec3& sumOutward_S) const;
+    FingerPress calcFingerPress(std::size_t pad, const std::vector<double>& q, const std::vector<SimTK::Transform>& X_GB,
+                                const SimTK::Transform& X_GS) const;
+    std::vector<double> predictReleasedPress(const std::vector<double>& q, const std::vector<SimTK::Transform>& X_GB,
+                                             const SimTK::Transform& X_GS) const;
+    double calcReleaseCost(const std::vector<double>& q, const SimTK::Transform& X_GS) const;
     std::vector<SimTK::Transform> calcBodyPoses(const std::map<std::string, double>& angles) const;
 
     SimTK::Vec3 findThesisBallCentre() const;
@@ -71,6 +93,7 @@ private:
     std::vector<int> m_freeJoints;                  // joint indices the optimizer moves
     std::vector<std::pair<int, int>> m_coupledJoints; // (PIP, DIP) variable indices per finger
     bool m_rotates = false;                         // the object's orientation is a variable
+    bool m_balanceRelease = false;                  // the cost has the release term
     SimTK::Transform m_X_GO0;                       // object pose at the start
     std::vector<double> m_start, m_lower, m_upper, m_steps;
     double m_objectWidth = 0, m_handSpan = 0;

@@ -82,6 +82,8 @@ int optimize(GraspObjective& objective, std::vector<double>& x) {
 // The plan at the optimizer's x as a person would write it, with its checks' numbers.
 GraspPlan finishPlan(const GraspRequest& request, GraspObjective& objective, const std::vector<double>& x) {
     GraspPlan plan = objective.makePlan(x.data());
+    plan.kp = findGraspTemplate(request.type).kp;
+    plan.pressDepth = request.pressDepth;
     roundPlan(plan);
     plan.goals = objective.findGoals(plan.jointAngles, plan.X_GO);
     plan.diagnostics = calcPlanDiagnostics(request, plan);
@@ -136,6 +138,7 @@ GraspRequest makeGraspRequest(const scenario::Scenario& scenario, GraspType type
     request.type = type;
     request.gravity = SimTK::Vec3(scenario.world.gravity[0], scenario.world.gravity[1], scenario.world.gravity[2]);
     request.pressDepth = findPlannedPressDepth(scenario);
+    request.mass = scenario.object.mass;
     return request;
 }
 
@@ -153,6 +156,48 @@ GraspRequest withSegmentPoints(GraspRequest request, const std::vector<model::Se
 
 }  // namespace
 
+namespace {
+
+// Optimizes from x, then re-plans fingers that cannot press their goals (the reach test).
+GraspPlan optimizeReachable(const GraspRequest& request, const PlanTolerances& tolerances, GraspObjective& objective,
+                            std::vector<double>& x, int& evaluations) {
+    evaluations += optimize(objective, x);
+    GraspPlan plan = finishPlan(request, objective, x);
+    for (int round = 0; round < kReachRounds && !isReachable(plan.diagnostics, tolerances); ++round) {
+        if (!aimShortFingersNearer(plan.diagnostics, tolerances, objective)) break;
+        evaluations += optimize(objective, x);
+        plan = finishPlan(request, objective, x);
+    }
+    return plan;
+}
+
+// The press depth (m) that leaves every goal finger at least half the requested press while the
+// object is held (its steady press, against the passive springs): the requested one raised by
+// what the weakest finger lacks, rounded up to 0.1 mm, at most by half, and never past a quarter
+// of the object's width (a thin object's press, findPlannedPressDepth). The springs take the
+// same millimetres from a finger whatever the press, so a deeper press adds to every finger's
+// press alike. Not for the release: the prediction leaves out friction, which carries the weight
+// of a small ball in a tripod, and would press such grasps deeper for nothing.
+double findPressForWeakestFinger(const PlanDiagnostics& d, double requested, double objectWidth) {
+    double weakest = SimTK::Infinity;
+    for (const GoalCheck& g : d.goals) weakest = std::min(weakest, g.steadyPress);
+    const double missing = requested / 2 - weakest;
+    if (!(missing > 0)) return requested;
+    const double raised = std::ceil((requested + missing) / 1e-4 - 1e-6) * 1e-4;
+    const double thin = std::floor(objectWidth / 4 / 1e-4 + 1e-6) * 1e-4;
+    const double press = std::min({raised, 1.5 * requested, thin});
+    return press > requested + 1e-9 ? press : requested;
+}
+
+// The least a goal finger of `d` is predicted to press once the object is released (m).
+double findWeakestReleasedPress(const PlanDiagnostics& d) {
+    double weakest = SimTK::Infinity;
+    for (const GoalCheck& g : d.goals) weakest = std::min(weakest, g.releasedPress);
+    return weakest;
+}
+
+}  // namespace
+
 GraspPlan planGrasp(const GraspRequest& givenRequest, const PlanTolerances& tolerances) {
     givenRequest.shape.validate("the object");
     GraspRequest request = givenRequest;
@@ -162,14 +207,40 @@ GraspPlan planGrasp(const GraspRequest& givenRequest, const PlanTolerances& tole
     checkFits(objective, request.type);
 
     std::vector<double> x = objective.getStart();
-    int evaluations = optimize(objective, x);
-    GraspPlan plan = finishPlan(request, objective, x);
-    for (int round = 0; round < kReachRounds && !isReachable(plan.diagnostics, tolerances); ++round) {
-        if (!aimShortFingersNearer(plan.diagnostics, tolerances, objective)) break;
-        evaluations += optimize(objective, x);
-        plan = finishPlan(request, objective, x);
+    int evaluations = 0;
+    GraspPlan plan = optimizeReachable(request, tolerances, objective, x, evaluations);
+    if (plan.goalEffectors.size() >= 3 && findWeakestReleasedPress(plan.diagnostics) < request.pressDepth / 2) {
+        // A finger the release would leave with less than half the press: planned again, from
+        // the template's start, with the release term in the cost (from the first plan's
+        // optimum BOBYQA stays in its basin: the 1.90 m man's sphere kept three fingers that let
+        // go), and kept if the new plan passes every check.
+        objective.setReleaseBalanced(true);
+        std::vector<double> balanced = objective.getStart();
+        GraspPlan repaired = optimizeReachable(request, tolerances, objective, balanced, evaluations);
+        if (findFailedCheck(repaired.diagnostics, tolerances).empty()) {
+            plan = repaired;
+            x = balanced;
+        } else {
+            objective.setReleaseBalanced(false);
+        }
+    }
+    const double press = findPressForWeakestFinger(plan.diagnostics, request.pressDepth, objective.getObjectWidth());
+    if (press > request.pressDepth) {
+        // Only the controller presses deeper: the pose stays, and so does the press the plan
+        // was made for if the deeper one would fail a check (a goal out of the IK's reach).
+        GraspRequest deeper = request;
+        deeper.pressDepth = press;
+        objective.setPressDepth(press);
+        GraspPlan pressed = finishPlan(deeper, objective, x);
+        if (findFailedCheck(pressed.diagnostics, tolerances).empty()) {
+            request = deeper;
+            plan = pressed;
+        } else {
+            objective.setPressDepth(request.pressDepth);
+        }
     }
     plan.kp = graspTemplate.kp;
+    plan.pressDepth = request.pressDepth;
     plan.segmentPoints = request.bodyOptions.segmentPoints;
     plan.diagnostics.evaluations = evaluations;
     const std::string failed = findFailedCheck(plan.diagnostics, tolerances);
@@ -225,7 +296,8 @@ std::string findFailedCheck(const PlanDiagnostics& d, const PlanTolerances& tole
 PlanDiagnostics calcPlanDiagnostics(const GraspRequest& givenRequest, const GraspPlan& plan) {
     GraspTemplate graspTemplate = findGraspTemplate(givenRequest.type);
     graspTemplate.goalEffectors = plan.goalEffectors;
-    const GraspRequest request = withSegmentPoints(givenRequest, plan.segmentPoints);
+    GraspRequest request = withSegmentPoints(givenRequest, plan.segmentPoints);
+    if (plan.pressDepth > 0) request.pressDepth = plan.pressDepth;
     const GraspObjective objective(request, graspTemplate);
     PlanDiagnostics d = objective.calcDiagnostics(plan.jointAngles, plan.X_GO);
     // The goals as the controller presses them at t = 0 (simulation/grasp_scene.cpp).
@@ -235,12 +307,15 @@ PlanDiagnostics calcPlanDiagnostics(const GraspRequest& givenRequest, const Gras
         const SimTK::Vec3 n_O = request.X_OS.R() * contact::findSurfacePoint(request.shape, ~request.X_OS * p_OP).n_S;
         pressed.push_back({effector, plan.X_GO * (p_OP - request.pressDepth * n_O)});
     }
-    const std::vector<GoalReach> reach = calcGoalReach(request.bodyOptions, plan.jointAngles, pressed);
+    const GoalReachResult reach = calcGoalReach(request.bodyOptions, plan.jointAngles, pressed, plan.kp);
     const SimTK::Transform X_GS = plan.X_GO * request.X_OS;
-    for (std::size_t i = 0; i < d.goals.size() && i < reach.size(); ++i) {
-        d.goals[i].reachShortfall = reach[i].shortfall;
-        d.goals[i].commandedPress = -contact::findSurfacePoint(request.shape, ~X_GS * reach[i].p_GE).distance;
+    for (std::size_t i = 0; i < d.goals.size() && i < reach.goals.size(); ++i) {
+        d.goals[i].reachShortfall = reach.goals[i].shortfall;
+        d.goals[i].commandedPress = -contact::findSurfacePoint(request.shape, ~X_GS * reach.goals[i].p_GE).distance;
+        d.goals[i].steadyPress = objective.calcEffectorBodyDepth(reach.steadyAngles, plan.X_GO, d.goals[i].effector);
     }
+    const std::vector<double> released = objective.calcReleasedPress(plan.jointAngles, plan.X_GO);
+    for (std::size_t i = 0; i < d.goals.size() && i < released.size(); ++i) d.goals[i].releasedPress = released[i];
     return d;
 }
 

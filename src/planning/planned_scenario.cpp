@@ -22,7 +22,8 @@ scenario::Scenario applyPlan(const scenario::Scenario& base, const GraspPlan& pl
     s.object.orientation = {xyz[0], xyz[1], xyz[2]};
     s.controller.kp = plan.kp;
     s.bodyOptions.segmentPoints = plan.segmentPoints;
-    s.controller.pressDepth = findPlannedPressDepth(s);  // as planned: within a thin object's half-thickness
+    // as planned: within a thin object's half-thickness, deeper where the fingers would not press
+    s.controller.pressDepth = plan.pressDepth > 0 ? plan.pressDepth : findPlannedPressDepth(s);
     return s;
 }
 
@@ -53,7 +54,7 @@ scenario::Scenario loadScenario(const std::string& nameOrPath) {
 std::string formatPlannedScenario(const scenario::Scenario& planned, const GraspPlan& plan) {
     const PlanDiagnostics& d = plan.diagnostics;
     std::ostringstream header;
-    char line[200];
+    char line[256];
     header << "Planned by graspsim grasp plan: grasp type " << toString(plan.type)
            << " (Feix et al. 2016, The GRASP Taxonomy of Human Grasp Types).\n";
     std::snprintf(line, sizeof line, "Object width %.1f mm, hand span %.1f mm; deepest segment %.2f mm%s%s.\n",
@@ -61,9 +62,9 @@ std::string formatPlannedScenario(const scenario::Scenario& planned, const Grasp
                   d.deepestSegment.empty() ? "" : " (", d.deepestSegment.empty() ? "" : (d.deepestSegment + ")").c_str());
     header << line;
     for (const GoalCheck& g : d.goals) {
-        std::snprintf(line, sizeof line, "  %s pad %.2f mm off the surface, facing it within %.0f deg, IK %.2f mm short of its pressed goal, %.2f mm inside\n",
+        std::snprintf(line, sizeof line, "  %s pad %.2f mm off the surface, facing it within %.0f deg, IK %.2f mm short of its pressed goal, %.2f mm inside; steady press %.2f mm, %.2f mm once released\n",
                       g.effector.c_str(), g.gap * 1000, g.misalignment * 180 / SimTK::Pi, g.reachShortfall * 1000,
-                      g.commandedPress * 1000);
+                      g.commandedPress * 1000, g.steadyPress * 1000, g.releasedPress * 1000);
         header << line;
     }
     std::snprintf(line, sizeof line, "Grasp quality Q = %.3g (smallest singular value, unit normal forces)%s.",

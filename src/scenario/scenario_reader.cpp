@@ -154,27 +154,30 @@ std::map<std::string, Vec3> readGoals(const YamlField& root, const model::ModelD
 }
 
 // The friction law and the anchor law's parameters (each finite and > 0).
-void readAnchorFriction(const YamlField& section, ContactSpec& contact) {
+contact::FrictionSettings readFriction(const YamlField& section) {
+    contact::FrictionSettings friction;
     if (const std::optional<YamlField> model = section.find("friction_model")) {
         const std::string accepted = "friction_model must be regularized or anchor";
-        contact.frictionModel = model->asText(accepted);
-        if (contact.frictionModel != "regularized" && contact.frictionModel != "anchor") model->reject(accepted);
+        const std::string text = model->asText(accepted);
+        if (text != "regularized" && text != "anchor") model->reject(accepted);
+        friction.model = contact::parseFrictionModel(text, "contact.friction_model");
     }
-    contact.anchorStiffnessRatio = section.findNumber(
-        "anchor_stiffness_ratio", NumberRule::positive("anchor stiffness ratio", "k_t / k_n"), contact.anchorStiffnessRatio);
-    contact.anchorDampingMass = section.findNumber("anchor_damping_mass", NumberRule::positive("anchor damping mass", "kg"),
-                                                   contact.anchorDampingMass);
-    contact.anchorRelaxationTime = section.findNumber(
-        "anchor_relaxation_time", NumberRule::positive("anchor relaxation time", "s"), contact.anchorRelaxationTime);
+    contact::AnchorFrictionParameters& anchor = friction.anchor;
+    anchor.stiffnessRatio = section.findNumber(
+        "anchor_stiffness_ratio", NumberRule::positive("anchor stiffness ratio", "k_t / k_n"), anchor.stiffnessRatio);
+    anchor.dampingMass =
+        section.findNumber("anchor_damping_mass", NumberRule::positive("anchor damping mass", "kg"), anchor.dampingMass);
+    anchor.relaxationTime = section.findNumber(
+        "anchor_relaxation_time", NumberRule::positive("anchor relaxation time", "s"), anchor.relaxationTime);
+    return friction;
 }
 
-ContactSpec readContact(const YamlField& root) {
-    const YamlField section = root.getSection(
-        "contact", {"stiffness", "dissipation", "static_friction", "dynamic_friction", "viscous_friction",
-                    "transition_velocity", "friction_model", "anchor_stiffness_ratio", "anchor_damping_mass",
-                    "anchor_relaxation_time"});
-    ContactSpec contact;
-    contact.stiffness = section.findNumber("stiffness", NumberRule::positive("stiffness", "Pa"), contact.stiffness);
+// The pair's parameters, each with the rule of ContactParameters::validate(), applied here to
+// name the file, line and field of a bad value; fields left out keep ContactParameters's defaults.
+contact::ContactParameters readContactParameters(const YamlField& section) {
+    contact::ContactParameters contact;
+    contact.effectiveStiffness =
+        section.findNumber("stiffness", NumberRule::positive("stiffness", "Pa"), contact.effectiveStiffness);
     contact.dissipation =
         section.findNumber("dissipation", NumberRule::nonNegative("dissipation", "s/m"), contact.dissipation);
     contact.staticFriction =
@@ -186,8 +189,16 @@ ContactSpec readContact(const YamlField& root) {
         "viscous_friction", NumberRule::nonNegative("viscous friction", "s/m"), contact.viscousFriction);
     contact.transitionVelocity = section.findNumber(
         "transition_velocity", NumberRule::positive("transition velocity", "m/s"), contact.transitionVelocity);
-    readAnchorFriction(section, contact);
     return contact;
+}
+
+void readContact(const YamlField& root, Scenario& scenario) {
+    const YamlField section = root.getSection(
+        "contact", {"stiffness", "dissipation", "static_friction", "dynamic_friction", "viscous_friction",
+                    "transition_velocity", "friction_model", "anchor_stiffness_ratio", "anchor_damping_mass",
+                    "anchor_relaxation_time"});
+    scenario.contact = readContactParameters(section);
+    scenario.friction = readFriction(section);
 }
 
 // `planned`: the grasp is planned on load, which sets the press depth for the object
@@ -319,7 +330,7 @@ Scenario readScenario(const YamlField& root) {
         scenario.graspPose = readGraspPose(root, body);
         scenario.goals = readGoals(root, body, scenario.object);
     }
-    scenario.contact = readContact(root);
+    readContact(root, scenario);
     scenario.controller = readController(root, scenario.object, !scenario.graspType.empty());
     scenario.simulation = readSimulation(root, scenario.controller);
     scenario.perturbations = readPerturbations(root, scenario.simulation);

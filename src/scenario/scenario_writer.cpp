@@ -83,15 +83,17 @@ void writePoseAndGoals(std::ostringstream& out, const Scenario& s) {
 }
 
 void writeSettings(std::ostringstream& out, const Scenario& s) {
-    const ContactSpec& c = s.contact;
-    out << "contact:\n  stiffness: " << formatNumber(c.stiffness) << "\n  dissipation: " << formatNumber(c.dissipation)
+    const contact::ContactParameters& c = s.contact;
+    out << "contact:\n  stiffness: " << formatNumber(c.effectiveStiffness) << "\n  dissipation: " << formatNumber(c.dissipation)
         << "\n  static_friction: " << formatNumber(c.staticFriction) << "\n  dynamic_friction: " << formatNumber(c.dynamicFriction)
         << "\n  viscous_friction: " << formatNumber(c.viscousFriction)
         << "\n  transition_velocity: " << formatNumber(c.transitionVelocity) << "\n";
-    if (c.frictionModel != "regularized") {  // the default law leaves the file as it was
-        out << "  friction_model: " << c.frictionModel << "\n  anchor_stiffness_ratio: " << formatNumber(c.anchorStiffnessRatio)
-            << "\n  anchor_damping_mass: " << formatNumber(c.anchorDampingMass)
-            << "\n  anchor_relaxation_time: " << formatNumber(c.anchorRelaxationTime) << "\n";
+    const contact::FrictionSettings& f = s.friction;
+    if (f.model != contact::FrictionModel::Regularized) {  // the default law leaves the file as it was
+        out << "  friction_model: " << contact::toString(f.model)
+            << "\n  anchor_stiffness_ratio: " << formatNumber(f.anchor.stiffnessRatio)
+            << "\n  anchor_damping_mass: " << formatNumber(f.anchor.dampingMass)
+            << "\n  anchor_relaxation_time: " << formatNumber(f.anchor.relaxationTime) << "\n";
     }
     out << "\n";
     const ControllerSpec& k = s.controller;

@@ -28,4 +28,10 @@ double calcContactGraspQuality(const std::vector<contact::ContactReport>& report
     return grasp::calcGraspQuality(contacts, frame, options);
 }
 
+grasp::QualityOptions makeQualityOptions(const contact::ContactParameters& contact) {
+    grasp::QualityOptions options;
+    options.mu = contact.staticFriction;
+    return options;
+}
+
 }  // namespace graspsim::simulation

@@ -2,6 +2,7 @@
 
 #include "graspsim/grasp/grasp_quality.h"
 #include "graspsim/grasp/wrench_distribution.h"
+#include "graspsim/simulation/contact_grasp_quality.h"
 #include "graspsim/simulation/grasp_scene.h"
 
 #include <algorithm>
@@ -71,8 +72,7 @@ double EngagedGraspTracker::calcQuality(const SimTK::State& state) const {
     }
     Eigen::Matrix<double, 6, 1> wrench;
     wrench << toEigen(W[0]), toEigen(W[1]);
-    grasp::QualityOptions options;
-    options.mu = scene_->getScenario().contact.staticFriction;  // as the full-contact Q (grasp_simulation.cpp)
+    const grasp::QualityOptions options = makeQualityOptions(scene_->getContactParameters());
     const grasp::ObjectFrame frame = toObjectFrame(X_GO);
     const grasp::WrenchDistribution d = grasp::distributeWrench(contacts, frame, wrench, reference, options.mu);
     for (std::size_t i = 0; i < contacts.size(); ++i) contacts[i].normalForce = d.normalForces[i];

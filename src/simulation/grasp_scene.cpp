@@ -1,6 +1,8 @@
 #include "graspsim/simulation/grasp_scene.h"
 
+#include "graspsim/contact/hand_object_pairs.h"
 #include "graspsim/error.h"
+#include "graspsim/grasp/limited_bushing_law.h"
 #include "graspsim/model/body_model.h"
 #include "graspsim/simulation/grasp_switch.h"
 
@@ -26,30 +28,6 @@ SimTK::Transform toTransform(const model::Transform& X) {
     return SimTK::Transform(SimTK::Rotation(R, true), toVec3(X.p));
 }
 
-// The scenario gives the pair's contact parameters. Both surfaces get one material whose
-// combination by Simbody's rules (contact_force_law.h) reproduces them: equal materials keep
-// their friction and dissipation and halve k^(2/3), so each surface carries 2^(3/2) E*.
-contact::ContactMaterial makeSurfaceMaterial(const scenario::ContactSpec& c) {
-    contact::ContactMaterial m;
-    m.stiffness = std::pow(2.0, 1.5) * c.stiffness;
-    m.dissipation = c.dissipation;
-    m.staticFriction = c.staticFriction;
-    m.dynamicFriction = c.dynamicFriction;
-    m.viscousFriction = c.viscousFriction;
-    m.transitionVelocity = c.transitionVelocity;
-    return m;
-}
-
-// The scenario's friction law for the compliant contact element.
-contact::FrictionSettings makeFrictionSettings(const scenario::ContactSpec& c) {
-    contact::FrictionSettings friction;
-    friction.model = contact::parseFrictionModel(c.frictionModel, "scenario contact.friction_model");
-    friction.anchor.stiffnessRatio = c.anchorStiffnessRatio;
-    friction.anchor.dampingMass = c.anchorDampingMass;
-    friction.anchor.relaxationTime = c.anchorRelaxationTime;
-    return friction;
-}
-
 // The movable joints from the palm out to an end-effector's body (the digit's own joints).
 std::vector<std::string> findFingerJoints(const model::ModelDescription& d, const std::string& endEffector) {
     std::vector<std::string> joints;
@@ -62,6 +40,18 @@ std::vector<std::string> findFingerJoints(const model::ModelDescription& d, cons
         body = j->parent;
     }
     return joints;
+}
+
+// Stiffness per bushing axis (rotation first) giving the body natural frequency w (rad/s) about
+// and along its central principal axes: I_k w^2 and m w^2.
+SimTK::Vec6 calcBushingStiffness(const SimTK::MassProperties& mp, double w) {
+    const SimTK::Vec3 I = mp.calcCentralInertia().getMoments();
+    SimTK::Vec6 stiffness;
+    for (int k = 0; k < 3; ++k) {
+        stiffness[k] = I[k] * w * w;
+        stiffness[k + 3] = mp.getMass() * w * w;
+    }
+    return stiffness;
 }
 
 // The palm: the one massive body the model builder gave the palm role.
@@ -133,26 +123,14 @@ void GraspScene::addObject(bool onPalm) {
 
 void GraspScene::addContacts() {
     const model::ModelDescription objectModel = scenario::buildObjectModel(scenario_.object);
-    const model::Body& objectBody = objectModel.bodies.at(0);
-    const contact::ContactMaterial material = makeSurfaceMaterial(scenario_.contact);
-    std::vector<contact::ContactPair> pairs;
-    for (const model::Body& hand : model_.getDescription().bodies) {
-        if (hand.role == model::BodyRole::Other || hand.isVirtual()) continue;
-        const SimTK::MobilizedBody& handMobod = model_.getMobilizedBody(hand.name);
-        for (const model::Geometry& g : hand.geometry) {
-            for (const model::Geometry& o : objectBody.geometry) {
-                contact::ContactPair pair;
-                pair.a = contact::ContactSurface::fromGeometry(handMobod, hand.name, g, material);
-                pair.b = contact::ContactSurface::fromGeometry(object_, objectBody.name, o, material);
-                pairs.push_back(pair);
-            }
-        }
-    }
+    const std::vector<contact::ContactPair> pairs =
+        contact::makeHandObjectPairs(model_, contact::isHandSegmentBody, object_, objectModel.bodies.at(0),
+                                     getContactParameters());
     if (contactModel_ == ContactModel::Rigid) {
         rigidContacts_ = contact::RigidContactSet(model_.updMatter(), pairs);
         return;
     }
-    contacts_ = contact::CompliantContactForce(model_.updForces(), pairs, makeFrictionSettings(scenario_.contact));
+    contacts_ = contact::CompliantContactForce(model_.updForces(), pairs, scenario_.friction);
 }
 
 // Every movable joint's linear impedance: passive spring and damper, the PD gains (the
@@ -189,16 +167,9 @@ std::vector<contact::ContactReport> GraspScene::findContactReports(const SimTK::
 void GraspScene::addBushing() {
     const SimTK::MassProperties mp = object_.getBody().getDefaultRigidBodyMassProperties();
     const SimTK::Vec3 I = mp.calcCentralInertia().getMoments();
-    const double w = kBushingFrequency;
-    SimTK::Vec6 stiffness, damping;
-    for (int k = 0; k < 3; ++k) {
-        stiffness[k] = I[k] * w * w;
-        damping[k] = 2 * I[k] * w;
-        stiffness[k + 3] = mp.getMass() * w * w;
-        damping[k + 3] = 2 * mp.getMass() * w;
-    }
+    const SimTK::Vec6 stiffness = calcBushingStiffness(mp, kBushingFrequency);
     bushing_ = grasp::LimitedBushing(model_.updForces(), getPalm(), SimTK::Transform(), object_, SimTK::Transform(),
-                                     stiffness, damping);
+                                     stiffness, grasp::calcCriticalDamping(stiffness, I, mp.getMass()));
     attachment_ = &bushing_;
 }
 
@@ -224,15 +195,10 @@ void GraspScene::addMultiAttachment() {
     }
     const SimTK::MassProperties mp = object_.getBody().getDefaultRigidBodyMassProperties();
     const SimTK::Vec3 I = mp.calcCentralInertia().getMoments();
-    const double w = kBushingFrequency, parts = static_cast<double>(sites.size());
-    SimTK::Vec6 stiffness, damping;
-    for (int k = 0; k < 3; ++k) {
-        stiffness[k] = I[k] * w * w / parts;
-        damping[k] = 2 * I[k] * w / parts;
-        stiffness[k + 3] = mp.getMass() * w * w / parts;
-        damping[k + 3] = 2 * mp.getMass() * w / parts;
-    }
-    multi_ = std::make_unique<grasp::MultiAttachment>(model_.updForces(), object_, sites, stiffness, damping);
+    const SimTK::Vec6 stiffness = calcBushingStiffness(mp, kBushingFrequency);
+    const double parts = static_cast<double>(sites.size());
+    multi_ = std::make_unique<grasp::MultiAttachment>(model_.updForces(), object_, sites, stiffness / parts,
+                                                      grasp::calcCriticalDamping(stiffness, I, mp.getMass()) / parts);
     attachment_ = multi_.get();
 }
 

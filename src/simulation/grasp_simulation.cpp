@@ -46,7 +46,7 @@ public:
     Recorder(const GraspScene& scene, SimulationResult& result) : scene_(scene), result_(result) {
         result_.jointNames = scene.getModel().getJointNames();
         for (const std::string& j : result_.jointNames) jointQ_.push_back(scene.getModel().getJointQIndex(j));
-        qualityOptions_.mu = scene.getScenario().contact.staticFriction;
+        qualityOptions_ = makeQualityOptions(scene.getContactParameters());
     }
 
     void record(const SimTK::State& s) {

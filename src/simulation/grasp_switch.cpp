@@ -209,9 +209,8 @@ double GraspSwitch::calcQuality(const SimTK::State& state) const {
 }
 
 double GraspSwitch::calcQualityOf(const SimTK::State& state, const std::vector<contact::ContactReport>& reports) const {
-    grasp::QualityOptions quality;
-    quality.mu = scene_.getScenario().contact.staticFriction;  // as the recorder (grasp_simulation.cpp)
-    return calcContactGraspQuality(reports, scene_.getObject().getBodyTransform(state), quality);
+    return calcContactGraspQuality(reports, scene_.getObject().getBodyTransform(state),
+                                   makeQualityOptions(scene_.getContactParameters()));
 }
 
 double GraspSwitch::calcEngagedQuality(const SimTK::State& state) const {
@@ -241,7 +240,7 @@ bool GraspSwitch::isFullContact(const std::vector<contact::ContactReport>& repor
 // release) was re-engaged and dragged through the locked fingertips.
 bool GraspSwitch::isSticking(const std::vector<contact::ContactReport>& reports) const {
     if (multi_) return multi_->isSticking(reports);
-    const double limit = scene_.getScenario().contact.transitionVelocity;
+    const double limit = scene_.getContactParameters().transitionVelocity;
     return std::all_of(reports.begin(), reports.end(),
                        [&](const contact::ContactReport& c) { return c.slipVelocity_G.norm() < limit; });
 }
@@ -287,8 +286,8 @@ void GraspSwitch::engage(SimTK::State& state, double quality, const std::vector<
         return;
     }
     grasp::AttachmentEngagement engagement;
-    const scenario::ContactSpec& contact = scene_.getScenario().contact;
-    const double mu = options_.staticFrictionLimits ? contact.staticFriction : contact.dynamicFriction;
+    const contact::ContactParameters& pair = scene_.getContactParameters();
+    const double mu = options_.staticFrictionLimits ? pair.staticFriction : pair.dynamicFriction;
     const SimTK::Vec3 p_GC = findContactCentroid(reports);
     placeConstraintFrames(state, p_GC, engagement);
     if (options_.limitModel == grasp::FrictionLimitModel::Thesis) {

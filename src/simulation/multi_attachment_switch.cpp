@@ -87,7 +87,7 @@ int MultiAttachmentSwitch::findFinger(const std::string& body) const {
 }
 
 bool MultiAttachmentSwitch::isSticking(const std::vector<contact::ContactReport>& reports) const {
-    const double limit = scene_.getScenario().contact.transitionVelocity;
+    const double limit = scene_.getContactParameters().transitionVelocity;
     for (const contact::ContactReport& c : reports) {
         if (findFinger(c.bodyA) >= 0 && !(c.slipVelocity_G.norm() < limit)) return false;
     }
@@ -105,7 +105,7 @@ std::string MultiAttachmentSwitch::engage(SimTK::State& state, const std::vector
     for (const std::vector<int>& pairs : fingerPairs_) replaced.insert(replaced.end(), pairs.begin(), pairs.end());
     scene_.getCompliantContacts().setPairsEnabled(state, replaced, false);
     grasp::AttachmentEngagement engagement;
-    engagement.mu = scene_.getScenario().contact.dynamicFriction;
+    engagement.mu = scene_.getContactParameters().dynamicFriction;
     engagement.penetrationBound = penetrationBound_;
     std::string text = "multi: tangent limits";
     const auto& g = scene_.getScenario().world.gravity;

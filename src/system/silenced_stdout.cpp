@@ -21,10 +21,15 @@ SilencedStdout::SilencedStdout() {
         throw Error("cannot redirect standard output to silence Simbody's debug output");
     }
     ::close(null);
+    // Formatting the trace, not writing it, is the cost (a matrix of doubles per step): a failed
+    // stream makes every insertion a no-op.
+    savedState_ = std::cout.rdstate();
+    std::cout.setstate(std::ios::badbit);
 }
 
 SilencedStdout::~SilencedStdout() {
     // What was printed meanwhile sits in the C and C++ buffers: drop it into /dev/null first.
+    std::cout.clear(savedState_);
     std::cout.flush();
     std::fflush(stdout);
     ::dup2(saved_, 1);

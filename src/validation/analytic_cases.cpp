@@ -38,11 +38,11 @@ struct SqueezeScene {
         return SimTK::MobilizedBody::Slider(matter.updGround(), SimTK::Transform(R_GF), body, SimTK::Transform(R_GF));
     }
 
-    std::vector<contact::ContactPair> makePairs(const contact::ContactMaterial& m) const {
+    std::vector<contact::ContactPair> makePairs(const contact::ContactParameters& p) const {
         const contact::ContactShape ball = contact::ContactShape::sphere(kRadius);
         const contact::ContactSurface b{box, "box", "box", contact::ContactShape::box(SimTK::Vec3(kHalfWidth, 0.5, 0.02)),
-                                        SimTK::Transform(), m};
-        return {{{left, "left", "ball", ball, SimTK::Transform(), m}, b}, {{right, "right", "ball", ball, SimTK::Transform(), m}, b}};
+                                        SimTK::Transform()};
+        return {{{left, "left", "ball", ball, SimTK::Transform()}, b, p}, {{right, "right", "ball", ball, SimTK::Transform()}, b, p}};
     }
 
     // Spheres touching the box at `depth` (m) of overlap each.
@@ -55,18 +55,19 @@ struct SqueezeScene {
     }
 };
 
-contact::ContactMaterial makeMaterial() {
-    contact::ContactMaterial m;
-    m.stiffness = std::pow(2.0, 1.5) * kEStar;  // two equal surfaces combine to E*
-    m.dissipation = 5;
-    m.staticFriction = m.dynamicFriction = kSqueezeMu;
-    m.transitionVelocity = kSqueezeTransition;
-    return m;
+contact::ContactParameters makeParameters() {
+    contact::ContactParameters p;
+    p.effectiveStiffness = kEStar;
+    p.dissipation = 5;
+    p.staticFriction = p.dynamicFriction = kSqueezeMu;
+    p.viscousFriction = 0;
+    p.transitionVelocity = kSqueezeTransition;
+    return p;
 }
 
 SqueezeOutcome runCompliantSqueeze(double pull, double duration) {
     SqueezeScene scene(pull);
-    const contact::CompliantContactForce force(scene.forces, scene.makePairs(makeMaterial()));
+    const contact::CompliantContactForce force(scene.forces, scene.makePairs(makeParameters()));
     // Start at the static Hertz depth for N so the squeeze is in equilibrium from the start.
     const double depth = std::pow(3 * kSqueezePress / (4 * kEStar * std::sqrt(kRadius)), 2.0 / 3.0);
     SimTK::RungeKuttaMersonIntegrator integrator(scene.system);
@@ -82,9 +83,7 @@ SqueezeOutcome runCompliantSqueeze(double pull, double duration) {
 
 SqueezeOutcome runRigidSqueeze(double pull, double duration) {
     SqueezeScene scene(pull);
-    contact::RigidContactParameters parameters;
-    parameters.staticFriction = parameters.dynamicFriction = kSqueezeMu;
-    for (const contact::ContactPair& p : scene.makePairs(makeMaterial())) contact::RigidContact::add(scene.matter, p, parameters);
+    for (const contact::ContactPair& p : scene.makePairs(makeParameters())) contact::RigidContact::add(scene.matter, p);
     SimTK::SemiExplicitEulerTimeStepper stepper(scene.system);
     stepper.setImpulseSolverType(SimTK::SemiExplicitEulerTimeStepper::PGS);
     stepper.initialize(scene.makeState(0));

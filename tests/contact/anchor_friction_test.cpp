@@ -126,12 +126,12 @@ struct BoxOnIncline {
     BoxOnIncline(double angle, FrictionModel model, double initialSpeed = 0)
         : gravity(scene.forces, scene.matter, kG * Vec3(std::sin(angle), -std::cos(angle), 0)),
           box(scene.addFree(kMass, 0.03)) {
-        const ContactMaterial m = test::makeMaterial(kEStar, 1.0, kMuS, kMuD, kTransition);
+        const ContactParameters m = test::makeParameters(kEStar, 1.0, kMuS, kMuD, kTransition);
         FrictionSettings friction;
         friction.model = model;
         friction.anchor.dampingMass = kMass;
         force = CompliantContactForce(
-            scene.forces, {{scene.makeFloor(m), test::makeSurface(box, "box", ContactShape::box(halfLengths), m)}},
+            scene.forces, {{scene.makeFloor(), test::makeSurface(box, "box", ContactShape::box(halfLengths)), m}},
             friction);
         state = scene.system.realizeTopology();
         // Rest on the static Hertz depth of a corner carrying a quarter of the normal load.
@@ -304,14 +304,14 @@ struct Pinch {
           right(scene.addSlider(SimTK::XAxis, kPadMass, 0.01)) {
         SimTK::Force::MobilityConstantForce(scene.forces, left, 0, kPush);
         SimTK::Force::MobilityConstantForce(scene.forces, right, 0, -kPush);
-        const ContactMaterial m = test::makeMaterial(0.66e6, 1.0, 0.8, 0.6, 1e-3);
+        const ContactParameters m = test::makeParameters(0.66e6, 1.0, 0.8, 0.6, 1e-3);
         const ContactShape pad = c.boxPads ? ContactShape::box(Vec3(0.005, 0.01, 0.01)) : ContactShape::sphere(0.008);
         FrictionSettings friction;
         friction.model = model;
-        force = CompliantContactForce(scene.forces, {{test::makeSurface(left, "left", pad, m),
-                                                      test::makeSurface(object, "object", c.object, m)},
-                                                     {test::makeSurface(right, "right", pad, m),
-                                                      test::makeSurface(object, "object", c.object, m)}},
+        force = CompliantContactForce(scene.forces, {{test::makeSurface(left, "left", pad),
+                                                      test::makeSurface(object, "object", c.object), m},
+                                                     {test::makeSurface(right, "right", pad),
+                                                      test::makeSurface(object, "object", c.object), m}},
                                       friction);
         state = scene.system.realizeTopology();
         const double padHalf = c.boxPads ? 0.005 : 0.008;

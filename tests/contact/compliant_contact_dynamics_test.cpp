@@ -40,10 +40,10 @@ struct BallOnFloor {
     BallOnFloor(bool free, double dissipation) {
         ball = free ? SimTK::MobilizedBody(scene.addFree(kMass, kRadius))
                     : SimTK::MobilizedBody(scene.addSlider(SimTK::YAxis, kMass, kRadius));
-        const ContactMaterial m = test::makeMaterial(kEStar, dissipation);
+        const ContactParameters m = test::makeParameters(kEStar, dissipation);
         force = CompliantContactForce(
-            scene.forces, {{test::makeSurface(ball, "ball", ContactShape::sphere(kRadius), m),
-                            scene.makeFloor(m)}});
+            scene.forces, {{test::makeSurface(ball, "ball", ContactShape::sphere(kRadius)),
+                            scene.makeFloor(), m}});
     }
     double calcHeight(const SimTK::State& s) const { return ball.getBodyOriginLocation(s)[1]; }
 };
@@ -111,14 +111,14 @@ struct SqueezedBox {
         SimTK::Force::MobilityConstantForce(scene.forces, left, 0, kSqueeze);
         SimTK::Force::MobilityConstantForce(scene.forces, right, 0, -kSqueeze);
         SimTK::Force::MobilityConstantForce(scene.forces, box, 0, pull);
-        const ContactMaterial m =
-            test::makeMaterial(kEStar, 5, staticFriction, dynamicFriction, kTransition);
+        const ContactParameters m =
+            test::makeParameters(kEStar, 5, staticFriction, dynamicFriction, kTransition);
         const ContactShape boxShape = ContactShape::box(Vec3(kHalfWidth, 0.05, 0.02));
-        const ContactSurface boxSurface = test::makeSurface(box, "box", boxShape, m);
+        const ContactSurface boxSurface = test::makeSurface(box, "box", boxShape);
         const ContactShape ball = ContactShape::sphere(kRadius);
         force = CompliantContactForce(scene.forces,
-                                      {{test::makeSurface(left, "left", ball, m), boxSurface},
-                                       {test::makeSurface(right, "right", ball, m), boxSurface}});
+                                      {{test::makeSurface(left, "left", ball), boxSurface, m},
+                                       {test::makeSurface(right, "right", ball), boxSurface, m}});
         state = scene.system.realizeTopology();
         // Start at the static depth for N, so the squeeze is in equilibrium from the start.
         const double depth = test::calcStaticHertzDepth(kSqueeze, kEStar, kRadius);

@@ -38,8 +38,7 @@ struct HandWithObject {
         force = contact::CompliantContactForce(
             arm.updForces(),
             contact::makeHandObjectPairs(arm, contact::isHandSegmentBody, objectMobod, object,
-                                         contact::ContactMaterial::fingerPad(),
-                                         contact::ContactMaterial::rigidPlastic()));
+                                         contact::ContactParameters{}));
         state = arm.realizeTopology();
         arm.getSystem().realize(state, SimTK::Stage::Position);
         const SimTK::Vec3 centre = inHand ? findHandCentre() : SimTK::Vec3(1, 1, 1);

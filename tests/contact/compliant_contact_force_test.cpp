@@ -34,7 +34,7 @@ struct FiveSpheresOnAPlate {
     Scene scene;
     SimTK::MobilizedBody::Free plate = scene.addFree(1.0, 0.05);
     std::vector<SimTK::MobilizedBody::Free> spheres;
-    ContactMaterial material = test::makeMaterial(kEStar, kDissipation, 0.6, 0.4, 0.01);
+    ContactParameters parameters = test::makeParameters(kEStar, kDissipation, 0.6, 0.4, 0.01);
     CompliantContactForce force;
     SimTK::State state;
 
@@ -51,8 +51,8 @@ struct FiveSpheresOnAPlate {
         for (int i = 0; i < 5; ++i) {
             spheres.push_back(scene.addFree(0.01, kRadius));
             pairs.push_back({test::makeSurface(spheres[i], "sphere" + std::to_string(i),
-                                               ContactShape::sphere(kRadius), material),
-                             test::makeSurface(plate, "plate", plateShape, material)});
+                                               ContactShape::sphere(kRadius)),
+                             test::makeSurface(plate, "plate", plateShape), parameters});
         }
         force = CompliantContactForce(scene.forces, pairs);
         state = scene.system.realizeTopology();
@@ -68,7 +68,7 @@ struct FiveSpheresOnAPlate {
 
 TEST(CompliantContactForce, EveryContactCountsEvenAfterOneWithZeroForce) {
     FiveSpheresOnAPlate s;
-    const ContactParameters p = combineMaterials(s.material, s.material);
+    const ContactParameters& p = s.parameters;
     // Oracle: each contact evaluated on its own (geometry from findContacts, force law by hand:
     // f_n = max(0, (4/3) E* sqrt(R) x^1.5 (1 + 1.5 c xdot)), friction -mu f_n v/|v|).
     Vec3 force_G(0), torque_G(0);
@@ -193,9 +193,7 @@ TEST(CompliantContactForce, ListedPairsReportAsIfEnabledWithoutTouchingTheState)
 TEST(CompliantContactForce, PairsCanStartDisabledAndBadIndicesAreRejected) {
     Scene scene;
     const SimTK::MobilizedBody::Free ball = scene.addFree(0.1, 0.02);
-    const ContactMaterial m;
-    ContactPair pair{test::makeSurface(ball, "ball", ContactShape::sphere(0.02), m),
-                     scene.makeFloor(m)};
+    ContactPair pair{test::makeSurface(ball, "ball", ContactShape::sphere(0.02)), scene.makeFloor()};
     pair.enabledByDefault = false;
     const CompliantContactForce force(scene.forces, {pair});
     SimTK::State state = scene.system.realizeTopology();
@@ -214,19 +212,18 @@ TEST(CompliantContactForce, PairsCanStartDisabledAndBadIndicesAreRejected) {
     EXPECT_FALSE(force.isPairEnabled(state, 0));  // nothing changed by the failed call
 }
 
-TEST(CompliantContactForce, InvalidMaterialIsRejectedNamingThePair) {
+TEST(CompliantContactForce, InvalidParametersAreRejectedNamingThePair) {
     Scene scene;
     const SimTK::MobilizedBody::Free ball = scene.addFree(0.1, 0.02);
-    ContactMaterial bad;
-    bad.dynamicFriction = 0.5;  // static friction 0
-    const ContactPair pair{test::makeSurface(ball, "ball", ContactShape::sphere(0.02), bad),
-                           scene.makeFloor(ContactMaterial{})};
+    ContactPair pair{test::makeSurface(ball, "ball", ContactShape::sphere(0.02)), scene.makeFloor()};
+    pair.parameters.staticFriction = 0;
+    pair.parameters.dynamicFriction = 0.5;
     try {
         CompliantContactForce(scene.forces, {pair});
-        FAIL() << "material accepted";
+        FAIL() << "parameters accepted";
     } catch (const InputError& e) {
         EXPECT_EQ(std::string(e.what()),
-                  "contact pair 'ball/ball_shape vs ground/floor' material a: dynamicFriction "
+                  "contact pair 'ball/ball_shape vs ground/floor': dynamicFriction "
                   "(0.5) is greater than staticFriction (0); it must be <= staticFriction");
     }
 }

@@ -92,9 +92,9 @@ BounceResult runBounce(double h) {
     test::Scene scene;
     SimTK::Force::Gravity gravity(scene.forces, scene.matter, Vec3(0, -kG, 0));
     SimTK::MobilizedBody::Free ball = scene.addFree(kMass, kRadius);
-    const ContactMaterial m = test::makeMaterial(1e6, 0);
+    const ContactParameters m = test::makeParameters(1e6, 0);
     CompliantContactForce force(scene.forces,
-                                {{test::makeSurface(ball, "ball", ContactShape::sphere(kRadius), m), scene.makeFloor(m)}});
+                                {{test::makeSurface(ball, "ball", ContactShape::sphere(kRadius)), scene.makeFloor(), m}});
     const CompliantContactJacobian jacobian(scene.matter, force);
     SimTK::State state = scene.system.realizeTopology();
     scene.system.realizeModel(state);

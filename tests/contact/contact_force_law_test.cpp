@@ -76,35 +76,5 @@ TEST(ContactForceLaw, FrictionForceOpposesSlip) {
     EXPECT_EQ(calcFrictionForce(p, 0.0, slip), SimTK::Vec3(0));
 }
 
-TEST(ContactForceLaw, MaterialsCombineAsSimbodyDoes) {
-    ContactMaterial a, b;
-    a.stiffness = 1e6, b.stiffness = 8e6;
-    a.dissipation = 1.0, b.dissipation = 0.2;
-    a.staticFriction = 0.8, b.staticFriction = 0.4;
-    a.dynamicFriction = 0.6, b.dynamicFriction = 0.0;
-    a.transitionVelocity = 0.01, b.transitionVelocity = 0.002;
-    const ContactParameters p = combineMaterials(a, b);
-    // k^(2/3): 1e4 and 4e4; s = 4e4 / 5e4 = 0.8; E* = (1e4 * 0.8)^(3/2) = 8000^1.5.
-    EXPECT_NEAR(p.effectiveStiffness, std::pow(8000.0, 1.5), 1e-9 * std::pow(8000.0, 1.5));
-    EXPECT_NEAR(p.dissipation, 0.8 * 1.0 + 0.2 * 0.2, 1e-15);
-    EXPECT_NEAR(p.staticFriction, 2 * 0.8 * 0.4 / 1.2, 1e-15);
-    EXPECT_EQ(p.dynamicFriction, 0.0);
-    EXPECT_EQ(p.viscousFriction, 0.0);
-    EXPECT_EQ(p.transitionVelocity, 0.002);
-    // Same material on both sides: E* = k / 2^(3/2), everything else unchanged.
-    const ContactParameters same = combineMaterials(a, a);
-    EXPECT_NEAR(same.effectiveStiffness, 1e6 / std::pow(2.0, 1.5), 1e-6);
-    EXPECT_NEAR(same.staticFriction, 0.8, 1e-15);
-}
-
-TEST(ContactForceLaw, SkinOnPlasticPresetIsInTheDocumentedRange) {
-    const ContactParameters p =
-        combineMaterials(ContactMaterial::fingerPad(), ContactMaterial::rigidPlastic());
-    EXPECT_GT(p.effectiveStiffness, 0.6e6);
-    EXPECT_LT(p.effectiveStiffness, 0.7e6);
-    EXPECT_NEAR(p.staticFriction, 0.8, 1e-12);
-    EXPECT_NEAR(p.dynamicFriction, 0.6, 1e-12);
-}
-
 }  // namespace
 }  // namespace graspsim::contact

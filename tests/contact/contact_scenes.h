@@ -18,17 +18,19 @@ inline SimTK::Transform makeFloorPose() {
     return SimTK::Transform(SimTK::Rotation(-SimTK::Pi / 2, SimTK::XAxis), SimTK::Vec3(0));
 }
 
-/// A material whose combination with itself has effective stiffness E* (Pa): k = 2^(3/2) E*.
-inline ContactMaterial makeMaterial(double effectiveStiffness, double dissipation,
-                                    double staticFriction = 0, double dynamicFriction = 0,
-                                    double transitionVelocity = 0.01) {
-    ContactMaterial m;
-    m.stiffness = std::pow(2.0, 1.5) * effectiveStiffness;
-    m.dissipation = dissipation;
-    m.staticFriction = staticFriction;
-    m.dynamicFriction = dynamicFriction;
-    m.transitionVelocity = transitionVelocity;
-    return m;
+/// A pair's parameters: effective stiffness E* (Pa), dissipation (s/m), friction, no viscous
+/// friction, transition velocity (m/s).
+inline ContactParameters makeParameters(double effectiveStiffness, double dissipation,
+                                        double staticFriction = 0, double dynamicFriction = 0,
+                                        double transitionVelocity = 0.01) {
+    ContactParameters p;
+    p.effectiveStiffness = effectiveStiffness;
+    p.dissipation = dissipation;
+    p.staticFriction = staticFriction;
+    p.dynamicFriction = dynamicFriction;
+    p.viscousFriction = 0;
+    p.transitionVelocity = transitionVelocity;
+    return p;
 }
 
 /// Static Hertz depth (m) at which a normal load (N) is carried: (3 load / (4 E* sqrt R))^(2/3).
@@ -62,16 +64,15 @@ struct Scene {
     }
 
     /// The floor (a half-space on Ground) as a contact surface.
-    ContactSurface makeFloor(const ContactMaterial& material) {
-        return {matter.updGround(),        "ground",        "floor",
-                ContactShape::halfSpace(), makeFloorPose(), material};
+    ContactSurface makeFloor() {
+        return {matter.updGround(), "ground", "floor", ContactShape::halfSpace(), makeFloorPose()};
     }
 };
 
 /// A surface: `shape` at the origin of `body`.
 inline ContactSurface makeSurface(const SimTK::MobilizedBody& body, const std::string& name,
-                                  const ContactShape& shape, const ContactMaterial& material) {
-    return {body, name, name + "_shape", shape, SimTK::Transform(), material};
+                                  const ContactShape& shape) {
+    return {body, name, name + "_shape", shape, SimTK::Transform()};
 }
 
 }  // namespace graspsim::contact::test

@@ -73,9 +73,10 @@ model::ModelDescription makeHandWithBall() {
 
 TEST(HandObjectPairs, EveryHandGeometryAgainstEveryObjectGeometry) {
     const system::MultibodyModel model(makeHandWithBall());
+    ContactParameters parameters;
+    parameters.effectiveStiffness = 0.66e6;
     const std::vector<ContactPair> pairs =
-        makeHandObjectPairs(model, isHandSegmentBody, "ball", ContactMaterial::fingerPad(),
-                            ContactMaterial::rigidPlastic());
+        makeHandObjectPairs(model, isHandSegmentBody, "ball", parameters);
     ASSERT_EQ(pairs.size(), 3u);  // two palm boxes and the finger capsule; not the forearm
     EXPECT_EQ(pairs[0].a.shapeName, "palm_proximal_box");
     EXPECT_EQ(pairs[1].a.shapeName, "palm_distal_box");
@@ -87,26 +88,22 @@ TEST(HandObjectPairs, EveryHandGeometryAgainstEveryObjectGeometry) {
     for (const ContactPair& pair : pairs) {
         EXPECT_EQ(pair.b.bodyName, "ball");
         EXPECT_EQ(pair.b.shape.type, ContactShape::Type::Sphere);
-        EXPECT_EQ(pair.a.material.stiffness, ContactMaterial::fingerPad().stiffness);
-        EXPECT_EQ(pair.b.material.stiffness, ContactMaterial::rigidPlastic().stiffness);
+        EXPECT_EQ(pair.parameters.effectiveStiffness, 0.66e6);
         EXPECT_TRUE(pair.enabledByDefault);
     }
 }
 
 TEST(HandObjectPairs, BadObjectChoicesAreRejected) {
     const system::MultibodyModel model(makeHandWithBall());
-    const ContactMaterial m;
+    const ContactParameters p;
     try {
-        makeHandObjectPairs(model, isHandSegmentBody, "cup", m, m);
+        makeHandObjectPairs(model, isHandSegmentBody, "cup", p);
         FAIL() << "unknown object accepted";
     } catch (const InputError& e) {
         EXPECT_EQ(std::string(e.what()),
                   "hand-object contact: model 'toy_hand' has no object body named 'cup'");
     }
-    EXPECT_THROW(makeHandObjectPairs(model, isHandSegmentBody, "palm", m, m), InputError);
-    ContactMaterial bad;
-    bad.staticFriction = -1;
-    EXPECT_THROW(makeHandObjectPairs(model, isHandSegmentBody, "ball", bad, m), InputError);
+    EXPECT_THROW(makeHandObjectPairs(model, isHandSegmentBody, "palm", p), InputError);
 }
 
 // Every object shape makes a pair with every hand geometry; a mesh's polytope is built once
@@ -129,7 +126,7 @@ TEST(HandObjectPairs, ObjectsOfEveryShapeMakePairsWithTheHand) {
         tetrahedron.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
         geometry.mesh = std::make_shared<model::TriangleMesh>(tetrahedron);
         const system::MultibodyModel model(description);
-        const std::vector<ContactPair> pairs = makeHandObjectPairs(model, isHandSegmentBody, "ball", {}, {});
+        const std::vector<ContactPair> pairs = makeHandObjectPairs(model, isHandSegmentBody, "ball", {});
         ASSERT_EQ(pairs.size(), 3u);  // two palm boxes and the finger capsule
         for (const ContactPair& pair : pairs) {
             EXPECT_EQ(pair.b.shape.type, c.shape);
@@ -145,7 +142,7 @@ TEST(HandObjectPairs, UnloadedMeshGeometryIsRejectedNamingBodyAndGeometry) {
     geometry.meshFile = "phalanx.stl";
     const system::MultibodyModel model(description);
     try {
-        makeHandObjectPairs(model, isHandSegmentBody, "ball", {}, {});
+        makeHandObjectPairs(model, isHandSegmentBody, "ball", {});
         FAIL() << "mesh without triangles accepted";
     } catch (const InputError& e) {
         EXPECT_EQ(std::string(e.what()),
@@ -162,8 +159,7 @@ TEST(HandObjectPairs, AnthropometricHandAgainstAnAddedBall) {
         SimTK::Body::Rigid(
             SimTK::MassProperties(ball.mass, SimTK::Vec3(0), SimTK::UnitInertia::sphere(0.045))));
     const std::vector<ContactPair> pairs =
-        makeHandObjectPairs(arm, isHandSegmentBody, ballMobod, ball, ContactMaterial::fingerPad(),
-                            ContactMaterial::rigidPlastic());
+        makeHandObjectPairs(arm, isHandSegmentBody, ballMobod, ball, ContactParameters{});
     std::size_t handGeometry = 0;
     for (const model::Body& body : arm.getDescription().bodies) {
         if (body.segment == "hand" && !body.isVirtual()) handGeometry += body.geometry.size();

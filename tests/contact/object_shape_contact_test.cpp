@@ -59,10 +59,10 @@ void expectHertzForce(const ContactShape& object, const Vec3& centre_O, double d
     test::Scene scene;
     SimTK::MobilizedBody::Free tipBody = scene.addFree(0.01, kTip);
     SimTK::MobilizedBody::Free objectBody = scene.addFree(0.2, 0.03);
-    const ContactMaterial material = test::makeMaterial(kEStar, 0.5);
+    const ContactParameters parameters = test::makeParameters(kEStar, 0.5);
     CompliantContactForce force(scene.forces,
-                                {{test::makeSurface(tipBody, "tip", ContactShape::sphere(kTip), material),
-                                  test::makeSurface(objectBody, "object", object, material)}});
+                                {{test::makeSurface(tipBody, "tip", ContactShape::sphere(kTip)),
+                                  test::makeSurface(objectBody, "object", object), parameters}});
     SimTK::State state = scene.system.realizeTopology();
     objectBody.setQToFitTransform(state, X_GO);
     tipBody.setQToFitTranslation(state, X_GO * centre_O);
@@ -400,10 +400,10 @@ void expectSettlesAtStaticHertzDepth(const ContactShape& object, const Transform
     test::Scene scene;
     SimTK::Force::Gravity gravity(scene.forces, scene.matter, Vec3(0, -kG, 0));
     SimTK::MobilizedBody::Slider tip = scene.addSlider(SimTK::YAxis, kMass, kTip);
-    const ContactMaterial material = test::makeMaterial(kEStar, 20);
+    const ContactParameters parameters = test::makeParameters(kEStar, 20);
     CompliantContactForce force(
-        scene.forces, {{test::makeSurface(tip, "tip", ContactShape::sphere(kTip), material),
-                        {scene.matter.updGround(), "ground", "object", object, X_GS, material}}});
+        scene.forces, {{test::makeSurface(tip, "tip", ContactShape::sphere(kTip)),
+                        {scene.matter.updGround(), "ground", "object", object, X_GS}, parameters}});
     SimTK::State state = scene.system.realizeTopology();
     tip.setOneQ(state, 0, top + kTip);  // touching, at rest
     SimTK::RungeKuttaMersonIntegrator integrator(scene.system);
@@ -440,11 +440,11 @@ void expectObjectSettlesOnThePalm(const ContactShape& object, const SimTK::Rotat
     test::Scene scene;
     SimTK::Force::Gravity gravity(scene.forces, scene.matter, Vec3(0, -kG, 0));
     SimTK::MobilizedBody::Slider body = scene.addSlider(SimTK::YAxis, kMass, 0.03);
-    const ContactMaterial material = test::makeMaterial(kEStar, 20);
+    const ContactParameters parameters = test::makeParameters(kEStar, 20);
     const ContactShape palm = ContactShape::box(Vec3(0.04, 0.01, 0.05));  // thin along y
     CompliantContactForce force(
-        scene.forces, {{{scene.matter.updGround(), "ground", "palm", palm, Transform(Vec3(0, -0.01, 0)), material},
-                        {body, "object", "object", object, Transform(R_GO, Vec3(0)), material}}});
+        scene.forces, {{{scene.matter.updGround(), "ground", "palm", palm, Transform(Vec3(0, -0.01, 0))},
+                        {body, "object", "object", object, Transform(R_GO, Vec3(0))}, parameters}});
     SimTK::State state = scene.system.realizeTopology();
     body.setOneQ(state, 0, bottom);  // touching, at rest
     SimTK::RungeKuttaMersonIntegrator integrator(scene.system);

@@ -38,12 +38,11 @@ struct BoxOnTable {
             matter.updGround(),
             SimTK::Body::Rigid(SimTK::MassProperties(kMass, Vec3(0), SimTK::UnitInertia::brick(kHalf))));
         SimTK::Force::ConstantForce(forces, box, Vec3(0), Vec3(pull, 0, 0));
-        ContactMaterial material;
-        material.staticFriction = material.dynamicFriction = kMu;
         ContactPair pair;
         pair.a = {matter.updGround(), "ground", "table", ContactShape::box(kTableHalf),
-                  Transform(Vec3(0, -kTableHalf[1], 0)), material};
-        pair.b = {box, "box", "box", ContactShape::box(kHalf), Transform(), material};
+                  Transform(Vec3(0, -kTableHalf[1], 0))};
+        pair.b = {box, "box", "box", ContactShape::box(kHalf), Transform()};
+        pair.parameters.staticFriction = pair.parameters.dynamicFriction = kMu;
         contacts = RigidContactSet(matter, {pair});
         system.realizeTopology();
     }
@@ -114,11 +113,10 @@ TEST(RigidContactSet, PalmAgainstObjectSolidsBecomesCornerPairs) {
     SimTK::MultibodySystem system;
     SimTK::SimbodyMatterSubsystem matter(system);
     ContactPair pair;
-    pair.a = {matter.updGround(), "hand", "palm", ContactShape::box(Vec3(0.04, 0.05, 0.01)),
-              Transform(), ContactMaterial{}};
+    pair.a = {matter.updGround(), "hand", "palm", ContactShape::box(Vec3(0.04, 0.05, 0.01)), Transform()};
     for (const ContactShape& object :
          {ContactShape::cylinder(0.03, 0.1), ContactShape::ellipsoid(Vec3(0.04, 0.03, 0.02))}) {
-        pair.b = {matter.updGround(), "object", "object", object, Transform(), ContactMaterial{}};
+        pair.b = {matter.updGround(), "object", "object", object, Transform()};
         const std::vector<ContactPair> corners = makeRigidContactPairs(pair);
         ASSERT_EQ(corners.size(), 8u);
         for (const ContactPair& c : corners) {

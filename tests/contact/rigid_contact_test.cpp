@@ -93,17 +93,15 @@ struct SqueezeScene {
         SimTK::Force::MobilityConstantForce(forces, right, 0, -kPress);
         SimTK::Force::ConstantForce(forces, box, Vec3(0), Vec3(0, pull, 0));
 
-        RigidContactParameters parameters;
+        ContactParameters parameters;
         parameters.staticFriction = kMu;
         parameters.dynamicFriction = kMu;
-        const ContactSurface boxSurface{box, "box", "box", ContactShape::box(h), Transform(), {}};
-        const ContactSurface leftSurface{left,        "left", "ball", ContactShape::sphere(kRadius),
-                                         Transform(), {}};
-        const ContactSurface rightSurface{
-            right, "right", "ball", ContactShape::sphere(kRadius), Transform(), {}};
+        const ContactSurface boxSurface{box, "box", "box", ContactShape::box(h), Transform()};
+        const ContactSurface leftSurface{left, "left", "ball", ContactShape::sphere(kRadius), Transform()};
+        const ContactSurface rightSurface{right, "right", "ball", ContactShape::sphere(kRadius), Transform()};
         // The sphere is A in one pair and B in the other, so both orders are exercised.
-        leftContact = RigidContact::add(matter, ContactPair{leftSurface, boxSurface}, parameters);
-        rightContact = RigidContact::add(matter, ContactPair{boxSurface, rightSurface}, parameters);
+        leftContact = RigidContact::add(matter, ContactPair{leftSurface, boxSurface, parameters});
+        rightContact = RigidContact::add(matter, ContactPair{boxSurface, rightSurface, parameters});
         system.realizeTopology();
     }
 
@@ -218,17 +216,12 @@ TEST(RigidContactDrop, SphereFallsOntoFloorAndComesToRest) {
     SimTK::MobilizedBody::Free ball(
         matter.updGround(),
         SimTK::Body::Rigid(SimTK::MassProperties(0.1, Vec3(0), SimTK::UnitInertia::sphere(r))));
-    const ContactSurface ballSurface{ball,        "ball", "ball", ContactShape::sphere(r),
-                                     Transform(), {}};
-    const ContactSurface floor{matter.updGround(),
-                               "ground",
-                               "floor",
-                               ContactShape::halfSpace(),
-                               Transform(SimTK::Rotation(-SimTK::Pi / 2, SimTK::XAxis), Vec3(0)),
-                               {}};
-    RigidContactParameters parameters;
+    const ContactSurface ballSurface{ball, "ball", "ball", ContactShape::sphere(r), Transform()};
+    const ContactSurface floor{matter.updGround(), "ground", "floor", ContactShape::halfSpace(),
+                               Transform(SimTK::Rotation(-SimTK::Pi / 2, SimTK::XAxis), Vec3(0))};
+    ContactParameters parameters;
     parameters.staticFriction = parameters.dynamicFriction = 0.5;
-    const auto ix = RigidContact::add(matter, ContactPair{ballSurface, floor}, parameters);
+    const auto ix = RigidContact::add(matter, ContactPair{ballSurface, floor, parameters});
     system.realizeTopology();
     SimTK::State state = system.getDefaultState();
     ball.setQToFitTranslation(state, Vec3(0, r + drop, 0));
@@ -273,14 +266,17 @@ TEST(RigidContact, RejectsTwoSolidsAndBadParameters) {
     SimTK::MobilizedBody::Free a(matter.updGround(), body);
     SimTK::MobilizedBody::Free b(matter.updGround(), body);
     const ContactShape box = ContactShape::box(Vec3(0.02, 0.05, 0.03));
-    const ContactSurface boxA{a, "a", "box", box, Transform(), {}};
-    const ContactSurface boxB{b, "b", "box", box, Transform(), {}};
-    const ContactSurface ballB{b, "b", "ball", ContactShape::sphere(0.01), Transform(), {}};
-    EXPECT_THROW(RigidContact(matter, boxA, boxB, {}), InputError);
-    RigidContactParameters bad;
-    bad.staticFriction = 0.2;
-    bad.dynamicFriction = 0.3;
-    EXPECT_THROW(RigidContact(matter, boxA, ballB, bad), InputError);
+    const ContactSurface boxA{a, "a", "box", box, Transform()};
+    const ContactSurface boxB{b, "b", "box", box, Transform()};
+    const ContactSurface ballB{b, "b", "ball", ContactShape::sphere(0.01), Transform()};
+    EXPECT_THROW(RigidContact(matter, ContactPair{boxA, boxB}), InputError);
+    ContactPair bad{boxA, ballB};
+    bad.parameters.staticFriction = 0.2;
+    bad.parameters.dynamicFriction = 0.3;
+    EXPECT_THROW(RigidContact(matter, bad), InputError);
+    RigidContactOptions badOptions;
+    badOptions.minRestitution = 1.5;
+    EXPECT_THROW(RigidContact(matter, ContactPair{boxA, ballB}, badOptions), InputError);
 }
 
 }  // namespace

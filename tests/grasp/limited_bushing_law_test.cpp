@@ -104,5 +104,21 @@ TEST(LimitedBushingLaw, StiffnessForBoundKeepsTheWorstDisplacementWithinTheBound
     EXPECT_EQ(calcStiffnessForBound(stiff, loads, arm, bound), stiff);
 }
 
+// Critical damping: the axis's characteristic polynomial J s^2 + D s + K (J = I_k on rotations,
+// m on translations) has a double root, D^2 = 4 K J; with K = J w^2 that is D = 2 J w.
+TEST(LimitedBushingLaw, CriticalDampingGivesADoubleRootOnEveryAxis) {
+    const SimTK::Vec3 I(2e-5, 3e-5, 5e-5);
+    const double m = 0.15, w = 200;
+    const SimTK::Vec6 K(I[0] * w * w, I[1] * w * w, I[2] * w * w, m * w * w, m * w * w, 7.5);
+    const SimTK::Vec6 D = calcCriticalDamping(K, I, m);
+    for (int k = 0; k < 6; ++k) {
+        const double J = k < 3 ? I[k] : m;
+        EXPECT_NEAR(D[k] * D[k], 4 * K[k] * J, 1e-14 * D[k] * D[k]) << k;
+    }
+    EXPECT_NEAR(D[1], 2 * I[1] * w, 1e-15 * D[1]);
+    EXPECT_NEAR(D[3], 2 * m * w, 1e-15 * D[3]);
+    EXPECT_NEAR(D[5], 2 * std::sqrt(7.5 * m), 1e-15 * D[5]);
+}
+
 }  // namespace
 }  // namespace graspsim::grasp

@@ -250,7 +250,7 @@ TEST_P(BuiltinScenario, EmbeddedCopyIsTheFileInModels) {
     EXPECT_EQ(file.object.position, scenario.object.position);
     EXPECT_EQ(file.object.orientation, scenario.object.orientation);
     EXPECT_EQ(file.perturbations.size(), scenario.perturbations.size());
-    EXPECT_EQ(file.contact.stiffness, scenario.contact.stiffness);
+    EXPECT_EQ(file.contact.effectiveStiffness, scenario.contact.effectiveStiffness);
     EXPECT_EQ(file.controller.kp, scenario.controller.kp);
     EXPECT_EQ(file.simulation.duration, scenario.simulation.duration);
 }

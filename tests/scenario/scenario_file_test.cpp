@@ -160,7 +160,7 @@ TEST_F(ScenarioFileEveryField, PoseInRadiansGoalsAndPerturbationsInFileOrder) {
 }
 
 TEST_F(ScenarioFileEveryField, ContactControllerAndSimulation) {
-    EXPECT_DOUBLE_EQ(s.contact.stiffness, 2.0e6);
+    EXPECT_DOUBLE_EQ(s.contact.effectiveStiffness, 2.0e6);
     EXPECT_DOUBLE_EQ(s.contact.dissipation, 0.3);
     EXPECT_DOUBLE_EQ(s.contact.staticFriction, 1.1);
     EXPECT_DOUBLE_EQ(s.contact.dynamicFriction, 0.6);

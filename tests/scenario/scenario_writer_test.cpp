@@ -53,16 +53,16 @@ void expectSameScenario(const Scenario& a, const Scenario& b) {
         EXPECT_EQ(a.perturbations[i].start, b.perturbations[i].start);
         EXPECT_EQ(a.perturbations[i].duration, b.perturbations[i].duration);
     }
-    EXPECT_EQ(a.contact.stiffness, b.contact.stiffness);
+    EXPECT_EQ(a.contact.effectiveStiffness, b.contact.effectiveStiffness);
     EXPECT_EQ(a.contact.dissipation, b.contact.dissipation);
     EXPECT_EQ(a.contact.staticFriction, b.contact.staticFriction);
     EXPECT_EQ(a.contact.dynamicFriction, b.contact.dynamicFriction);
     EXPECT_EQ(a.contact.viscousFriction, b.contact.viscousFriction);
     EXPECT_EQ(a.contact.transitionVelocity, b.contact.transitionVelocity);
-    EXPECT_EQ(a.contact.frictionModel, b.contact.frictionModel);
-    EXPECT_EQ(a.contact.anchorStiffnessRatio, b.contact.anchorStiffnessRatio);
-    EXPECT_EQ(a.contact.anchorDampingMass, b.contact.anchorDampingMass);
-    EXPECT_EQ(a.contact.anchorRelaxationTime, b.contact.anchorRelaxationTime);
+    EXPECT_EQ(a.friction.model, b.friction.model);
+    EXPECT_EQ(a.friction.anchor.stiffnessRatio, b.friction.anchor.stiffnessRatio);
+    EXPECT_EQ(a.friction.anchor.dampingMass, b.friction.anchor.dampingMass);
+    EXPECT_EQ(a.friction.anchor.relaxationTime, b.friction.anchor.relaxationTime);
     EXPECT_EQ(a.controller.approachTime, b.controller.approachTime);
     EXPECT_EQ(a.controller.pressDepth, b.controller.pressDepth);
     EXPECT_EQ(a.controller.kp, b.controller.kp);
@@ -108,8 +108,8 @@ TEST(ScenarioWriter, DefaultsAndEditedFieldsAreWrittenOut) {
 TEST(ScenarioWriter, AnchorFrictionIsWrittenOnlyWhenChosen) {
     Scenario s = findBuiltinScenario("ball-clutch");
     EXPECT_EQ(formatScenarioYaml(s).find("friction_model"), std::string::npos);
-    s.contact.frictionModel = "anchor";
-    s.contact.anchorDampingMass = 0.05;
+    s.friction.model = contact::FrictionModel::Anchor;
+    s.friction.anchor.dampingMass = 0.05;
     const std::string text = formatScenarioYaml(s);
     EXPECT_NE(text.find("friction_model: anchor"), std::string::npos);
     expectSameScenario(s, parseScenario(text, "written.yaml"));

@@ -32,7 +32,7 @@ SimTK::Vec3 sumContactForceOnObject(const simulation::ContactSample& sample) {
 
 TEST_P(AnchorHold, HeldObjectDriftsLessThanFiftyMicrometresPerSecond) {
     scenario::Scenario s = scenario::findBuiltinScenario(GetParam().scenario);
-    s.contact.frictionModel = "anchor";
+    s.friction.model = contact::FrictionModel::Anchor;
     s.simulation.settleTime = GetParam().settleTime;
     simulation::SimulationOptions options;
     options.duration = s.simulation.settleTime + 1.0;

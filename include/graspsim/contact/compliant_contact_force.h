@@ -12,7 +12,7 @@
 /// V_GB the bodies' spatial velocities:
 ///  - relative velocity of b's material point at P w.r.t. a's: v = v_GB(P) - v_GA(P);
 ///  - penetration rate xdot = -v . n; slip velocity v_t = v - (v . n) n;
-///  - normal force f_n from contact_force_law.h with the pair's combined materials, and friction
+///  - normal force f_n from contact_force_law.h with the pair's ContactParameters, and friction
 ///    f_t from the chosen law: the regularized one of contact_force_law.h (default, stateless)
 ///    or the elastic anchor of anchor_friction.h (true stiction, one anchor per pair held in the
 ///    State as 4 Z variables); body b receives F = f_n n + f_t at P, body a receives -F at P.
@@ -80,8 +80,9 @@ public:
     /// An empty handle.
     CompliantContactForce() = default;
 
-    /// Adds the element to `forces`. Each pair's materials are validated and combined here.
-    /// @throws graspsim::InputError naming the pair for an invalid material or a pair of two
+    /// Adds the element to `forces`. Each pair's parameters are validated here
+    /// (ContactParameters::validate()).
+    /// @throws graspsim::InputError naming the pair for invalid parameters or a pair of two
     ///         half-spaces.
     CompliantContactForce(SimTK::GeneralForceSubsystem& forces, std::vector<ContactPair> pairs);
 

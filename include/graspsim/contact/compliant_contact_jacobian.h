@@ -41,7 +41,7 @@ private:
 
     const SimTK::SimbodyMatterSubsystem& matter_;
     CompliantContactForce contacts_;
-    std::vector<ContactParameters> parameters_;  // per pair, combined once
+    std::vector<ContactParameters> parameters_;  // per pair, copied once
     bool withStiffness_;
     bool withFriction_;
 };

@@ -23,34 +23,13 @@
 /// sticking limit mu_s f_n makes the contact creep at a speed v < v_tr with mu(v) f_n = F
 /// (v = v_tr F / (mu_d f_n) exactly when mu_s = mu_d and mu_v = 0).
 ///
-/// Combination of the two surfaces' ContactMaterial (Simbody's rules), with k_i the plane-strain
-/// moduli and s = k_2^(2/3) / (k_1^(2/3) + k_2^(2/3)):
-///
-///     E* = (k_1^(2/3) k_2^(2/3) / (k_1^(2/3) + k_2^(2/3)))^(3/2)
-///     c  = s c_1 + (1 - s) c_2
-///     mu = 2 mu_1 mu_2 / (mu_1 + mu_2)  for each of mu_s, mu_d, mu_v (0 when both are 0)
-///     v_tr = min(v_tr1, v_tr2)         (Simbody has one per force element; we take the
-///                                       stricter of the two surfaces)
+/// The parameters (E*, c, mu_s, mu_d, mu_v, v_tr) are those of the pair (contact_parameters.h).
 
 #include "graspsim/simbody.h"
 
-#include "graspsim/contact/contact_material.h"
+#include "graspsim/contact/contact_parameters.h"
 
 namespace graspsim::contact {
-
-/// The combined parameters of one contact between two materials (see the file comment).
-struct ContactParameters {
-    double effectiveStiffness = 0;  ///< E* (Pa)
-    double dissipation = 0;         ///< c (s/m)
-    double staticFriction = 0;      ///< mu_s
-    double dynamicFriction = 0;     ///< mu_d
-    double viscousFriction = 0;     ///< mu_v (s/m)
-    double transitionVelocity = 0;  ///< v_tr (m/s)
-};
-
-/// Combines two surfaces' materials by Simbody's rules. The materials are not validated here
-/// (see ContactMaterial::validate()).
-ContactParameters combineMaterials(const ContactMaterial& a, const ContactMaterial& b);
 
 /// Hertz elastic force f_H (N) at depth x >= 0 (m) and effective radius R (m).
 double calcHertzForce(const ContactParameters& parameters, double radius, double depth);

@@ -1,14 +1,14 @@
 #pragma once
 /// @file
-/// What may touch what: a contact surface is a shape fixed on a mobilized body, with its
-/// material; a contact pair is two surfaces that CompliantContactForce checks against each
-/// other.
+/// What may touch what: a contact surface is a shape fixed on a mobilized body; a contact pair
+/// is two surfaces that CompliantContactForce (or RigidContactSet) checks against each other,
+/// with the pair's contact parameters.
 
 #include "graspsim/simbody.h"
 
 #include <string>
 
-#include "graspsim/contact/contact_material.h"
+#include "graspsim/contact/contact_parameters.h"
 #include "graspsim/contact/contact_shape.h"
 #include "graspsim/model/model_description.h"
 
@@ -21,20 +21,21 @@ struct ContactSurface {
     std::string shapeName;      ///< for reports and messages (e.g. the model geometry's name)
     ContactShape shape;
     SimTK::Transform X_BS;  ///< pose of the shape frame S in the body frame B (m)
-    ContactMaterial material;
 
     /// The surface of a model geometry on `body`: shape and pose X_BS = geometry.X_BG.
     /// @throws graspsim::InputError for a Mesh without loaded triangles or not closed and
     ///         convex, a bad size or a bad rotation.
     static ContactSurface fromGeometry(const SimTK::MobilizedBody& body,
-                                       const std::string& bodyName, const model::Geometry& geometry,
-                                       const ContactMaterial& material);
+                                       const std::string& bodyName, const model::Geometry& geometry);
 };
 
 /// Two surfaces that may touch. Normals, reports and friction are oriented from a to b.
 struct ContactPair {
     ContactSurface a;
     ContactSurface b;
+    /// The pair's stiffness, dissipation and friction (validated by the contact element that
+    /// takes the pair).
+    ContactParameters parameters;
     /// Whether the pair is active in the default state (see
     /// CompliantContactForce::setPairEnabled()).
     bool enabledByDefault = true;

@@ -1,7 +1,7 @@
 #pragma once
 /// @file
 /// Builds the contact pairs of a grasp: every geometry of the hand's bodies against every
-/// geometry of the grasped object.
+/// geometry of the grasped object, each pair with the same contact parameters.
 
 #include "graspsim/simbody.h"
 
@@ -9,7 +9,6 @@
 #include <string>
 #include <vector>
 
-#include "graspsim/contact/contact_material.h"
 #include "graspsim/contact/contact_pair.h"
 #include "graspsim/model/model_description.h"
 #include "graspsim/system/multibody_model.h"
@@ -28,12 +27,12 @@ bool isHandSegmentBody(const model::Body& body);
 /// geometry) against every geometry of `objectBody`, another body of the same model. Pair order:
 /// description body order, then geometry order, then object geometry order.
 /// @throws graspsim::InputError if objectBody does not exist, is chosen by the filter, or has no
-///         geometry; if a geometry is a cylinder or mesh; or if a material is invalid.
+///         geometry; or if a geometry's shape is invalid (ContactSurface::fromGeometry()). The
+///         parameters are validated by the contact element that takes the pairs.
 std::vector<ContactPair> makeHandObjectPairs(const system::MultibodyModel& hand,
                                              const BodyFilter& isHandBody,
                                              const std::string& objectBody,
-                                             const ContactMaterial& handMaterial,
-                                             const ContactMaterial& objectMaterial);
+                                             const ContactParameters& parameters);
 
 /// As above for an object that is not part of `hand`'s description (for example a body the
 /// simulation added with hand.updMatter()): `object` describes its geometry (in its body frame)
@@ -42,7 +41,6 @@ std::vector<ContactPair> makeHandObjectPairs(const system::MultibodyModel& hand,
                                              const BodyFilter& isHandBody,
                                              const SimTK::MobilizedBody& objectMobod,
                                              const model::Body& object,
-                                             const ContactMaterial& handMaterial,
-                                             const ContactMaterial& objectMaterial);
+                                             const ContactParameters& parameters);
 
 }  // namespace graspsim::contact

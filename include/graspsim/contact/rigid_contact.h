@@ -45,24 +45,18 @@
 
 namespace graspsim::contact {
 
-/// Impact and friction parameters of one rigid contact.
-struct RigidContactParameters {
+/// Rigid contact's own settings; the pair's friction comes from its ContactParameters
+/// (staticFriction, dynamicFriction, viscousFriction; the stiffness, dissipation and transition
+/// velocity of the compliant law have no rigid counterpart).
+struct RigidContactOptions {
     /// Coefficient of restitution at high impact speed (0..1); lower impact speeds get more,
     /// down to the capture speed (SimTK::ConditionalConstraint::calcEffectiveCOR()).
     double minRestitution = 0;
-    double staticFriction = 0;   ///< Coulomb coefficient when sticking (dimensionless)
-    double dynamicFriction = 0;  ///< Coulomb coefficient when sliding (dimensionless), <= static
-    double viscousFriction = 0;  ///< adds viscousFriction * slip speed (m/s) to mu (s/m)
     /// First margin (m) used to find the gap of separated shapes (rigid_contact_geometry.h).
     /// Any positive value gives the same results; it only affects the cost of the query.
     double searchMargin = 0.01;
 
-    /// Friction coefficients of a pair's materials, combined by combineMaterials()
-    /// (contact_force_law.h); restitution 0.
-    static RigidContactParameters fromMaterials(const ContactMaterial& a, const ContactMaterial& b);
-
-    /// Checks: minRestitution in [0, 1]; frictions finite and >= 0; dynamic <= static;
-    /// searchMargin finite and > 0.
+    /// Checks: minRestitution in [0, 1]; searchMargin finite and > 0.
     /// @throws graspsim::InputError "<source>: <field> (<value>) must be <accepted>".
     void validate(const std::string& source) const;
 };
@@ -72,17 +66,18 @@ struct RigidContactParameters {
 /// subsystem (SimbodyMatterSubsystem::adoptUnilateralContact()).
 class RigidContact : public SimTK::UnilateralContact {
 public:
-    /// Builds the contact and its (disabled by default) constraint in `matter`.
+    /// Builds the contact of `pair` (A = pair.a, B = pair.b, friction from pair.parameters) and
+    /// its (disabled by default) constraint in `matter`.
     /// @throws graspsim::InputError for an unsupported pair (two solids), both shapes on one
-    ///         body, or bad parameters.
-    RigidContact(SimTK::SimbodyMatterSubsystem& matter, const ContactSurface& a,
-                 const ContactSurface& b, const RigidContactParameters& parameters);
+    ///         body, or bad parameters (ContactParameters::validate()) or options.
+    RigidContact(SimTK::SimbodyMatterSubsystem& matter, const ContactPair& pair,
+                 const RigidContactOptions& options = {});
 
-    /// Creates a RigidContact for `pair` (a and b in the pair's order) and adopts it into
-    /// `matter`, whose topology must not be realized yet. Returns its index.
+    /// Creates a RigidContact for `pair` and adopts it into `matter`, whose topology must not be
+    /// realized yet. Returns its index.
     static SimTK::UnilateralContactIndex add(SimTK::SimbodyMatterSubsystem& matter,
                                              const ContactPair& pair,
-                                             const RigidContactParameters& parameters);
+                                             const RigidContactOptions& options = {});
 
     /// The exact contact geometry in Ground at the pose in `state` (Stage::Position).
     RigidContactGeometry findGeometryInGround(const SimTK::State& state) const;
@@ -122,7 +117,8 @@ private:
                                          RigidContactGeometry& geometry) const;
 
     ContactSurface m_a, m_b;
-    RigidContactParameters m_parameters;
+    ContactParameters m_parameters;
+    RigidContactOptions m_options;
     SimTK::Constraint::Custom m_constraint;
 };
 

@@ -47,6 +47,9 @@ public:
     RigidContactGeometry findGeometry(const SimTK::Transform& X_FA,
                                       const SimTK::Transform& X_FB) const;
 
+    /// Allocates the lazy Position-stage cache entry of findGeometryFromState().
+    void realizeTopology(SimTK::State& state) const override;
+
     void calcPositionErrors(
         const SimTK::State& state,
         const SimTK::Array_<SimTK::Transform, SimTK::ConstrainedBodyIndex>& X_AB,
@@ -82,8 +85,9 @@ public:
         SimTK::Array_<SimTK::Real, SimTK::ConstrainedUIndex>& mobilityForces) const override;
 
 private:
-    /// Geometry at the pose in `state` (Stage::Position), in the ancestor frame.
-    RigidContactGeometry findGeometryFromState(const SimTK::State& state) const;
+    /// Geometry at the pose in `state` (Stage::Position), in the ancestor frame. Computed once per
+    /// pose: the stepper's impulse solver asks for it once per constraint row and call.
+    const RigidContactGeometry& findGeometryFromState(const SimTK::State& state) const;
     /// Relative velocity v_B(P) - v_A(P) of the two material points at P (ancestor frame).
     SimTK::Vec3 findSlipVelocity(
         const SimTK::State& state,
@@ -103,6 +107,7 @@ private:
     ContactShape m_shapeA, m_shapeB;
     SimTK::Transform m_X_BS_A, m_X_BS_B;
     double m_searchMargin;
+    mutable SimTK::CacheEntryIndex m_geometryIndex;  // allocated in realizeTopology()
 };
 
 }  // namespace graspsim::contact

@@ -40,8 +40,8 @@ public:
     RigidContactSet() = default;
 
     /// Adds the rigid contacts of every pair to `matter` (its topology must not be realized
-    /// yet), with parameters from each pair's materials (RigidContactParameters::fromMaterials).
-    /// @throws graspsim::InputError naming the pair for an invalid shape or material.
+    /// yet), with each pair's friction (ContactParameters) and the default RigidContactOptions.
+    /// @throws graspsim::InputError naming the pair for an invalid shape or parameters.
     RigidContactSet(SimTK::SimbodyMatterSubsystem& matter, const std::vector<ContactPair>& pairs);
 
     /// Number of rigid contacts (corner contacts counted one by one).

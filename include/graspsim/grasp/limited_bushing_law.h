@@ -31,6 +31,11 @@ double calcAxisForce(double stiffness, double damping, double limit, double e, d
 /// `minimum` (N m/rad, N/m).
 SimTK::Vec6 calcStiffnessForBound(const SimTK::Vec6& minimum, const SimTK::Vec6& loads, double leverArm, double bound);
 
+/// Critical damping per axis of stiffness K on a rigid body of mass m (kg) and central principal
+/// moments I (kg m^2): D_k = 2 sqrt(K_k I_k) on the rotations 0-2 (N m s/rad) and
+/// D_k = 2 sqrt(K_k m) on the translations 3-5 (N s/m).
+SimTK::Vec6 calcCriticalDamping(const SimTK::Vec6& stiffness, const SimTK::Vec3& centralMoments, double mass);
+
 /// Rotation vector theta = angle * axis of R (angle in [0, pi]), rad.
 SimTK::Vec3 calcRotationVector(const SimTK::Rotation& R);
 

@@ -41,6 +41,9 @@ public:
     /// Every sphere, capsule and box geometry of every body, as contact shapes (other geometry
     /// types are display-only on the arm and skipped).
     const std::vector<SegmentShape>& getSegmentShapes() const { return m_shapes; }
+    /// The axis of joint `joint` in Ground for body poses X_GB (calcBodyPoses): a point on it
+    /// (m) and its unit direction; a revolute joint turns its child about it.
+    void findJointAxis(int joint, const std::vector<SimTK::Transform>& X_GB, SimTK::Vec3& p_GJ, SimTK::Vec3& a_G) const;
 
 private:
     model::ModelDescription m_model;

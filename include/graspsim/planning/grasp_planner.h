@@ -55,6 +55,7 @@ struct GraspRequest {
     GraspType type = GraspType::PowerSphere;
     double targetGap = 0.0015;                  ///< wanted pad-to-surface distance in the plan (m), > 0
     double pressDepth = 0.002;                  ///< the controller's press depth (m): goals are reached this far inside
+    double mass = 0.2;                          ///< the object's mass (kg): what the fingers carry once it is released
     SimTK::Vec3 gravity{0, -9.81, 0};           ///< gravity in G (m/s^2): the pads should not push along it
 };
 
@@ -65,6 +66,14 @@ struct GoalCheck {
     double misalignment = 0;  ///< angle between the pad's outward normal and the inward surface normal (rad)
     double reachShortfall = 0;///< the controller's IK from the plan ends this far from the goal pressed pressDepth in (m), goal_reach.h
     double commandedPress = 0;///< how deep inside the surface that IK solution puts the pad (m): what makes the finger press
+    /// How deep the finger's end segment reaches into the object where the controller (the plan's
+    /// kp) and the joints' passive springs balance, the object out of the way (m, 0 if it stays
+    /// outside; goal_reach.h): what the finger actually presses. The pad point alone understates an
+    /// oblique pad, whose segment touches beside it first.
+    double steadyPress = 0;
+    /// What the finger still presses once the object is released and has settled, as the planner
+    /// predicts it (m, 0: it lets go; release_press.h).
+    double releasedPress = 0;
 };
 
 /// How good the plan is: the numbers its checks look at.
@@ -88,6 +97,10 @@ struct GraspPlan {
     std::vector<std::string> goalEffectors;      ///< thumb first, then index to little
     std::map<std::string, SimTK::Vec3> goals;    ///< goal point on the surface per effector, in O (m)
     double kp = 5;                               ///< suggested finger PD gain (N m/rad)
+    /// The controller's press depth the plan is made for (m): the request's, or deeper when the
+    /// passive springs and the release would leave a goal finger less than half of it; 0: the
+    /// request's (a plan not made by planGrasp).
+    double pressDepth = 0;
     /// End-effectors the plan adds to the body model (lateral: the index's radial side), which
     /// `goals` may name; empty for fingertip-pad grasps.
     std::vector<model::SegmentPoint> segmentPoints;

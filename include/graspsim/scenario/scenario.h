@@ -11,6 +11,8 @@
 /// right, origin at the right shoulder joint centre. The object frame O sits at the object's
 /// centre of mass with its axes along the object's symmetry axes (model/object_model.h).
 
+#include "graspsim/contact/contact_parameters.h"
+#include "graspsim/contact/friction_settings.h"
 #include "graspsim/model/build_options.h"
 #include "graspsim/model/model_description.h"
 
@@ -103,38 +105,6 @@ struct Perturbation {
     bool isActiveAt(double t) const { return t >= start && t < start + duration; }
 };
 
-/// Compliant contact between skin and the object: Hunt-Crossley normal force with static,
-/// dynamic and viscous friction, as Simbody's CompliantContactSubsystem computes it. The
-/// defaults are for a finger pad on smooth plastic; models/scenarios/ball-clutch.yaml gives
-/// their sources (friction within the range reviewed by Derler & Gerhardt 2012; the rest are
-/// assumptions).
-struct ContactSpec {
-    /// Plane-strain modulus E/(1 - nu^2) of the skin-object pair (Pa), > 0; default 5e5, a soft pad.
-    double stiffness = 5e5;
-    /// Hunt-Crossley dissipation coefficient (s/m), >= 0; default 0.8.
-    double dissipation = 0.8;
-    /// Static friction coefficient, >= dynamicFriction; default 0.9.
-    double staticFriction = 0.9;
-    /// Dynamic (sliding) friction coefficient, >= 0; default 0.7.
-    double dynamicFriction = 0.7;
-    /// Viscous friction coefficient (s/m), >= 0; default 0.
-    double viscousFriction = 0.0;
-    /// Slip speed at which friction passes from static to dynamic (m/s), > 0; default 1e-3.
-    double transitionVelocity = 1e-3;
-    /// Friction law: "regularized" (default: friction a function of slip speed, creeps under any
-    /// load) or "anchor" (an elastic anchor per contact pair, true stiction; contact layer,
-    /// anchor_friction.h). transitionVelocity applies to the regularized law only.
-    std::string frictionModel = "regularized";
-    /// Anchor law: tangential over normal contact stiffness (dimensionless), > 0; default 2/3
-    /// (Mindlin, skin's Poisson ratio 0.5).
-    double anchorStiffnessRatio = 2.0 / 3.0;
-    /// Anchor law: mass on which the anchor spring is critically damped (kg), > 0; default 0.02,
-    /// one finger segment.
-    double anchorDampingMass = 0.02;
-    /// Anchor law: time in which a sliding or unloaded anchor catches up (s), > 0; default 1e-3.
-    double anchorRelaxationTime = 1e-3;
-};
-
 /// The grasp controller. At t = 0 the hand is placed in the grasp pose kinematically (the thesis's
 /// "forward kinematics once"); inverse kinematics then drives each fingertip toward its goal moved
 /// pressDepth inside the surface, and a joint PD controller tracks the resulting angles. The
@@ -215,7 +185,14 @@ struct Scenario {
     std::string graspType;
     std::vector<Perturbation> perturbations;
     ApproximationSpec approximation;  ///< in file order; may be empty
-    ContactSpec contact;
+    /// Section `contact:`, the parameters of every hand-object contact pair (the defaults are
+    /// ContactParameters's: a finger pad on smooth plastic, sources in
+    /// models/scenarios/ball-clutch.yaml).
+    graspsim::contact::ContactParameters contact;
+    /// Section `contact:` as well: the compliant contact's friction law (friction_model) and the
+    /// anchor law's parameters (anchor_stiffness_ratio, anchor_damping_mass,
+    /// anchor_relaxation_time).
+    graspsim::contact::FrictionSettings friction;
     ControllerSpec controller;
     SimulationSpec simulation;
 

@@ -72,6 +72,10 @@ public:
     GraspScene& operator=(const GraspScene&) = delete;
 
     const scenario::Scenario& getScenario() const { return scenario_; }
+    /// The parameters of every finger-object contact pair, as the contact elements were given
+    /// them (the scenario's `contact:` section). The approximation takes its friction limits, its
+    /// sticking speed and the grasp quality's mu from here.
+    const contact::ContactParameters& getContactParameters() const { return scenario_.contact; }
     const system::MultibodyModel& getModel() const { return model_; }
     const SimTK::MultibodySystem& getSystem() const { return model_.getSystem(); }
     /// The object's body; its frame O is at its centre of mass.

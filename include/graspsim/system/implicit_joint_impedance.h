@@ -74,7 +74,9 @@ public:
     /// Stores the generalized constraint forces -G^T lambda of the step just taken, for the next
     /// step's F (see the file comment). Call it after each SemiExplicitEulerTimeStepper::stepTo()
     /// on the stepper's state, which then holds the step's multipliers lambda (N, N m) at
-    /// Stage::Dynamics. Invalidates Stage::Dynamics.
+    /// Stage::Dynamics. Invalidates Stage::Dynamics. The forces belong to the step that starts at
+    /// the state's time: once this has been called, the element applies nothing in a state at any
+    /// other time (such as the stepper's own end-of-step realization, which this call discards).
     void updateConstraintForces(SimTK::State& state) const;
 
     /// The correction X (generalized forces, N m or N; one entry per mobility) at `state`

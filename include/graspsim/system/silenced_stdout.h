@@ -7,9 +7,12 @@
 /// contacts). graspsim writes its results to files and its progress to stderr, so the rigid
 /// stepping runs with fd 1 pointed at /dev/null. This is the one place that does it.
 
+#include <ios>
+
 namespace graspsim::system {
 
-/// Points fd 1 at /dev/null while alive (after flushing stdout and std::cout), and restores it.
+/// Points fd 1 at /dev/null and puts std::cout in a failed state while alive (after flushing
+/// stdout and std::cout), and restores both.
 /// Not thread-safe: fd 1 is shared by the whole process. Nesting is allowed.
 class SilencedStdout {
 public:
@@ -21,6 +24,7 @@ public:
 
 private:
     int saved_ = -1;  // duplicate of the original fd 1
+    std::ios::iostate savedState_ = std::ios::goodbit;  // std::cout's state before
 };
 
 }  // namespace graspsim::system

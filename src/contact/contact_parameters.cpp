@@ -1,4 +1,4 @@
-#include "graspsim/contact/contact_material.h"
+#include "graspsim/contact/contact_parameters.h"
 
 #include <cmath>
 #include <sstream>
@@ -32,8 +32,8 @@ void checkPositive(const std::string& source, const std::string& field, double v
 
 }  // namespace
 
-void ContactMaterial::validate(const std::string& source) const {
-    checkPositive(source, "stiffness", stiffness, " (Pa)");
+void ContactParameters::validate(const std::string& source) const {
+    checkPositive(source, "effectiveStiffness", effectiveStiffness, " (Pa)");
     checkNonNegative(source, "dissipation", dissipation, " (s/m)");
     checkNonNegative(source, "staticFriction", staticFriction, "");
     checkNonNegative(source, "dynamicFriction", dynamicFriction, "");
@@ -46,28 +46,6 @@ void ContactMaterial::validate(const std::string& source) const {
                 << "); it must be <= staticFriction";
         throw InputError(message.str());
     }
-}
-
-ContactMaterial ContactMaterial::fingerPad() {
-    ContactMaterial skin;
-    skin.stiffness = 0.5e6 / (1 - 0.5 * 0.5);
-    skin.dissipation = 1.0;
-    skin.staticFriction = 0.8;
-    skin.dynamicFriction = 0.6;
-    skin.viscousFriction = 0;
-    skin.transitionVelocity = 1e-3;
-    return skin;
-}
-
-ContactMaterial ContactMaterial::rigidPlastic() {
-    ContactMaterial plastic;
-    plastic.stiffness = 2.3e9 / (1 - 0.35 * 0.35);
-    plastic.dissipation = 0.5;
-    plastic.staticFriction = 0.8;
-    plastic.dynamicFriction = 0.6;
-    plastic.viscousFriction = 0;
-    plastic.transitionVelocity = 1e-3;
-    return plastic;
 }
 
 }  // namespace graspsim::contact
