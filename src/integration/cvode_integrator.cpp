@@ -90,19 +90,10 @@ void CvodeIntegrator::stepTo(double time) {
 
 // Handles the scheduled events and reports due now; true if any was.
 bool CvodeIntegrator::handleDueScheduledEvents() {
-    const double t = state_.getTime();
-    const ScheduledTimes due = findScheduledTimes(system_, state_, lastEventTime_ != t, lastReportTime_ != t);
-    if (due.report <= t) {
-        system_.realize(state_, SimTK::Stage::Acceleration);
-        system_.reportEvents(state_, SimTK::Event::Cause::Scheduled, due.reportIds);
-        lastReportTime_ = t;
-        return true;
-    }
-    if (due.event > t) return false;
     SimTK::HandleEventsResults results;
-    system_.handleEvents(state_, SimTK::Event::Cause::Scheduled, due.eventIds,
-                         SimTK::HandleEventsOptions(getConstraintTolerance()), results);
-    lastEventTime_ = t;
+    const DueScheduled done =
+        handleDueScheduled(system_, state_, getConstraintTolerance(), lastEventTime_, lastReportTime_, results);
+    if (done != DueScheduled::Handled) return done == DueScheduled::Reported;
     events_.scheduledEvents = std::max(events_.scheduledEvents, 0L) + 1;
     if (applyHandlerResults(results)) {
         restart();

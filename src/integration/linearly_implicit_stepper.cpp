@@ -90,19 +90,10 @@ void LinearlyImplicitStepper::stepTo(double time) {
 
 // Handles the scheduled events and reports due now; true if any was.
 bool LinearlyImplicitStepper::handleDueScheduledEvents() {
-    const double t = state_.getTime();
-    const ScheduledTimes due = findScheduledTimes(system_, state_, lastEventTime_ != t, lastReportTime_ != t);
-    if (due.report <= t) {
-        system_.realize(state_, SimTK::Stage::Acceleration);
-        system_.reportEvents(state_, SimTK::Event::Cause::Scheduled, due.reportIds);
-        lastReportTime_ = t;
-        return true;
-    }
-    if (due.event > t) return false;
     SimTK::HandleEventsResults results;
-    system_.handleEvents(state_, SimTK::Event::Cause::Scheduled, due.eventIds,
-                         SimTK::HandleEventsOptions(options_.constraintTolerance), results);
-    lastEventTime_ = t;
+    const DueScheduled done =
+        handleDueScheduled(system_, state_, options_.constraintTolerance, lastEventTime_, lastReportTime_, results);
+    if (done != DueScheduled::Handled) return done == DueScheduled::Reported;
     ++scheduledEvents_;
     handleResults(results);
     return true;

@@ -10,4 +10,21 @@ ScheduledTimes findScheduledTimes(const SimTK::System& system, const SimTK::Stat
     return next;
 }
 
+DueScheduled handleDueScheduled(const SimTK::System& system, SimTK::State& state, double constraintTolerance,
+                                double& lastEventTime, double& lastReportTime, SimTK::HandleEventsResults& results) {
+    const double t = state.getTime();
+    const ScheduledTimes due = findScheduledTimes(system, state, lastEventTime != t, lastReportTime != t);
+    if (due.report <= t) {
+        system.realize(state, SimTK::Stage::Acceleration);
+        system.reportEvents(state, SimTK::Event::Cause::Scheduled, due.reportIds);
+        lastReportTime = t;
+        return DueScheduled::Reported;
+    }
+    if (due.event > t) return DueScheduled::Nothing;
+    system.handleEvents(state, SimTK::Event::Cause::Scheduled, due.eventIds,
+                        SimTK::HandleEventsOptions(constraintTolerance), results);
+    lastEventTime = t;
+    return DueScheduled::Handled;
+}
+
 }  // namespace graspsim::integration
