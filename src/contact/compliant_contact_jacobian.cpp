@@ -70,17 +70,28 @@ CompliantContactJacobian::CompliantContactJacobian(const SimTK::SimbodyMatterSub
 
 namespace {
 
-// A += J^T B J for a 3 x nu J and a 3x3 B, on column-major storage (J[r + 3 c], A[r + nu c]):
-// SimTK::Matrix's element access costs more than the arithmetic here.
-void addProjected(const double* J, int nu, const SimTK::Mat33& B, double* A) {
-    thread_local std::vector<double> BJ;
-    BJ.resize(3 * static_cast<std::size_t>(nu));
+// The columns of a 3 x nu J (column-major) that are not zero: the mobilities on the two bodies'
+// paths to Ground (one finger chain, the arm and the object of a hand's 60-odd).
+void findNonzeroColumns(const std::vector<double>& J, int nu, std::vector<int>& columns) {
+    columns.clear();
     for (int c = 0; c < nu; ++c)
-        for (int r = 0; r < 3; ++r) BJ[r + 3 * c] = B(r, 0) * J[3 * c] + B(r, 1) * J[1 + 3 * c] + B(r, 2) * J[2 + 3 * c];
-    for (int r = 0; r < nu; ++r) {
+        if (J[3 * c] != 0 || J[1 + 3 * c] != 0 || J[2 + 3 * c] != 0) columns.push_back(c);
+}
+
+// A += J^T B J for a 3 x nu J and a 3x3 B, on column-major storage (J[r + 3 c], A[r + nu c]),
+// over J's nonzero columns only: SimTK::Matrix's element access costs more than the arithmetic.
+void addProjected(const double* J, int nu, const std::vector<int>& columns, const SimTK::Mat33& B, double* A) {
+    thread_local std::vector<double> BJ;
+    BJ.resize(3 * columns.size());
+    for (std::size_t k = 0; k < columns.size(); ++k) {
+        const double* Jc = J + 3 * columns[k];
+        for (int r = 0; r < 3; ++r) BJ[r + 3 * k] = B(r, 0) * Jc[0] + B(r, 1) * Jc[1] + B(r, 2) * Jc[2];
+    }
+    for (int r : columns) {
         const double* Jr = J + 3 * r;
-        if (Jr[0] == 0 && Jr[1] == 0 && Jr[2] == 0) continue;  // mobilities off both bodies' paths
-        for (int c = 0; c < nu; ++c) A[r + nu * c] += Jr[0] * BJ[3 * c] + Jr[1] * BJ[1 + 3 * c] + Jr[2] * BJ[2 + 3 * c];
+        for (std::size_t k = 0; k < columns.size(); ++k) {
+            A[r + nu * columns[k]] += Jr[0] * BJ[3 * k] + Jr[1] * BJ[1 + 3 * k] + Jr[2] * BJ[2 + 3 * k];
+        }
     }
 }
 
@@ -108,16 +119,31 @@ void CompliantContactJacobian::fillRelativeJacobian(const ContactPair& pair, con
     }
 }
 
+// The contact points come from the force element's own evaluation (its cache), not a second
+// geometry pass.
 void CompliantContactJacobian::addForceJacobians(const SimTK::State& state, SimTK::Matrix& D, SimTK::Matrix& K) const {
     const int nu = state.getNU();
     std::vector<double> J(3 * static_cast<std::size_t>(nu));
-    for (const ContactReport& report : contacts_.findContactReports(state)) {
+    std::vector<int> columns;
+    for (const ContactReport& report : contacts_.getEvaluatedContacts(state)) {
         if (report.normalForce <= 0) continue;
         const ContactPair& pair = contacts_.getPair(report.pairIndex);
         fillRelativeJacobian(pair, report.p_G, state, J);
+        findNonzeroColumns(J, nu, columns);
         const ContactForceDerivatives d = calcContactForceDerivatives(parameters_[report.pairIndex], report, withFriction_);
-        addProjected(J.data(), nu, d.dF_dv, D.updContiguousScalarData());
-        if (withStiffness_) addProjected(J.data(), nu, d.dF_dp, K.updContiguousScalarData());
+        addProjected(J.data(), nu, columns, d.dF_dv, D.updContiguousScalarData());
+        if (withStiffness_) addProjected(J.data(), nu, columns, d.dF_dp, K.updContiguousScalarData());
+    }
+}
+
+// Per pushing contact point, its pair and whether it sticks (slip below the transition velocity):
+// the friction slope there is about f_n mu_s / v_t, far above the sliding one, so a point that
+// starts or stops sliding changes D by orders of magnitude.
+void CompliantContactJacobian::appendActiveSet(const SimTK::State& state, std::vector<int>& active) const {
+    for (const ContactReport& report : contacts_.getEvaluatedContacts(state)) {
+        if (report.normalForce <= 0) continue;
+        const bool sticking = report.slipVelocity_G.norm() < parameters_[report.pairIndex].transitionVelocity;
+        active.push_back(2 * report.pairIndex + (sticking ? 1 : 0));
     }
 }
 

@@ -50,6 +50,8 @@ LinearlyImplicitStepper::LinearlyImplicitStepper(const SimTK::MultibodySystem& s
     checkOptions(options_);
 }
 
+LinearlyImplicitStepper::~LinearlyImplicitStepper() = default;
+
 // As Simbody's Integrator::initialize: onto the constraints first, then Initialization events,
 // then the auto-update discrete variables.
 void LinearlyImplicitStepper::initialize(const SimTK::State& initial) {
@@ -74,6 +76,7 @@ void LinearlyImplicitStepper::initialize(const SimTK::State& initial) {
     triggers_ = state_.getEventTriggers();
     stepsAtInitialize_ = steps_;
     massMatrixTime_ = -SimTK::Infinity;
+    matrixStale_ = true;
     initialized_ = true;
 }
 
@@ -138,6 +141,7 @@ void LinearlyImplicitStepper::advanceControlled(double tStop) {
         }
         nextStepSize_ = h * factor;
         justRejected_ = true;
+        matrixStale_ = true;
         ++rejectedSteps_;
         setState(t, q, u, z);
         system_.realize(state_, SimTK::Stage::Acceleration);
@@ -187,7 +191,7 @@ bool LinearlyImplicitStepper::takeStep(double h, double& error) {
 void LinearlyImplicitStepper::takeEulerStep(double h) {
     const StepMatrix A(system_.getMatterSubsystem(), contributors_, state_, h);
     const std::vector<double> u = toStd(state_.getU());
-    std::vector<double> du = addScaled(A.multiplyByM(toStd(state_.getUDot())), h, A.multiplyByK(u));
+    std::vector<double> du = addScaled(A.multiplyByM(toStd(state_.getUDot())), 1, A.multiplyByGK(u, h));
     A.solve(du);
     const SimTK::Vector uNext = toSimTK(addScaled(u, h, du));
     const SimTK::Vector zNext = state_.getZ() + h * state_.getZDot();
@@ -207,16 +211,11 @@ void LinearlyImplicitStepper::takeEulerStep(double h) {
 double LinearlyImplicitStepper::takeRosenbrockStep(double h) {
     const double gamma = 1 + 1 / std::sqrt(2.0), g = gamma * h;
     const SimTK::SimbodyMatterSubsystem& matter = system_.getMatterSubsystem();
-    const bool fresh = !(state_.getTime() - massMatrixTime_ < kMassMatrixAge);
-    const StepMatrix A(matter, contributors_, state_, g, fresh ? std::vector<double>() : massMatrix_);
-    if (fresh) {
-        massMatrix_ = A.getMassMatrix();
-        massMatrixTime_ = state_.getTime();
-    }
+    const StepMatrix& A = findStepMatrix(g);
     const double t0 = state_.getTime();
     const SimTK::Vector q0 = state_.getQ(), z0 = state_.getZ(), zdot0 = state_.getZDot();
     const std::vector<double> u0 = toStd(state_.getU());
-    std::vector<double> b1 = addScaled(A.multiplyByM(toStd(state_.getUDot())), g, A.multiplyByK(u0));
+    std::vector<double> b1 = addScaled(A.multiplyByM(toStd(state_.getUDot())), 1, A.multiplyByGK(u0, g));
     A.solve(b1);
     const std::vector<double> a1 = addScaled(u0, g, b1);
     SimTK::Vector qdot1, qdot2;
@@ -226,7 +225,7 @@ double LinearlyImplicitStepper::takeRosenbrockStep(double h) {
     ++evaluations_;
     const SimTK::Vector zdot2 = state_.getZDot();
     const std::vector<double> r1 = addScaled(addScaled(u0, h, b1), -2, a1);
-    std::vector<double> b2 = addScaled(A.multiplyByM(addScaled(toStd(state_.getUDot()), -2, b1)), g, A.multiplyByK(r1));
+    std::vector<double> b2 = addScaled(A.multiplyByM(addScaled(toStd(state_.getUDot()), -2, b1)), 1, A.multiplyByGK(r1, g));
     A.solve(b2);
     const std::vector<double> a2 = addScaled(r1, g, b2);
     state_.updQ() = q0;  // N(q0) for the final combination
@@ -237,6 +236,31 @@ double LinearlyImplicitStepper::takeRosenbrockStep(double h) {
     return options_.accuracy > 0 ? calcErrorNorm(A, h, a1, a2, b1, b2, u0) : 0.0;
 }
 
+// The step's matrix: the one kept from an earlier step while nothing says it is out of date (see
+// the header's kMatrixAge), else a new one (with M kept for kMassMatrixAge). At fixed steps no
+// error estimate watches a stale matrix, so each step builds its own.
+const StepMatrix& LinearlyImplicitStepper::findStepMatrix(double g) {
+    activeSet_.clear();
+    for (const ForceJacobianContributor* c : contributors_) c->appendActiveSet(state_, activeSet_);
+    const double t = state_.getTime();
+    const bool keep = options_.accuracy > 0 && matrix_ && !matrixStale_ && activeSet_ == matrixActiveSet_ &&
+                      t - matrixTime_ < kMatrixAge && g < kMatrixStepRatio * matrix_->getFactor() &&
+                      matrix_->getFactor() < kMatrixStepRatio * g;
+    if (keep) return *matrix_;
+    const bool freshM = !(t - massMatrixTime_ < kMassMatrixAge);
+    matrix_ = std::make_unique<StepMatrix>(system_.getMatterSubsystem(), contributors_, state_, g,
+                                           freshM ? std::vector<double>() : massMatrix_);
+    if (freshM) {
+        massMatrix_ = matrix_->getMassMatrix();
+        massMatrixTime_ = t;
+    }
+    matrixTime_ = t;
+    matrixActiveSet_.swap(activeSet_);
+    matrixStale_ = false;
+    ++matrixBuilds_;
+    return *matrix_;
+}
+
 // The difference from the embedded first-order solution y0 + h k1, E = h (k1 + k2) / 2, filtered
 // by W^-1 = (I - g J)^-1 as Shampine filters stiff estimates (unfiltered, the stiff joint modes'
 // share of E rejected about every other step at accuracy 1e-3 on the ball clutch), in the
@@ -245,14 +269,14 @@ double LinearlyImplicitStepper::takeRosenbrockStep(double h) {
 double LinearlyImplicitStepper::calcErrorNorm(const StepMatrix& A, double h, const std::vector<double>& a1,
                                               const std::vector<double>& a2, const std::vector<double>& b1,
                                               const std::vector<double>& b2, const std::vector<double>& u0) const {
-    const double g = A.getFactor();
+    const double g = (1 + 1 / std::sqrt(2.0)) * h;
     const std::size_t n = u0.size();
     std::vector<double> ex(n), eu(n);
     for (std::size_t i = 0; i < n; ++i) {
         ex[i] = 0.5 * h * (a1[i] + a2[i]);
         eu[i] = 0.5 * h * (b1[i] + b2[i]);
     }
-    std::vector<double> fu = addScaled(A.multiplyByM(eu), g, A.multiplyByK(ex));
+    std::vector<double> fu = addScaled(A.multiplyByM(eu), 1, A.multiplyByGK(ex, g));
     A.solve(fu);
     const std::vector<double> fx = addScaled(ex, g, fu);
     double sum = 0;
@@ -306,6 +330,7 @@ void LinearlyImplicitStepper::handleResults(const SimTK::HandleEventsResults& re
     }
     if (results.getExitStatus() == SimTK::HandleEventsResults::ShouldTerminate) terminated_ = true;
     if (results.getLowestModifiedStage() >= SimTK::Stage::Report || !initialized_) return;
+    if (results.getLowestModifiedStage() <= SimTK::Stage::Instance) matrixStale_ = true;  // pairs, locks
     system_.realize(state_, SimTK::Stage::Acceleration);
     ++evaluations_;
     system_.calcEventTriggerInfo(state_, triggerInfo_);
@@ -317,8 +342,8 @@ IntegrationStatistics LinearlyImplicitStepper::getStatistics() const {
     s.steps = steps_;
     s.errorTestFailures = rejectedSteps_;
     s.rhsEvaluations = evaluations_;
-    s.jacobianEvaluations = steps_;
-    s.linearSolverSetups = steps_;
+    s.jacobianEvaluations = matrixBuilds_;
+    s.linearSolverSetups = matrixBuilds_;
     s.projections = projections_;
     s.triggeredEvents = triggeredEvents_;
     s.scheduledEvents = scheduledEvents_;
