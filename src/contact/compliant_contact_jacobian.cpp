@@ -97,26 +97,34 @@ void addProjected(const double* J, int nu, const std::vector<int>& columns, cons
 
 }  // namespace
 
-// Row k of J = J_b(P) - J_a(P) is the generalized force of a unit force along axis k applied at
-// P on b and its opposite on a: three transposed products, where calcStationJacobian for the
-// two stations would take six.
+namespace {
+
+// J += sign J_body(P) over the mobilities on `body`'s path to Ground: mobility i of mobilizer k
+// moves P at H_i[1] + H_i[0] x (P - B_k's origin), H_i its hinge matrix column (V_PB_G). A walk
+// along one path, where Simbody's whole-tree transposed products cost three sweeps per contact.
+void addPathColumns(const SimTK::SimbodyMatterSubsystem& matter, const SimTK::State& state,
+                    SimTK::MobilizedBodyIndex body, const SimTK::Vec3& p_G, double sign, std::vector<double>& J) {
+    for (SimTK::MobilizedBodyIndex k = body; k != SimTK::GroundIndex;) {
+        const SimTK::MobilizedBody& mobod = matter.getMobilizedBody(k);
+        const SimTK::Vec3 r = p_G - mobod.getBodyOriginLocation(state);
+        const int first = mobod.getFirstUIndex(state);
+        for (int i = 0; i < mobod.getNumU(state); ++i) {
+            const SimTK::SpatialVec H = mobod.getHCol(state, SimTK::MobilizerUIndex(i));
+            const SimTK::Vec3 column = H[1] + H[0] % r;
+            for (int row = 0; row < 3; ++row) J[row + 3 * (first + i)] += sign * column[row];
+        }
+        k = mobod.getParentMobilizedBody().getMobilizedBodyIndex();
+    }
+}
+
+}  // namespace
+
+// J = J_b(P) - J_a(P); the mobilities both paths share cancel.
 void CompliantContactJacobian::fillRelativeJacobian(const ContactPair& pair, const SimTK::Vec3& p_G,
                                                     const SimTK::State& state, std::vector<double>& J) const {
-    const int nu = state.getNU();
-    const SimTK::MobilizedBodyIndex a = pair.a.body.getMobilizedBodyIndex(), b = pair.b.body.getMobilizedBodyIndex();
-    const SimTK::Vec3 r_a = p_G - pair.a.body.getBodyOriginLocation(state);
-    const SimTK::Vec3 r_b = p_G - pair.b.body.getBodyOriginLocation(state);
-    SimTK::Vector_<SimTK::SpatialVec> F(matter_.getNumBodies(), SimTK::SpatialVec(SimTK::Vec3(0), SimTK::Vec3(0)));
-    SimTK::Vector row;
-    for (int k = 0; k < 3; ++k) {
-        SimTK::Vec3 e(0);
-        e[k] = 1;
-        F[b] += SimTK::SpatialVec(r_b % e, e);
-        F[a] -= SimTK::SpatialVec(r_a % e, e);
-        matter_.multiplyBySystemJacobianTranspose(state, F, row);
-        for (int c = 0; c < nu; ++c) J[k + 3 * c] = row[c];
-        F[a] = F[b] = SimTK::SpatialVec(SimTK::Vec3(0), SimTK::Vec3(0));
-    }
+    std::fill(J.begin(), J.end(), 0.0);
+    addPathColumns(matter_, state, pair.b.body.getMobilizedBodyIndex(), p_G, 1, J);
+    addPathColumns(matter_, state, pair.a.body.getMobilizedBodyIndex(), p_G, -1, J);
 }
 
 // The contact points come from the force element's own evaluation (its cache), not a second

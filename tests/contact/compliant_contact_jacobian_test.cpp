@@ -111,28 +111,73 @@ struct PressedBall {
     }
 };
 
-// D = J^T (dF/dv) J, assembled from the contact points the force evaluation cached, against central
-// differences of the element's generalized force in each speed, at a point that sticks and at one
-// that slides.
+// D = J^T (dF/dv) J against central differences of the element's generalized force in each speed.
+template <class Scene>
+void expectDampingMatchesFiniteDifferences(Scene& b, const std::string& what) {
+    b.scene.system.realize(b.state, SimTK::Stage::Dynamics);
+    const CompliantContactJacobian jacobian(b.scene.matter, b.force);
+    const int nu = b.state.getNU();
+    SimTK::Matrix D(nu, nu, 0.0), K(nu, nu, 0.0);
+    jacobian.addForceJacobians(b.state, D, K);
+    const double du = 1e-8;
+    double largest = 0;
+    for (int c = 0; c < nu; ++c) {
+        SimTK::State plus = b.state, minus = b.state;
+        plus.updU()[c] += du;
+        minus.updU()[c] -= du;
+        const SimTK::Vector fd = (b.calcGeneralizedForce(plus) - b.calcGeneralizedForce(minus)) / (2 * du);
+        for (int r = 0; r < nu; ++r) {
+            largest = std::max(largest, std::abs(fd[r]));
+            EXPECT_NEAR(D(r, c), fd[r], 1e-5 * (1 + std::abs(fd[r]))) << what << " D(" << r << "," << c << ")";
+        }
+    }
+    EXPECT_GT(largest, 0.1) << what;  // the contact's damping is in there
+}
+
+// A two-link finger (pins about z, 40 mm and 30 mm) whose 10 mm tip sphere presses 0.2 mm into
+// the floor while its joints turn slowly: the relative Jacobian walks both pins' hinge columns.
+struct PressedFinger {
+    test::Scene scene;
+    SimTK::MobilizedBody::Pin proximal, distal;
+    CompliantContactForce force;
+    SimTK::State state;
+
+    PressedFinger()
+        : proximal(scene.matter.updGround(), SimTK::Transform(Vec3(0, 0.05, 0)), test::Scene::makeBody(0.02, 0.01),
+                   SimTK::Transform()),
+          distal(proximal, SimTK::Transform(Vec3(0.04, 0, 0)), test::Scene::makeBody(0.02, 0.01), SimTK::Transform()),
+          force(scene.forces, {{{distal, "tip", "tip_shape", ContactShape::sphere(0.01), SimTK::Transform(Vec3(0.03, 0, 0))},
+                                scene.makeFloor(), test::makeParameters(1e6, 2, 0.8, 0.8, 1e-3)}}) {
+        state = scene.system.realizeTopology();
+        scene.system.realizeModel(state);
+        // Tip centre at 0.05 - 0.04 sin(a) - 0.03 sin(a + b) = 0.01 - 2e-4 with the distal pin straight.
+        const double angle = std::asin((0.05 - 0.01 + 2e-4) / 0.07);
+        proximal.setOneQ(state, 0, -angle);
+        distal.setOneQ(state, 0, 0);
+        proximal.setOneU(state, 0, 3e-3);  // the tip slips about 0.2 mm/s: it sticks
+        distal.setOneU(state, 0, -2e-3);
+    }
+
+    SimTK::Vector calcGeneralizedForce(const SimTK::State& s) const {
+        scene.system.realize(s, SimTK::Stage::Velocity);
+        SimTK::Vector_<SimTK::SpatialVec> bodyForces(scene.matter.getNumBodies(), SimTK::SpatialVec(Vec3(0), Vec3(0)));
+        SimTK::Vector_<Vec3> particles;
+        SimTK::Vector mobility(s.getNU(), 0.0), f;
+        force.calcForceContribution(s, bodyForces, particles, mobility);
+        scene.matter.multiplyBySystemJacobianTranspose(s, bodyForces, f);
+        return f + mobility;
+    }
+};
+
+// The damping assembled from the contact points the force evaluation cached, on a free ball at a
+// point that sticks and at one that slides, and on a finger chain.
 TEST(CompliantContactJacobian, AssembledDampingMatchesFiniteDifferencesOfGeneralizedForce) {
     for (double slip : {-4e-4, 6e-3}) {
         PressedBall b(slip);
-        b.scene.system.realize(b.state, SimTK::Stage::Dynamics);
-        const CompliantContactJacobian jacobian(b.scene.matter, b.force);
-        const int nu = b.state.getNU();
-        SimTK::Matrix D(nu, nu, 0.0), K(nu, nu, 0.0);
-        jacobian.addForceJacobians(b.state, D, K);
-        const double du = 1e-8;
-        for (int c = 0; c < nu; ++c) {
-            SimTK::State plus = b.state, minus = b.state;
-            plus.updU()[c] += du;
-            minus.updU()[c] -= du;
-            const SimTK::Vector fd = (b.calcGeneralizedForce(plus) - b.calcGeneralizedForce(minus)) / (2 * du);
-            for (int r = 0; r < nu; ++r) {
-                EXPECT_NEAR(D(r, c), fd[r], 1e-5 * (1 + std::abs(fd[r]))) << "slip " << slip << " D(" << r << "," << c << ")";
-            }
-        }
+        expectDampingMatchesFiniteDifferences(b, "ball slipping at " + std::to_string(slip));
     }
+    PressedFinger finger;
+    expectDampingMatchesFiniteDifferences(finger, "finger");
 }
 
 // The contact points the Jacobian reads are the force evaluation's own: equal to a fresh
