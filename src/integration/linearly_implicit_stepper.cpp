@@ -6,6 +6,7 @@
 #include "graspsim/error.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -151,6 +152,19 @@ void LinearlyImplicitStepper::advanceControlled(double tStop) {
 
 namespace {
 
+// Adds the wall time of its scope to `seconds` (the linear algebra's share, in the statistics).
+class ScopeClock {
+public:
+    explicit ScopeClock(double& seconds) : seconds_(seconds), start_(std::chrono::steady_clock::now()) {}
+    ~ScopeClock() { seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
+    ScopeClock(const ScopeClock&) = delete;
+    ScopeClock& operator=(const ScopeClock&) = delete;
+
+private:
+    double& seconds_;
+    std::chrono::steady_clock::time_point start_;
+};
+
 std::vector<double> toStd(const SimTK::Vector& v) { return std::vector<double>(&v[0], &v[0] + v.size()); }
 SimTK::Vector toSimTK(const std::vector<double>& v) { return SimTK::Vector(static_cast<int>(v.size()), v.data()); }
 
@@ -189,10 +203,16 @@ bool LinearlyImplicitStepper::takeStep(double h, double& error) {
 
 // (M - h D - h^2 K) du = h (f + h K u), f = M udot; u' = u + du, q' = q + h N u', z' = z + h zdot.
 void LinearlyImplicitStepper::takeEulerStep(double h) {
-    const StepMatrix A(system_.getMatterSubsystem(), contributors_, state_, h);
+    std::unique_ptr<const StepMatrix> built;
+    {
+        const ScopeClock clock(linearSolveSeconds_);
+        built = std::make_unique<const StepMatrix>(system_.getMatterSubsystem(), contributors_, state_, h);
+        ++matrixBuilds_;
+    }
+    const StepMatrix& A = *built;
     const std::vector<double> u = toStd(state_.getU());
     std::vector<double> du = addScaled(A.multiplyByM(toStd(state_.getUDot())), 1, A.multiplyByGK(u, h));
-    A.solve(du);
+    solve(A, du);
     const SimTK::Vector uNext = toSimTK(addScaled(u, h, du));
     const SimTK::Vector zNext = state_.getZ() + h * state_.getZDot();
     SimTK::Vector qdot;
@@ -216,7 +236,7 @@ double LinearlyImplicitStepper::takeRosenbrockStep(double h) {
     const SimTK::Vector q0 = state_.getQ(), z0 = state_.getZ(), zdot0 = state_.getZDot();
     const std::vector<double> u0 = toStd(state_.getU());
     std::vector<double> b1 = addScaled(A.multiplyByM(toStd(state_.getUDot())), 1, A.multiplyByGK(u0, g));
-    A.solve(b1);
+    solve(A, b1);
     const std::vector<double> a1 = addScaled(u0, g, b1);
     SimTK::Vector qdot1, qdot2;
     matter.multiplyByN(state_, false, toSimTK(a1), qdot1);  // N(q0) a1
@@ -226,7 +246,7 @@ double LinearlyImplicitStepper::takeRosenbrockStep(double h) {
     const SimTK::Vector zdot2 = state_.getZDot();
     const std::vector<double> r1 = addScaled(addScaled(u0, h, b1), -2, a1);
     std::vector<double> b2 = addScaled(A.multiplyByM(addScaled(toStd(state_.getUDot()), -2, b1)), 1, A.multiplyByGK(r1, g));
-    A.solve(b2);
+    solve(A, b2);
     const std::vector<double> a2 = addScaled(r1, g, b2);
     state_.updQ() = q0;  // N(q0) for the final combination
     system_.realize(state_, SimTK::Stage::Position);
@@ -240,6 +260,7 @@ double LinearlyImplicitStepper::takeRosenbrockStep(double h) {
 // the header's kMatrixAge), else a new one (with M kept for kMassMatrixAge). At fixed steps no
 // error estimate watches a stale matrix, so each step builds its own.
 const StepMatrix& LinearlyImplicitStepper::findStepMatrix(double g) {
+    const ScopeClock clock(linearSolveSeconds_);
     activeSet_.clear();
     for (const ForceJacobianContributor* c : contributors_) c->appendActiveSet(state_, activeSet_);
     const double t = state_.getTime();
@@ -261,6 +282,11 @@ const StepMatrix& LinearlyImplicitStepper::findStepMatrix(double g) {
     return *matrix_;
 }
 
+void LinearlyImplicitStepper::solve(const StepMatrix& A, std::vector<double>& b) const {
+    const ScopeClock clock(linearSolveSeconds_);
+    A.solve(b);
+}
+
 // The difference from the embedded first-order solution y0 + h k1, E = h (k1 + k2) / 2, filtered
 // by W^-1 = (I - g J)^-1 as Shampine filters stiff estimates (unfiltered, the stiff joint modes'
 // share of E rejected about every other step at accuracy 1e-3 on the ball clutch), in the
@@ -277,7 +303,7 @@ double LinearlyImplicitStepper::calcErrorNorm(const StepMatrix& A, double h, con
         eu[i] = 0.5 * h * (b1[i] + b2[i]);
     }
     std::vector<double> fu = addScaled(A.multiplyByM(eu), 1, A.multiplyByGK(ex, g));
-    A.solve(fu);
+    solve(A, fu);
     const std::vector<double> fx = addScaled(ex, g, fu);
     double sum = 0;
     for (std::size_t i = 0; i < n; ++i) {
@@ -348,6 +374,8 @@ IntegrationStatistics LinearlyImplicitStepper::getStatistics() const {
     s.triggeredEvents = triggeredEvents_;
     s.scheduledEvents = scheduledEvents_;
     s.restarts = 0;  // a one-step method has no history to restart
+    s.newtonIterations = 0;
+    s.linearSolveSeconds = linearSolveSeconds_;
     return s;
 }
 

@@ -83,6 +83,7 @@ private:
     void takeEulerStep(double h);
     double takeRosenbrockStep(double h);
     const StepMatrix& findStepMatrix(double g);
+    void solve(const StepMatrix& A, std::vector<double>& b) const;  // A^-1 b in place, timed
     double calcErrorNorm(const StepMatrix& A, double h, const std::vector<double>& a1, const std::vector<double>& a2,
                          const std::vector<double>& b1, const std::vector<double>& b2, const std::vector<double>& u0) const;
     void setState(double t, const SimTK::Vector& q, const SimTK::Vector& u, const SimTK::Vector& z);
@@ -115,6 +116,7 @@ private:
     std::vector<int> matrixActiveSet_, activeSet_;
     bool matrixStale_ = true;
     long matrixBuilds_ = 0;
+    mutable double linearSolveSeconds_ = 0;  // building, factoring, solving (s)
     bool justRejected_ = false;
     double lastEventTime_ = -SimTK::Infinity, lastReportTime_ = -SimTK::Infinity;
     long steps_ = 0, stepsAtInitialize_ = 0, evaluations_ = 0, projections_ = 0;
