@@ -1,5 +1,7 @@
 #include "graspsim/contact/compliant_contact_jacobian.h"
 
+#include "graspsim/integration/point_jacobian.h"
+
 #include <algorithm>
 #include <vector>
 
@@ -70,14 +72,6 @@ CompliantContactJacobian::CompliantContactJacobian(const SimTK::SimbodyMatterSub
 
 namespace {
 
-// The columns of a 3 x nu J (column-major) that are not zero: the mobilities on the two bodies'
-// paths to Ground (one finger chain, the arm and the object of a hand's 60-odd).
-void findNonzeroColumns(const std::vector<double>& J, int nu, std::vector<int>& columns) {
-    columns.clear();
-    for (int c = 0; c < nu; ++c)
-        if (J[3 * c] != 0 || J[1 + 3 * c] != 0 || J[2 + 3 * c] != 0) columns.push_back(c);
-}
-
 // A += J^T B J for a 3 x nu J and a 3x3 B, on column-major storage (J[r + 3 c], A[r + nu c]),
 // over J's nonzero columns only: SimTK::Matrix's element access costs more than the arithmetic.
 void addProjected(const double* J, int nu, const std::vector<int>& columns, const SimTK::Mat33& B, double* A) {
@@ -97,34 +91,12 @@ void addProjected(const double* J, int nu, const std::vector<int>& columns, cons
 
 }  // namespace
 
-namespace {
-
-// J += sign J_body(P) over the mobilities on `body`'s path to Ground: mobility i of mobilizer k
-// moves P at H_i[1] + H_i[0] x (P - B_k's origin), H_i its hinge matrix column (V_PB_G). A walk
-// along one path, where Simbody's whole-tree transposed products cost three sweeps per contact.
-void addPathColumns(const SimTK::SimbodyMatterSubsystem& matter, const SimTK::State& state,
-                    SimTK::MobilizedBodyIndex body, const SimTK::Vec3& p_G, double sign, std::vector<double>& J) {
-    for (SimTK::MobilizedBodyIndex k = body; k != SimTK::GroundIndex;) {
-        const SimTK::MobilizedBody& mobod = matter.getMobilizedBody(k);
-        const SimTK::Vec3 r = p_G - mobod.getBodyOriginLocation(state);
-        const int first = mobod.getFirstUIndex(state);
-        for (int i = 0; i < mobod.getNumU(state); ++i) {
-            const SimTK::SpatialVec H = mobod.getHCol(state, SimTK::MobilizerUIndex(i));
-            const SimTK::Vec3 column = H[1] + H[0] % r;
-            for (int row = 0; row < 3; ++row) J[row + 3 * (first + i)] += sign * column[row];
-        }
-        k = mobod.getParentMobilizedBody().getMobilizedBodyIndex();
-    }
-}
-
-}  // namespace
-
 // J = J_b(P) - J_a(P); the mobilities both paths share cancel.
 void CompliantContactJacobian::fillRelativeJacobian(const ContactPair& pair, const SimTK::Vec3& p_G,
                                                     const SimTK::State& state, std::vector<double>& J) const {
     std::fill(J.begin(), J.end(), 0.0);
-    addPathColumns(matter_, state, pair.b.body.getMobilizedBodyIndex(), p_G, 1, J);
-    addPathColumns(matter_, state, pair.a.body.getMobilizedBodyIndex(), p_G, -1, J);
+    integration::addPointJacobian(matter_, state, pair.b.body.getMobilizedBodyIndex(), p_G, 1, 3, J);
+    integration::addPointJacobian(matter_, state, pair.a.body.getMobilizedBodyIndex(), p_G, -1, 3, J);
 }
 
 // The contact points come from the force element's own evaluation (its cache), not a second
@@ -137,7 +109,7 @@ void CompliantContactJacobian::addForceJacobians(const SimTK::State& state, SimT
         if (report.normalForce <= 0) continue;
         const ContactPair& pair = contacts_.getPair(report.pairIndex);
         fillRelativeJacobian(pair, report.p_G, state, J);
-        findNonzeroColumns(J, nu, columns);
+        integration::findNonzeroColumns(J, 3, nu, columns);
         const ContactForceDerivatives d = calcContactForceDerivatives(parameters_[report.pairIndex], report, withFriction_);
         addProjected(J.data(), nu, columns, d.dF_dv, D.updContiguousScalarData());
         if (withStiffness_) addProjected(J.data(), nu, columns, d.dF_dp, K.updContiguousScalarData());
