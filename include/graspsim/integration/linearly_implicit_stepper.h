@@ -13,9 +13,11 @@
 ///
 /// Order 2 (the default), the Rosenbrock method ROS2 (Verwer et al. 1999): two stages with
 /// M - gamma h D - (gamma h)^2 K, gamma = 1 + 1/sqrt(2), two dynamics evaluations; L-stable, and
-/// second order for any approximate Jacobian (a W-method), so D and K may leave terms out and M
-/// is kept for 10 ms. Optionally error-controlled (LinearlyImplicitOptions::accuracy): steps up
-/// to h chosen from the difference to the embedded first-order solution.
+/// second order for any approximate Jacobian (a W-method), so D and K may leave terms out, M is
+/// kept for 10 ms, and with error control the whole matrix and its LU are kept across steps until
+/// the contributors' active set changes (see findStepMatrix in the class). Optionally
+/// error-controlled (LinearlyImplicitOptions::accuracy): steps up to h chosen from the difference
+/// to the embedded first-order solution.
 ///
 /// A locked mobilizer's rows are du = 0. After each step q and u are projected onto the
 /// constraints with System::project (without constraints, quaternions are only normalized).
