@@ -3,6 +3,7 @@
 
 #include "graspsim/error.h"
 #include "graspsim/contact/compliant_contact_jacobian.h"
+#include "graspsim/grasp/limited_bushing_jacobian.h"
 #include "graspsim/integration/cvode_integrator.h"
 #include "graspsim/integration/joint_impedance_jacobian.h"
 #include "graspsim/integration/linearly_implicit_stepper.h"
@@ -201,6 +202,9 @@ SceneStepper makeLinearlyImplicitStepper(const GraspScene& scene, double stepSiz
     made.jacobians.push_back(std::make_unique<integration::JointImpedanceJacobian>(
         matter, scene.getModel().getForces(), scene.findJointImpedances()));
     made.jacobians.push_back(std::make_unique<contact::CompliantContactJacobian>(matter, scene.getCompliantContacts()));
+    if (const auto* bushing = dynamic_cast<const grasp::LimitedBushing*>(scene.getAttachment())) {
+        made.jacobians.push_back(std::make_unique<grasp::LimitedBushingJacobian>(matter, *bushing, scene.getPalm(), scene.getObject()));
+    }
     std::vector<const integration::ForceJacobianContributor*> contributors;
     for (const auto& j : made.jacobians) contributors.push_back(j.get());
     integration::LinearlyImplicitOptions implicit;
