@@ -110,12 +110,26 @@ public:
 
     void realizeTopology(SimTK::State& state) const override {
         recordIndex_ = forces_.allocateDiscreteVariable(state, SimTK::Stage::Report, new SimTK::Value<GraspSwitchRecord>(initial_));
+        // Valid until the time, q, u or an Instance-stage flag changes: exactly what the engaged
+        // quality is a function of (with the tracked contacts, which change only at engagement).
+        qualityIndex_ = forces_.allocateLazyCacheEntry(state, SimTK::Stage::Velocity, new SimTK::Value<double>(0));
     }
     const GraspSwitchRecord& getRecord(const SimTK::State& state) const {
         return SimTK::Value<GraspSwitchRecord>::downcast(forces_.getDiscreteVariable(state, recordIndex_)).get();
     }
     GraspSwitchRecord& updRecord(SimTK::State& state) const {
         return SimTK::Value<GraspSwitchRecord>::updDowncast(forces_.updDiscreteVariable(state, recordIndex_)).upd();
+    }
+
+    /// The engaged quality already computed for `state`, or nullptr.
+    const double* findEngagedQuality(const SimTK::State& state) const {
+        if (!forces_.isCacheValueRealized(state, qualityIndex_)) return nullptr;
+        return &SimTK::Value<double>::downcast(forces_.getCacheEntry(state, qualityIndex_)).get();
+    }
+    /// Keeps `quality` with `state` (a cache entry: the State is const). Needs Stage::Velocity.
+    void setEngagedQuality(const SimTK::State& state, double quality) const {
+        SimTK::Value<double>::updDowncast(forces_.updCacheEntry(state, qualityIndex_)).upd() = quality;
+        forces_.markCacheValueRealized(state, qualityIndex_);
     }
 
     void calcForce(const SimTK::State&, SimTK::Vector_<SimTK::SpatialVec>&, SimTK::Vector_<SimTK::Vec3>&,
@@ -125,7 +139,10 @@ public:
 private:
     const SimTK::GeneralForceSubsystem& forces_;
     GraspSwitchRecord initial_;
-    mutable SimTK::DiscreteVariableIndex recordIndex_;  // set once, at realizeTopology (Simbody's pattern)
+    // Set once, at realizeTopology, where Simbody hands a const element the State to allocate in:
+    // Simbody's own pattern for indices (no state of the simulation lives here).
+    mutable SimTK::DiscreteVariableIndex recordIndex_;
+    mutable SimTK::CacheEntryIndex qualityIndex_;
 };
 
 GraspSwitch::GraspSwitch(const GraspScene& scene, SimTK::GeneralForceSubsystem& forces,
@@ -179,18 +196,6 @@ private:
 
 SimTK::TriggeredEventHandler* GraspSwitch::makeDetachWitness() const { return multi_ ? new DetachWitness(*this) : nullptr; }
 
-bool GraspSwitch::QualityMemo::isFor(const SimTK::State& state) const {
-    const SimTK::Vector& stateY = state.getY();
-    if (time != state.getTime() || y.size() != stateY.size()) return false;
-    if (y.hasContiguousData() && stateY.hasContiguousData()) {
-        return std::equal(&y[0], &y[0] + y.size(), &stateY[0]);  // element access costs a call each
-    }
-    for (int i = 0; i < y.size(); ++i) {
-        if (y[i] != stateY[i]) return false;
-    }
-    return true;
-}
-
 bool GraspSwitch::isEngaged(const SimTK::State& state) const { return attachment_.isEngaged(state); }
 
 void GraspSwitch::handleEvent(SimTK::State& state, SimTK::Real accuracy, bool& shouldTerminate) const {
@@ -214,7 +219,7 @@ double GraspSwitch::calcQualityOf(const SimTK::State& state, const std::vector<c
 }
 
 double GraspSwitch::calcEngagedQuality(const SimTK::State& state) const {
-    if (memo_.isFor(state)) return memo_.quality;
+    if (const double* known = keeper_->findEngagedQuality(state)) return *known;
     double q = 0;
     if (!multi_) {
         q = getRecord(state).tracker.calcQuality(state);
@@ -224,7 +229,7 @@ double GraspSwitch::calcEngagedQuality(const SimTK::State& state) const {
         scene_.getSystem().realize(state, SimTK::Stage::Velocity);
         q = calcQualityOf(state, scene_.getCompliantContacts().findContactReports(state, scene_.getCompliantContacts().findAllPairIndices()));
     }
-    memo_ = {state.getTime(), state.getY(), q};
+    if (state.getSystemStage() >= SimTK::Stage::Velocity) keeper_->setEngagedQuality(state, q);
     return q;
 }
 
@@ -277,7 +282,6 @@ std::string GraspSwitch::describeEngagement(double qThreshold, const SimTK::Vec6
 }
 
 void GraspSwitch::engage(SimTK::State& state, double quality, const std::vector<contact::ContactReport>& reports) const {
-    memo_ = {};
     updRecord(state).tracker.capture(state, reports);  // penetration, for both attachments; Q tracking is merged's
     const double qThreshold = getRecord(state).qThreshold;
     if (multi_) {
@@ -317,7 +321,6 @@ void GraspSwitch::placeConstraintFrames(const SimTK::State& state, const SimTK::
 }
 
 void GraspSwitch::checkRelease(SimTK::State& state) const {
-    const std::size_t eventsBefore = getRecord(state).events.size();
     double q = 0;
     std::string reason;
     // Written back only when a maximum grew: writing the record (a discrete variable) at every
@@ -341,7 +344,6 @@ void GraspSwitch::checkRelease(SimTK::State& state) const {
         reason = describeRelease(state, q);
     }
     if (!reason.empty()) release(state, q, reason);
-    if (getRecord(state).events.size() != eventsBefore) memo_ = {};  // a detach or the release changed the state
 }
 
 // Empty while the approximation still holds; otherwise the first reason to release, with numbers.

@@ -8,6 +8,7 @@
 #include "graspsim/simulation/grasp_switch.h"
 
 #include "graspsim/error.h"
+#include "graspsim/grasp/limited_weld.h"
 #include "graspsim/scenario/scenario_file.h"
 
 #include <gtest/gtest.h>
@@ -162,7 +163,9 @@ TEST(GraspSwitch, WeldObjectIsHeldByTheGroundWeldThenByTheMobilizerLock) {
         const simulation::GraspSwitch* grasp = scene.getGraspSwitch();
         if (!grasp->isEngaged(state)) return;
         ++engagedSamples;
-        if (scene.getWeld()->isHeldByLock(state)) ++lockedSamples;
+        const auto* weld = dynamic_cast<const grasp::LimitedWeld*>(scene.getAttachment());
+        ASSERT_NE(weld, nullptr);
+        if (weld->isHeldByLock(state)) ++lockedSamples;
         const SimTK::Transform X_PO = ~scene.getPalm().getBodyTransform(state) * scene.getObject().getBodyTransform(state);
         if (!haveEngagedPose) {
             X_PO_engaged = X_PO;

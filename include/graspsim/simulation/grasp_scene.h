@@ -109,9 +109,6 @@ public:
     /// multi-attachment, per ApproxOptions), nullptr in full mode. The switch, the tracker and the
     /// cost table use it through this interface; the accessors below are for inspection.
     const grasp::GraspAttachment* getAttachment() const { return attachment_; }
-    /// The approximation's weld palm (F = palm frame) - object (M = O), or nullptr unless in
-    /// approx mode with the weld realization.
-    const grasp::LimitedWeld* getWeld() const { return weld_.get(); }
     /// The `multi` attachment (object - every goal fingertip), or nullptr unless in approx mode with
     /// ApproxOptions::attach Multi (multi_attachment_switch.h).
     const grasp::MultiAttachment* getMultiAttachment() const { return multi_.get(); }

@@ -148,8 +148,8 @@ public:
     /// (EngagedGraspTracker::calcQuality; realizes `state` to Stage::Acceleration). Multi: the
     /// quality of the contacts every pair would produce in `state`, switched on or not
     /// (CompliantContactForce::findContactReports of a list), since the fingers move on their own.
-    /// Asked twice for the same state (the switch's check, then the sample recorded at that
-    /// instant), the second call returns the first's value.
+    /// Kept in a cache entry of `state` (valid until its time, q, u or switch flags change), so
+    /// that the switch's check and the sample recorded at that instant compute it once.
     double calcEngagedQuality(const SimTK::State& state) const;
     /// The contacts tracked while engaged and the penetration measured up to `state`.
     const EngagedGraspTracker& getTracker(const SimTK::State& state) const { return getRecord(state).tracker; }
@@ -180,16 +180,6 @@ private:
     std::vector<std::string> goalBodies_;  // body of each goal end-effector
 
     const RecordKeeper* keeper_ = nullptr;  // owned by the force subsystem
-    // A cache, not state: the last engaged Q and the (time, Y) it is a function of, so that the
-    // check and the sample recorded at the same instant (two State objects with equal values)
-    // compute it once. Engage, detach and release change the discrete state and forget it.
-    struct QualityMemo {
-        double time = -1;
-        SimTK::Vector y;
-        double quality = 0;
-        bool isFor(const SimTK::State& state) const;
-    };
-    mutable QualityMemo memo_;
 };
 
 }  // namespace graspsim::simulation
