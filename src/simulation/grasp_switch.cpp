@@ -3,7 +3,6 @@
 #include "graspsim/error.h"
 #include "graspsim/grasp/limited_bushing_law.h"
 #include "graspsim/simulation/contact_grasp_quality.h"
-#include "graspsim/simulation/grasp_scene.h"
 #include "graspsim/simulation/multi_attachment_switch.h"
 
 #include <algorithm>
@@ -76,20 +75,6 @@ double findLeverArm(const std::vector<contact::ContactReport>& reports, const Si
     return arm;
 }
 
-// The run's options over the scenario's approximation section: a value given to the run wins.
-ApproxOptions resolveOptions(const ApproxOptions& given, const scenario::ApproximationSpec& scenario) {
-    ApproxOptions options = given;
-    if (options.qThreshold == 0) options.qThreshold = scenario.qThreshold;
-    if (options.qMinimum == 0) options.qMinimum = scenario.qMinimum;
-    if (!options.relaxedAxes) options.relaxedAxes = scenario.relaxedAxes;
-    return options;
-}
-
-const grasp::GraspAttachment& findAttachment(const GraspScene& scene) {
-    if (!scene.getAttachment()) throw Error("grasp switch: the scene has no attachment (not an approx-mode scene)");
-    return *scene.getAttachment();
-}
-
 }  // namespace
 
 std::string toString(GraspEventKind kind) {
@@ -145,26 +130,17 @@ private:
     mutable SimTK::CacheEntryIndex qualityIndex_;
 };
 
-GraspSwitch::GraspSwitch(const GraspScene& scene, SimTK::GeneralForceSubsystem& forces,
-                         const control::GraspController& controller, const ApproxOptions& options, double interval)
-    : SimTK::PeriodicEventHandler(interval), scene_(scene), controller_(controller),
-      attachment_(findAttachment(scene)), options_(resolveOptions(options, scene.getScenario().approximation)) {
-    if (!(options_.qThreshold >= 0) || !(options_.qMinimum >= 0)) {
-        throw InputError("approx: the quality thresholds Q_Th and Q_M must be >= 0 (0 = automatic)");
-    }
-    if (!(options_.releaseSlideDistance > 0)) throw InputError("approx: the release slide distance must be > 0 m");
-    if (!(options_.maxEngagedPenetration > 0)) throw InputError("approx: the engaged penetration bound must be > 0 m");
-    if (options_.qThreshold > 0 && options_.qMinimum >= options_.qThreshold) {
-        throw InputError(format("approx: Q_M (%g N) must be below Q_Th (%g N)", options_.qMinimum, options_.qThreshold));
-    }
-    GraspSwitchRecord initial{options_.qThreshold, 0, SimTK::Transform(), {}, EngagedGraspTracker(scene)};
+GraspSwitch::GraspSwitch(const ApproximationContext& context, SimTK::GeneralForceSubsystem& forces,
+                         const ApproxOptions& options)
+    : SimTK::PeriodicEventHandler(context.ikInterval), context_(context), options_(options) {
+    GraspSwitchRecord initial{options_.qThreshold, 0, SimTK::Transform(), {}, EngagedGraspTracker(context)};
     initial.qMinimum = options_.qMinimum > 0 ? options_.qMinimum : options_.hysteresisFraction * initial.qThreshold;
     auto* keeper = new RecordKeeper(forces, std::move(initial));
     SimTK::Force::Custom(forces, keeper);
     keeper_ = keeper;
-    const model::ModelDescription& d = scene.getModel().getDescription();
-    for (const std::string& e : scene.getGoalEndEffectors()) goalBodies_.push_back(d.findEndEffector(e)->body);
-    if (scene.getMultiAttachment()) multi_ = std::make_unique<MultiAttachmentSwitch>(scene, options.releaseSlideDistance, options.maxEngagedPenetration);
+    const model::ModelDescription& d = context.model.getDescription();
+    for (const std::string& e : context.goals.getEndEffectors()) goalBodies_.push_back(d.findEndEffector(e)->body);
+    if (context.multi) multi_ = std::make_unique<MultiAttachmentSwitch>(context, options.releaseSlideDistance, options.maxEngagedPenetration);
 }
 
 GraspSwitch::~GraspSwitch() = default;
@@ -196,7 +172,7 @@ private:
 
 SimTK::TriggeredEventHandler* GraspSwitch::makeDetachWitness() const { return multi_ ? new DetachWitness(*this) : nullptr; }
 
-bool GraspSwitch::isEngaged(const SimTK::State& state) const { return attachment_.isEngaged(state); }
+bool GraspSwitch::isEngaged(const SimTK::State& state) const { return context_.attachment.isEngaged(state); }
 
 void GraspSwitch::handleEvent(SimTK::State& state, SimTK::Real accuracy, bool& shouldTerminate) const {
     shouldTerminate = false;
@@ -204,18 +180,18 @@ void GraspSwitch::handleEvent(SimTK::State& state, SimTK::Real accuracy, bool& s
         checkRelease(state);  // IK paused: the fingers are locked to the palm
         return;
     }
-    controller_.handleEvent(state, accuracy, shouldTerminate);
-    if (!scene_.isObjectHeld(state)) checkEngage(state);  // only once the object is released
+    context_.controller.handleEvent(state, accuracy, shouldTerminate);
+    if (!context_.hold.isHeld(state)) checkEngage(state);  // only once the object is released
 }
 
 double GraspSwitch::calcQuality(const SimTK::State& state) const {
-    scene_.getSystem().realize(state, SimTK::Stage::Velocity);
-    return calcQualityOf(state, scene_.getCompliantContacts().findContactReports(state));
+    context_.model.getSystem().realize(state, SimTK::Stage::Velocity);
+    return calcQualityOf(state, context_.contacts.findContactReports(state));
 }
 
 double GraspSwitch::calcQualityOf(const SimTK::State& state, const std::vector<contact::ContactReport>& reports) const {
-    return calcContactGraspQuality(reports, scene_.getObject().getBodyTransform(state),
-                                   makeQualityOptions(scene_.getContactParameters()));
+    return calcContactGraspQuality(reports, context_.object.getBodyTransform(state),
+                                   makeQualityOptions(context_.contactParameters));
 }
 
 double GraspSwitch::calcEngagedQuality(const SimTK::State& state) const {
@@ -226,8 +202,8 @@ double GraspSwitch::calcEngagedQuality(const SimTK::State& state) const {
     } else {
         // Multi: the fingers move on their own and the palm-fixed tracker does not apply; Q is that
         // of the contacts every pair would produce in `state`, switched on or not.
-        scene_.getSystem().realize(state, SimTK::Stage::Velocity);
-        q = calcQualityOf(state, scene_.getCompliantContacts().findContactReports(state, scene_.getCompliantContacts().findAllPairIndices()));
+        context_.model.getSystem().realize(state, SimTK::Stage::Velocity);
+        q = calcQualityOf(state, context_.contacts.findContactReports(state, context_.contacts.findAllPairIndices()));
     }
     if (state.getSystemStage() >= SimTK::Stage::Velocity) keeper_->setEngagedQuality(state, q);
     return q;
@@ -245,20 +221,20 @@ bool GraspSwitch::isFullContact(const std::vector<contact::ContactReport>& repor
 // release) was re-engaged and dragged through the locked fingertips.
 bool GraspSwitch::isSticking(const std::vector<contact::ContactReport>& reports) const {
     if (multi_) return multi_->isSticking(reports);
-    const double limit = scene_.getContactParameters().transitionVelocity;
+    const double limit = context_.contactParameters.transitionVelocity;
     return std::all_of(reports.begin(), reports.end(),
                        [&](const contact::ContactReport& c) { return c.slipVelocity_G.norm() < limit; });
 }
 
 // One set of contact reports serves every test of the check and the engagement itself.
 void GraspSwitch::checkEngage(SimTK::State& state) const {
-    scene_.getSystem().realize(state, SimTK::Stage::Velocity);
-    const std::vector<contact::ContactReport> reports = scene_.getCompliantContacts().findContactReports(state);
+    context_.model.getSystem().realize(state, SimTK::Stage::Velocity);
+    const std::vector<contact::ContactReport> reports = context_.contacts.findContactReports(state);
     if (!isFullContact(reports)) return;
     const double q = calcQualityOf(state, reports);
     if (getRecord(state).qThreshold == 0) {
         // Automatic Q_Th from the first full-contact check once the grasp has settled.
-        if (state.getTime() < scene_.getScenario().simulation.settleTime - 1e-12) return;
+        if (state.getTime() < context_.settleTime - 1e-12) return;
         GraspSwitchRecord& record = updRecord(state);
         record.qThreshold = options_.autoThresholdFraction * q;
         if (options_.qMinimum == 0) record.qMinimum = options_.hysteresisFraction * record.qThreshold;
@@ -290,22 +266,22 @@ void GraspSwitch::engage(SimTK::State& state, double quality, const std::vector<
         return;
     }
     grasp::AttachmentEngagement engagement;
-    const contact::ContactParameters& pair = scene_.getContactParameters();
+    const contact::ContactParameters& pair = context_.contactParameters;
     const double mu = options_.staticFrictionLimits ? pair.staticFriction : pair.dynamicFriction;
     const SimTK::Vec3 p_GC = findContactCentroid(reports);
     placeConstraintFrames(state, p_GC, engagement);
     if (options_.limitModel == grasp::FrictionLimitModel::Thesis) {
         engagement.limits = calcFrictionLimits(reports, mu);
     } else {
-        engagement.limits = calcContactGeometryLimits(reports, mu, scene_.getObject().getBodyTransform(state).R(), p_GC);
+        engagement.limits = calcContactGeometryLimits(reports, mu, context_.object.getBodyTransform(state).R(), p_GC);
     }
     engagement.leverArm = findLeverArm(reports, p_GC);
     engagement.penetrationBound = options_.maxEngagedPenetration;
     for (int k = 0; k < 6; ++k) engagement.lockedAxes[k] = !(*options_.relaxedAxes)[k];
-    scene_.getCompliantContacts().setPairsEnabled(state, scene_.getCompliantContacts().findAllPairIndices(), false);  // (b)
+    context_.contacts.setPairsEnabled(state, context_.contacts.findAllPairIndices(), false);  // (b)
     setFingersMerged(state, true);                                                        // (c)
-    attachment_.engage(state, engagement);                                                // (d)
-    const SimTK::Transform X_HO = ~scene_.getPalm().getBodyTransform(state) * scene_.getObject().getBodyTransform(state);
+    context_.attachment.engage(state, engagement);                                                // (d)
+    const SimTK::Transform X_HO = ~context_.palm.getBodyTransform(state) * context_.object.getBodyTransform(state);
     GraspSwitchRecord& record = updRecord(state);
     record.X_HO_engaged = X_HO;
     record.events.push_back({state.getTime(), GraspEventKind::Engage, quality, describeEngagement(qThreshold, engagement.limits)});  // (e)
@@ -314,8 +290,8 @@ void GraspSwitch::engage(SimTK::State& state, double quality, const std::vector<
 // F on the palm and M on the object coincide at the contact centroid, with O's orientation.
 void GraspSwitch::placeConstraintFrames(const SimTK::State& state, const SimTK::Vec3& p_GC,
                                         grasp::AttachmentEngagement& engagement) const {
-    const SimTK::Transform& X_GO = scene_.getObject().getBodyTransform(state);
-    const SimTK::Transform& X_GH = scene_.getPalm().getBodyTransform(state);
+    const SimTK::Transform& X_GO = context_.object.getBodyTransform(state);
+    const SimTK::Transform& X_GH = context_.palm.getBodyTransform(state);
     engagement.X_OM = SimTK::Transform(~X_GO * p_GC);  // O's orientation
     engagement.X_HF = ~X_GH * X_GO * engagement.X_OM;
 }
@@ -348,27 +324,27 @@ void GraspSwitch::checkRelease(SimTK::State& state) const {
 
 // Empty while the approximation still holds; otherwise the first reason to release, with numbers.
 std::string GraspSwitch::describeRelease(const SimTK::State& state, double quality) const {
-    scene_.getSystem().realize(state, SimTK::Stage::Position);
-    const SimTK::Transform X_HO = ~scene_.getPalm().getBodyTransform(state) * scene_.getObject().getBodyTransform(state);
+    context_.model.getSystem().realize(state, SimTK::Stage::Position);
+    const SimTK::Transform X_HO = ~context_.palm.getBodyTransform(state) * context_.object.getBodyTransform(state);
     const GraspSwitchRecord& record = getRecord(state);
     const double slide = (X_HO.p() - record.X_HO_engaged.p()).norm();
     if (slide > options_.releaseSlideDistance) {
         return format("object slid %.6g m in the hand (limit %.6g m)", slide, options_.releaseSlideDistance);
     }
-    const double distance = scene_.findMaxFingertipGoalDistance(state);
-    const double tolerance = scene_.getScenario().simulation.heldTolerance;
+    const double distance = context_.goals.findMaxDistance(state);
+    const double tolerance = context_.heldTolerance;
     if (distance > tolerance) return format("fingertip %.6g m from its goal (held tolerance %.6g m)", distance, tolerance);
     if (quality < record.qMinimum) return format("Q < Q_M = %.6g N", record.qMinimum);
     return {};
 }
 
 void GraspSwitch::release(SimTK::State& state, double quality, const std::string& reason) const {
-    const SimTK::MultibodySystem& system = scene_.getSystem();
+    const SimTK::MultibodySystem& system = context_.model.getSystem();
     system.realize(state, SimTK::Stage::Velocity);
-    const SimTK::Vec3 v_before = scene_.getObject().getBodyOriginVelocity(state);
-    attachment_.release(state);
+    const SimTK::Vec3 v_before = context_.object.getBodyOriginVelocity(state);
+    context_.attachment.release(state);
     if (!multi_) setFingersMerged(state, false);  // multi never merges them
-    scene_.getCompliantContacts().setPairsEnabled(state, scene_.getCompliantContacts().findAllPairIndices(), true);
+    context_.contacts.setPairsEnabled(state, context_.contacts.findAllPairIndices(), true);
     const double velocityJump = findVelocityJump(state, v_before);
     updRecord(state).events.push_back({state.getTime(), GraspEventKind::Release, quality, reason, velocityJump});
 }
@@ -376,18 +352,18 @@ void GraspSwitch::release(SimTK::State& state, double quality, const std::string
 // The object's velocity as the integrator will restart from it: realized after the switch and
 // projected onto whatever constraints remain, as the TimeStepper's reinitialization does.
 double GraspSwitch::findVelocityJump(SimTK::State& state, const SimTK::Vec3& v_before) const {
-    const SimTK::MultibodySystem& system = scene_.getSystem();
+    const SimTK::MultibodySystem& system = context_.model.getSystem();
     system.realize(state, SimTK::Stage::Velocity);
     system.projectU(state, 1e-12);
     system.realize(state, SimTK::Stage::Velocity);
-    return (scene_.getObject().getBodyOriginVelocity(state) - v_before).norm();
+    return (context_.object.getBodyOriginVelocity(state) - v_before).norm();
 }
 
 // Locking at Motion::Position keeps each finger joint at its current angle (and zero rate
 // relative to its parent): the fingers become part of one rigid body with the palm.
 void GraspSwitch::setFingersMerged(SimTK::State& state, bool merged) const {
-    const SimTK::SimbodyMatterSubsystem& matter = scene_.getModel().getMatter();
-    for (SimTK::MobilizedBodyIndex index : scene_.getFingerMobilizers()) {
+    const SimTK::SimbodyMatterSubsystem& matter = context_.model.getMatter();
+    for (SimTK::MobilizedBodyIndex index : context_.fingerMobilizers) {
         const SimTK::MobilizedBody& mobod = matter.getMobilizedBody(index);
         if (merged) {
             mobod.lock(state, SimTK::Motion::Position);
