@@ -3,6 +3,7 @@
 #include "graspsim/error.h"
 #include "graspsim/integration/simbody_stepper.h"
 #include "graspsim/integration/cvode_integrator.h"
+#include "graspsim/simulation/grasp_approximation.h"
 #include "graspsim/simulation/grasp_scene.h"
 #include "graspsim/simulation/grasp_switch.h"
 #include "graspsim/simulation/rigid_stepping.h"
@@ -12,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iterator>
+#include <optional>
 
 namespace graspsim::capacity {
 
@@ -22,7 +24,9 @@ constexpr double kGravity = 9.81;  // m/s^2, for the default rate only
 // The scene and its stepper: CPodes or CVODE for compliant contact, the rigid stepper for rigid.
 class GraspRun : public LoadedRun {
 public:
-    GraspRun(const scenario::Scenario& scenario, simulation::SimulationOptions options) : scene_(scenario, options) {
+    GraspRun(const scenario::Scenario& scenario, simulation::SimulationOptions options)
+        : approxOptions_(resolveApproxOptions(scenario, options)), scene_(scenario, options) {
+        if (approxOptions_) approximation_ = std::make_unique<simulation::GraspApproximation>(scene_, *approxOptions_);
         if (options.contact == simulation::ContactModel::Rigid) {
             rigid_ = std::make_unique<simulation::RigidStepper>(scene_);
             rigid_->initialize(scene_.makeInitialState());
@@ -49,7 +53,7 @@ public:
     }
 
     void captureReference() override {
-        const simulation::GraspSwitch* grasp = scene_.getGraspSwitch();
+        const simulation::GraspSwitch* grasp = findSwitch();
         if (grasp && !grasp->isEngaged(getState())) {
             throw NumericalError("capacity: the approximation is not engaged at the load's start, t = " +
                                  std::to_string(getState().getTime()) + " s; use --mode full or lower --q-threshold");
@@ -65,13 +69,13 @@ public:
         const SimTK::Rotation R_change = ~R_HO0 * findObjectInPalm().R();
         s.rotation = std::abs(R_change.convertRotationToAngleAxis()[0]);
         for (std::size_t k = 0; k < now.size(); ++k) s.slip = std::max(s.slip, (now[k] - reference_[k]).norm());
-        if (const simulation::GraspSwitch* grasp = scene_.getGraspSwitch()) s.engaged = grasp->isEngaged(getState()) ? 1 : 0;
+        if (const simulation::GraspSwitch* grasp = findSwitch()) s.engaged = grasp->isEngaged(getState()) ? 1 : 0;
         s.held = scene_.findMaxFingertipGoalDistance(getState()) <= scene_.getScenario().simulation.heldTolerance;
         return s;
     }
 
     std::string findReleaseReason() const override {
-        const simulation::GraspSwitch* grasp = scene_.getGraspSwitch();
+        const simulation::GraspSwitch* grasp = findSwitch();
         if (!grasp) return {};
         for (const simulation::GraspEvent& e : grasp->getEvents(getState())) {
             if (e.kind == simulation::GraspEventKind::Release) return "t = " + std::to_string(e.time) + " s: " + e.reason;
@@ -80,6 +84,13 @@ public:
     }
 
 private:
+    static std::optional<simulation::ApproxOptions> resolveApproxOptions(const scenario::Scenario& scenario,
+                                                                         const simulation::SimulationOptions& options) {
+        if (options.mode != simulation::SimulationMode::Approx) return std::nullopt;
+        return simulation::resolveApproxOptions(options.approx, scenario.approximation);
+    }
+    const simulation::GraspSwitch* findSwitch() const { return approximation_ ? &approximation_->getSwitch() : nullptr; }
+
     const SimTK::State& getState() const { return rigid_ ? rigid_->getState() : stepper_->getState(); }
 
     void stepTo(double t) {
@@ -118,7 +129,9 @@ private:
         return points;
     }
 
+    std::optional<simulation::ApproxOptions> approxOptions_;  // resolved before the scene is built
     simulation::GraspScene scene_;
+    std::unique_ptr<simulation::GraspApproximation> approximation_;  // approx mode
     std::unique_ptr<integration::Stepper> stepper_;
     std::unique_ptr<simulation::RigidStepper> rigid_;
     std::vector<SimTK::Vec3> reference_;

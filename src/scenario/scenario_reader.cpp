@@ -5,6 +5,7 @@
 #include "graspsim/anthropometry/sex.h"
 #include "graspsim/anthropometry/subject.h"
 #include "graspsim/anthropometry/units.h"
+#include "graspsim/error.h"
 #include "graspsim/model/body_model.h"
 
 #include <algorithm>
@@ -172,6 +173,21 @@ contact::FrictionSettings readFriction(const YamlField& section) {
     return friction;
 }
 
+// The rules between fields (dynamic friction at most static) are ContactParameters::validate()'s
+// alone; its message is given the place of the field to change: dynamic_friction, or, when that
+// is left at its default, static_friction.
+void validateContactParameters(const YamlField& section, const contact::ContactParameters& contact) {
+    try {
+        contact.validate("contact");
+    } catch (const InputError& e) {
+        if (const std::optional<YamlField> dynamic = section.find("dynamic_friction")) dynamic->reject(e.what());
+        if (const std::optional<YamlField> stat = section.find("static_friction")) {
+            stat->reject(std::string(e.what()) + " (dynamic_friction not given: its default)");
+        }
+        throw InputError(section.describePlace() + ": " + e.what());
+    }
+}
+
 // The pair's parameters, each with the rule of ContactParameters::validate(), applied here to
 // name the file, line and field of a bad value; fields left out keep ContactParameters's defaults.
 contact::ContactParameters readContactParameters(const YamlField& section) {
@@ -182,13 +198,13 @@ contact::ContactParameters readContactParameters(const YamlField& section) {
         section.findNumber("dissipation", NumberRule::nonNegative("dissipation", "s/m"), contact.dissipation);
     contact.staticFriction =
         section.findNumber("static_friction", NumberRule::nonNegative("static friction", ""), contact.staticFriction);
-    const NumberRule dynamic =
-        NumberRule::closed("dynamic friction (at most static_friction)", "", 0, contact.staticFriction);
-    contact.dynamicFriction = readFitting(section, "dynamic_friction", dynamic, contact.dynamicFriction);
+    contact.dynamicFriction = section.findNumber(
+        "dynamic_friction", NumberRule::nonNegative("dynamic friction", ""), contact.dynamicFriction);
     contact.viscousFriction = section.findNumber(
         "viscous_friction", NumberRule::nonNegative("viscous friction", "s/m"), contact.viscousFriction);
     contact.transitionVelocity = section.findNumber(
         "transition_velocity", NumberRule::positive("transition velocity", "m/s"), contact.transitionVelocity);
+    validateContactParameters(section, contact);
     return contact;
 }
 

@@ -6,7 +6,7 @@ namespace graspsim::simulation {
 
 std::optional<ConstraintSample> findConstraintSample(const GraspScene& scene, const SimTK::State& state) {
     const grasp::GraspAttachment* attachment = scene.getAttachment();
-    if (!scene.getGraspSwitch() || !attachment || !attachment->isEngaged(state)) return std::nullopt;
+    if (!attachment || !attachment->isEngaged(state)) return std::nullopt;
     scene.getSystem().realize(state, attachment->getReactionStage());
     const std::optional<grasp::SingleConstraintState> c = attachment->findSingleConstraintState(state);
     if (!c) return std::nullopt;

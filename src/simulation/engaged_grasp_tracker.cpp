@@ -3,7 +3,6 @@
 #include "graspsim/grasp/grasp_quality.h"
 #include "graspsim/grasp/wrench_distribution.h"
 #include "graspsim/simulation/contact_grasp_quality.h"
-#include "graspsim/simulation/grasp_scene.h"
 
 #include <algorithm>
 #include <numeric>
@@ -24,11 +23,11 @@ grasp::ObjectFrame toObjectFrame(const SimTK::Transform& X_GO) {
 
 }  // namespace
 
-EngagedGraspTracker::EngagedGraspTracker(const GraspScene& scene) : scene_(&scene) {}
+EngagedGraspTracker::EngagedGraspTracker(const ApproximationContext& context) : context_(&context) {}
 
 void EngagedGraspTracker::capture(const SimTK::State& state, const std::vector<contact::ContactReport>& reports) {
-    const SimTK::Transform& X_GH = scene_->getPalm().getBodyTransform(state);
-    const SimTK::Transform& X_GO = scene_->getObject().getBodyTransform(state);
+    const SimTK::Transform& X_GH = context_->palm.getBodyTransform(state);
+    const SimTK::Transform& X_GO = context_->object.getBodyTransform(state);
     tracked_.clear();
     depthAtEngage_.clear();
     penetration_.atEngage = 0;
@@ -47,17 +46,17 @@ void EngagedGraspTracker::capture(const SimTK::State& state, const std::vector<c
 // (Acceleration), a bushing's a force of the state (Velocity): realizing only what the attachment
 // needs spares a forward-dynamics solve per check.
 SimTK::SpatialVec EngagedGraspTracker::findConstraintWrench(const SimTK::State& state) const {
-    const grasp::GraspAttachment& attachment = *scene_->getAttachment();
-    scene_->getSystem().realize(state, attachment.getReactionStage());
+    const grasp::GraspAttachment& attachment = context_->attachment;
+    context_->model.getSystem().realize(state, attachment.getReactionStage());
     return attachment.findReactionOnObject(state);
 }
 
 double EngagedGraspTracker::calcQuality(const SimTK::State& state) const {
     if (tracked_.empty()) return 0;
     const SimTK::SpatialVec W = findConstraintWrench(state);
-    const SimTK::Transform& X_GH = scene_->getPalm().getBodyTransform(state);
-    const SimTK::Transform& X_GO = scene_->getObject().getBodyTransform(state);
-    const scenario::ObjectSpec& object = scene_->getScenario().object;
+    const SimTK::Transform& X_GH = context_->palm.getBodyTransform(state);
+    const SimTK::Transform& X_GO = context_->object.getBodyTransform(state);
+    const scenario::ObjectSpec& object = context_->objectShape;
     std::vector<grasp::GraspContact> contacts;
     std::vector<Eigen::Vector3d> reference;
     for (const TrackedContact& t : tracked_) {
@@ -72,7 +71,7 @@ double EngagedGraspTracker::calcQuality(const SimTK::State& state) const {
     }
     Eigen::Matrix<double, 6, 1> wrench;
     wrench << toEigen(W[0]), toEigen(W[1]);
-    const grasp::QualityOptions options = makeQualityOptions(scene_->getContactParameters());
+    const grasp::QualityOptions options = makeQualityOptions(context_->contactParameters);
     const grasp::ObjectFrame frame = toObjectFrame(X_GO);
     const grasp::WrenchDistribution d = grasp::distributeWrench(contacts, frame, wrench, reference, options.mu);
     for (std::size_t i = 0; i < contacts.size(); ++i) contacts[i].normalForce = d.normalForces[i];
@@ -82,12 +81,12 @@ double EngagedGraspTracker::calcQuality(const SimTK::State& state) const {
 double EngagedGraspTracker::measurePenetration(const SimTK::State& state) {
     // Only the pairs the approximation has switched off: those in ordinary contact (with multi,
     // the palm and digits without a goal) compress under load as they would in full contact.
-    const contact::CompliantContactForce& pairs = scene_->getCompliantContacts();
+    const contact::CompliantContactForce& pairs = context_->contacts;
     std::vector<int> replaced;
     for (int k = 0; k < pairs.getNumPairs(); ++k) {
         if (!pairs.isPairEnabled(state, k)) replaced.push_back(k);
     }
-    scene_->getSystem().realize(state, SimTK::Stage::Position);
+    context_->model.getSystem().realize(state, SimTK::Stage::Position);
     double deepest = 0;
     for (const contact::ContactDepth& c : pairs.findContactDepths(state, replaced)) {
         deepest = std::max(deepest, c.depth);

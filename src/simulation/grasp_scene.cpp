@@ -4,7 +4,6 @@
 #include "graspsim/error.h"
 #include "graspsim/grasp/limited_bushing_law.h"
 #include "graspsim/model/body_model.h"
-#include "graspsim/simulation/grasp_switch.h"
 
 #include <algorithm>
 #include <cmath>
@@ -115,10 +114,12 @@ void GraspScene::addObject(bool onPalm) {
     const SimTK::Body::Rigid body(SimTK::MassProperties(b.mass, p_OCm, I_Cm.shiftFromMassCenter(p_OCm, b.mass)));
     SimTK::MobilizedBody& parent = onPalm ? updPalm() : model_.updMatter().updGround();
     object_ = SimTK::MobilizedBody::Free(parent, SimTK::Transform(), body, SimTK::Transform());
+    SimTK::Constraint::Weld groundWeld;  // empty unless the object hangs from the palm
     if (onPalm) {
-        groundHold_ = SimTK::Constraint::Weld(model_.updMatter().updGround(), toTransform(scenario_.object.findPose()),
-                                              object_, SimTK::Transform());
+        groundWeld = SimTK::Constraint::Weld(model_.updMatter().updGround(), toTransform(scenario_.object.findPose()),
+                                             object_, SimTK::Transform());
     }
+    hold_ = ObjectHold(object_, groundWeld);
 }
 
 void GraspScene::addContacts() {
@@ -221,24 +222,22 @@ void GraspScene::addController(const SimulationOptions& options) {
     pd_ = std::make_unique<control::JointPdController>(model_, joints, armBodies);
 
     std::vector<std::string> ikJoints;
+    goals_ = FingertipGoals(model_, object_);
     for (const auto& [endEffector, p_OT] : scenario_.goals) {
         for (const std::string& j : findFingerJoints(d, endEffector)) ikJoints.push_back(j);
-        goalEndEffectors_.push_back(endEffector);
-        surfaceGoals_.push_back(toVec3(p_OT));
+        goals_.add(endEffector, toVec3(p_OT));
     }
     model_.realizeTopology();  // Simbody's Assembler (inside the IK) needs a realized topology
-    ik_ = std::make_unique<control::FingertipIk>(model_, goalEndEffectors_, ikJoints);
+    ik_ = std::make_unique<control::FingertipIk>(model_, goals_.getEndEffectors(), ikJoints);
     const double ikInterval = scenario_.controller.ikInterval;
     controller_ = new control::GraspController(*pd_, *ik_, ikJoints, getPalm(), ikInterval, ikTiming_);
     if (options.mode == SimulationMode::Full) {
         model_.updSystem().addEventHandler(controller_);
         return;
     }
-    // Approx: the switch runs the IK while the grasp is not approximated, so it can pause it.
+    // Approx: the grasp switch on top of the scene runs the IK while the grasp is not
+    // approximated, so that it can pause it.
     ownedController_.reset(controller_);
-    switch_ = new GraspSwitch(*this, model_.updForces(), *controller_, options.approx, ikInterval);
-    model_.updSystem().addEventHandler(switch_);
-    if (SimTK::TriggeredEventHandler* witness = switch_->makeDetachWitness()) model_.updSystem().addEventHandler(witness);
 }
 
 SimTK::State GraspScene::makeInitialState() {
@@ -259,11 +258,11 @@ SimTK::State GraspScene::makeInitialState() {
     const SimTK::Transform X_HG = ~model_.getMobilizedBody(palmBody_).getBodyTransform(state);
     const SimTK::Transform& X_GO = object_.getBodyTransform(state);
     std::vector<control::FingertipGoal> goals;
-    for (std::size_t k = 0; k < goalEndEffectors_.size(); ++k) {
-        const SimTK::Vec3& onSurface = surfaceGoals_[k];
+    for (std::size_t k = 0; k < goals_.getEndEffectors().size(); ++k) {
+        const SimTK::Vec3& onSurface = goals_.getSurfacePoints()[k];
         const model::Vec3 n_O = scenario_.object.findOutwardNormal({onSurface[0], onSurface[1], onSurface[2]});
         const SimTK::Vec3 p_OT = onSurface - scenario_.controller.pressDepth * toVec3(n_O);
-        goals.push_back({goalEndEffectors_[k], X_HG * (X_GO * p_OT)});
+        goals.push_back({goals_.getEndEffectors()[k], X_HG * (X_GO * p_OT)});
     }
     controller_->setGoals(goals);
     controller_->updateTargets(state);
@@ -276,36 +275,13 @@ SimTK::State GraspScene::makeInitialState() {
 // object hangs from the palm (its coordinates then depend on where the grasp pose put the palm).
 void GraspScene::placeObject(SimTK::State& state) const {
     const SimTK::Transform X_GO = toTransform(scenario_.object.findPose());
-    if (groundHold_.isEmptyHandle()) {
+    if (!hold_.isByGroundWeld()) {
         object_.setQToFitTransform(state, X_GO);
         object_.lock(state, SimTK::Motion::Position);
         return;
     }
     model_.getSystem().realize(state, SimTK::Stage::Position);
     object_.setQToFitTransform(state, ~getPalm().getBodyTransform(state) * X_GO);
-}
-
-double GraspScene::findMaxFingertipGoalDistance(const SimTK::State& state) const {
-    getSystem().realize(state, SimTK::Stage::Position);
-    const SimTK::Transform& X_GO = object_.getBodyTransform(state);
-    double worst = 0;
-    for (std::size_t k = 0; k < goalEndEffectors_.size(); ++k) {
-        const SimTK::Vec3 p_GE = model_.findEndEffectorLocationInGround(state, goalEndEffectors_[k]);
-        worst = std::max(worst, (p_GE - X_GO * surfaceGoals_[k]).norm());
-    }
-    return worst;
-}
-
-void GraspScene::releaseObject(SimTK::State& state) const {
-    if (groundHold_.isEmptyHandle()) {
-        object_.unlock(state);
-    } else {
-        groundHold_.disable(state);
-    }
-}
-
-bool GraspScene::isObjectHeld(const SimTK::State& state) const {
-    return groundHold_.isEmptyHandle() ? object_.isLocked(state) : !groundHold_.isDisabled(state);
 }
 
 }  // namespace graspsim::simulation

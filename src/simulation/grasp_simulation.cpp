@@ -9,6 +9,7 @@
 #include "graspsim/integration/linearly_implicit_stepper.h"
 #include "graspsim/integration/simbody_stepper.h"
 #include "graspsim/simulation/contact_grasp_quality.h"
+#include "graspsim/simulation/grasp_approximation.h"
 #include "graspsim/simulation/grasp_scene.h"
 #include "graspsim/simulation/rigid_stepping.h"
 
@@ -16,6 +17,7 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <set>
 
 namespace graspsim::simulation {
@@ -44,7 +46,8 @@ std::vector<double> makeSampleTimes(const GraspScene& scene, double duration) {
 
 class Recorder {
 public:
-    Recorder(const GraspScene& scene, SimulationResult& result) : scene_(scene), result_(result) {
+    Recorder(const GraspScene& scene, const GraspSwitch* grasp, SimulationResult& result)
+        : scene_(scene), grasp_(grasp), result_(result) {
         result_.jointNames = scene.getModel().getJointNames();
         for (const std::string& j : result_.jointNames) jointQ_.push_back(scene.getModel().getJointQIndex(j));
         qualityOptions_ = makeQualityOptions(scene.getContactParameters());
@@ -59,10 +62,9 @@ public:
         sample.q_GO = X_GO.R().convertRotationToQuaternion();
         for (const SimTK::QIndex q : jointQ_) sample.jointAngles.push_back(s.getQ()[q]);
         ContactSample contacts{s.getTime(), scene_.findContactReports(s)};
-        const GraspSwitch* grasp = scene_.getGraspSwitch();
-        if (grasp && grasp->isEngaged(s)) {
+        if (grasp_ && grasp_->isEngaged(s)) {
             // No contacts are solved while engaged: record the estimate the release test uses.
-            sample.graspQuality = grasp->calcEngagedQuality(s);
+            sample.graspQuality = grasp_->calcEngagedQuality(s);
             const double q = sample.graspQuality;
             double& lowest = result_.summary.minEngagedGraspQuality;
             lowest = engagedSamples_++ == 0 ? q : std::min(lowest, q);
@@ -78,6 +80,7 @@ public:
 
 private:
     const GraspScene& scene_;
+    const GraspSwitch* grasp_;  // approx mode only
     SimulationResult& result_;
     grasp::QualityOptions qualityOptions_;  // box friction cone, smallest singular value
     std::vector<SimTK::QIndex> jointQ_;     // per joint name, looked up once: a sample is taken every 10 ms
@@ -106,7 +109,7 @@ constexpr int toIndex(RunPhase phase) { return static_cast<int>(phase); }
 // Wall time and integrator steps per phase of the run, split at output samples.
 class PhaseTimer {
 public:
-    explicit PhaseTimer(const GraspScene& scene) : scene_(scene) {}
+    PhaseTimer(const GraspScene& scene, const GraspSwitch* grasp) : scene_(scene), grasp_(grasp) {}
 
     void mark(const SimTK::State& s, long steps) {
         const double now = std::chrono::duration<double>(Clock::now().time_since_epoch()).count();
@@ -140,14 +143,14 @@ public:
 private:
     RunPhase findPhase(const SimTK::State& s) const {
         if (scene_.isObjectHeld(s)) return RunPhase::Held;
-        const GraspSwitch* grasp = scene_.getGraspSwitch();
-        if (!grasp || grasp->getEvents(s).empty()) return RunPhase::FullContact;
-        const auto& events = grasp->getEvents(s);
+        if (!grasp_ || grasp_->getEvents(s).empty()) return RunPhase::FullContact;
+        const auto& events = grasp_->getEvents(s);
         const bool released = std::any_of(events.begin(), events.end(), [](const GraspEvent& e) { return e.kind == GraspEventKind::Release; });
-        return grasp->isEngaged(s) && !released ? RunPhase::FirstEngagement : RunPhase::AfterEngagement;  // detach events (multi) keep the first engagement
+        return grasp_->isEngaged(s) && !released ? RunPhase::FirstEngagement : RunPhase::AfterEngagement;  // detach events (multi) keep the first engagement
     }
 
     const GraspScene& scene_;
+    const GraspSwitch* grasp_;  // approx mode only
     RunPhase phase_ = RunPhase::Held;
     double lastWall_ = std::chrono::duration<double>(Clock::now().time_since_epoch()).count();
     long lastSteps_ = 0, totalSteps_ = 0;
@@ -170,7 +173,7 @@ long countSteps(const RigidStepper& stepper) { return stepper.getNumSteps(); }
 // Steps from sample to sample, releasing the object on time; `lastEvent` says what happened last.
 // AnyStepper: an integration::Stepper (CPodes, CVODE) or the rigid model's RigidStepper.
 template <class AnyStepper>
-void stepThroughSamples(const GraspScene& scene, AnyStepper& stepper, Recorder& recorder, PhaseTimer& phases,
+void stepThroughSamples(const GraspScene& scene, const GraspSwitch* grasp, AnyStepper& stepper, Recorder& recorder, PhaseTimer& phases,
                         double duration, const ProgressCallback& progress, const SampleObserver& observer,
                         std::string& lastEvent) {
     for (double t : makeSampleTimes(scene, duration)) {
@@ -183,7 +186,7 @@ void stepThroughSamples(const GraspScene& scene, AnyStepper& stepper, Recorder& 
             lastEvent = "object released at t = " + std::to_string(t) + " s";
         }
         recorder.record(stepper.getState());
-        if (observer) observer(scene, stepper.getState());
+        if (observer) observer(scene, grasp, stepper.getState());
         if (progress) progress(t, duration);
     }
 }
@@ -258,7 +261,7 @@ void summarizeCost(const GraspScene& scene, const PhaseTimer& timer, double ikSe
     summary.dynamicsUsPerStep = (summary.wallTime - ikSeconds) * perStep;
 }
 
-void summarizeSwitch(const GraspScene& scene, const PhaseTimer& timer, const SimTK::State& last, SimulationResult& result) {
+void summarizeSwitch(const GraspSwitch* grasp, const PhaseTimer& timer, const SimTK::State& last, SimulationResult& result) {
     SimulationSummary& summary = result.summary;
     summary.fullStepUs = timer.findUsPerStep(RunPhase::FullContact);
     summary.approxStepUs = timer.findUsPerStep(RunPhase::FirstEngagement);
@@ -266,7 +269,6 @@ void summarizeSwitch(const GraspScene& scene, const PhaseTimer& timer, const Sim
     summary.approxWallPerSimSecond = timer.findWallPerSimSecond(RunPhase::FirstEngagement);
     summary.fullSteps = timer.getSteps(RunPhase::FullContact);
     summary.approxSteps = timer.getSteps(RunPhase::FirstEngagement);
-    const GraspSwitch* grasp = scene.getGraspSwitch();
     if (!grasp) return;
     result.events = grasp->getEvents(last);
     summary.qThreshold = grasp->getQualityThreshold(last);
@@ -301,32 +303,32 @@ void summarizeDrift(const SimulationResult& result, SimulationSummary& summary) 
     summary.objectDisplacement = (result.trajectory.back().p_GO - settled->p_GO).norm();
 }
 
-void summarizeRun(const GraspScene& scene, const PhaseTimer& phases, double ikSeconds, const SimTK::State& last,
-                  SimulationResult& result) {
+void summarizeRun(const GraspScene& scene, const GraspSwitch* grasp, const PhaseTimer& phases, double ikSeconds,
+                  const SimTK::State& last, SimulationResult& result) {
     SimulationSummary& summary = result.summary;
     summary.simTime = last.getTime();
     summarizeCost(scene, phases, ikSeconds, summary);
     summarizeDrift(result, summary);
     summarizeGrip(scene, last, summary);
-    summarizeSwitch(scene, phases, last, result);
+    summarizeSwitch(grasp, phases, last, result);
 }
 
 // Runs `scene` on `stepper` (an integration::Stepper or the rigid model's RigidStepper) from its
 // initial state to `duration`, filling `result` except the integrator's name and statistics.
 // `failureVerb` says what failed when the stepper throws something other than a NumericalError.
 template <class AnyStepper>
-void runScene(GraspScene& scene, AnyStepper& stepper, double duration, const char* failureVerb,
+void runScene(GraspScene& scene, const GraspSwitch* grasp, AnyStepper& stepper, double duration, const char* failureVerb,
               const ProgressCallback& progress, const SampleObserver& observer, SimulationResult& result) {
-    Recorder recorder(scene, result);
+    Recorder recorder(scene, grasp, result);
     stepper.initialize(scene.makeInitialState());
     result.summary.initialPenetration = scene.getSetupCheck().initialPenetration;
     recorder.record(stepper.getState());
     std::string lastEvent = "start";
-    PhaseTimer phases(scene);
+    PhaseTimer phases(scene, grasp);
     const auto start = Clock::now();
     const double ikBefore = scene.getIkTiming().totalSeconds;
     try {
-        stepThroughSamples(scene, stepper, recorder, phases, duration, progress, observer, lastEvent);
+        stepThroughSamples(scene, grasp, stepper, recorder, phases, duration, progress, observer, lastEvent);
         result.summary.complete = true;
     } catch (const NumericalError& e) {
         result.summary.failure = foldToOneLine(e.what());
@@ -338,7 +340,7 @@ void runScene(GraspScene& scene, AnyStepper& stepper, double duration, const cha
                                  " s (last event: " + lastEvent + "): " + foldToOneLine(e.what());
     }
     result.summary.wallTime = std::chrono::duration<double>(Clock::now() - start).count();
-    summarizeRun(scene, phases, scene.getIkTiming().totalSeconds - ikBefore, stepper.getState(), result);
+    summarizeRun(scene, grasp, phases, scene.getIkTiming().totalSeconds - ikBefore, stepper.getState(), result);
 }
 
 }  // namespace
@@ -346,19 +348,24 @@ void runScene(GraspScene& scene, AnyStepper& stepper, double duration, const cha
 SimulationResult runGraspSimulation(const scenario::Scenario& scenario, const SimulationOptions& options,
                                     const ProgressCallback& progress, const SampleObserver& observer) {
     const double duration = options.duration > 0 ? options.duration : scenario.simulation.duration;
+    std::optional<ApproxOptions> approxOptions;
+    if (options.mode == SimulationMode::Approx) approxOptions = resolveApproxOptions(options.approx, scenario.approximation);
     GraspScene scene(scenario, options);
+    std::unique_ptr<GraspApproximation> approximation;
+    if (approxOptions) approximation = std::make_unique<GraspApproximation>(scene, *approxOptions);
+    const GraspSwitch* grasp = approximation ? &approximation->getSwitch() : nullptr;
     SimulationResult result;
     result.summary = makeSummaryHeader(scenario, options, duration);
     if (options.contact == ContactModel::Rigid) {
         // Rigid contact: Simbody's SemiExplicitEulerTimeStepper at a fixed step (rigid_stepping.h).
         RigidStepper stepper(scene);
-        runScene(scene, stepper, duration, "stepping failed", progress, observer, result);
+        runScene(scene, grasp, stepper, duration, "stepping failed", progress, observer, result);
         result.summary.integrator = "simbody-semiexpliciteuler-pgs";
         return result;
     }
     const SceneStepper made = makeStepper(scene, options);
     const std::unique_ptr<integration::Stepper>& stepper = made.stepper;
-    runScene(scene, *stepper, duration, "integration failed", progress, observer, result);
+    runScene(scene, grasp, *stepper, duration, "integration failed", progress, observer, result);
     result.summary.integrator = stepper->getMethodName();
     result.summary.integratorStatistics = stepper->getStatistics();
     return result;

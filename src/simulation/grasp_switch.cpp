@@ -3,7 +3,6 @@
 #include "graspsim/error.h"
 #include "graspsim/grasp/limited_bushing_law.h"
 #include "graspsim/simulation/contact_grasp_quality.h"
-#include "graspsim/simulation/grasp_scene.h"
 #include "graspsim/simulation/multi_attachment_switch.h"
 
 #include <algorithm>
@@ -76,20 +75,6 @@ double findLeverArm(const std::vector<contact::ContactReport>& reports, const Si
     return arm;
 }
 
-// The run's options over the scenario's approximation section: a value given to the run wins.
-ApproxOptions resolveOptions(const ApproxOptions& given, const scenario::ApproximationSpec& scenario) {
-    ApproxOptions options = given;
-    if (options.qThreshold == 0) options.qThreshold = scenario.qThreshold;
-    if (options.qMinimum == 0) options.qMinimum = scenario.qMinimum;
-    if (!options.relaxedAxes) options.relaxedAxes = scenario.relaxedAxes;
-    return options;
-}
-
-const grasp::GraspAttachment& findAttachment(const GraspScene& scene) {
-    if (!scene.getAttachment()) throw Error("grasp switch: the scene has no attachment (not an approx-mode scene)");
-    return *scene.getAttachment();
-}
-
 }  // namespace
 
 std::string toString(GraspEventKind kind) {
@@ -110,12 +95,26 @@ public:
 
     void realizeTopology(SimTK::State& state) const override {
         recordIndex_ = forces_.allocateDiscreteVariable(state, SimTK::Stage::Report, new SimTK::Value<GraspSwitchRecord>(initial_));
+        // Valid until the time, q, u or an Instance-stage flag changes: exactly what the engaged
+        // quality is a function of (with the tracked contacts, which change only at engagement).
+        qualityIndex_ = forces_.allocateLazyCacheEntry(state, SimTK::Stage::Velocity, new SimTK::Value<double>(0));
     }
     const GraspSwitchRecord& getRecord(const SimTK::State& state) const {
         return SimTK::Value<GraspSwitchRecord>::downcast(forces_.getDiscreteVariable(state, recordIndex_)).get();
     }
     GraspSwitchRecord& updRecord(SimTK::State& state) const {
         return SimTK::Value<GraspSwitchRecord>::updDowncast(forces_.updDiscreteVariable(state, recordIndex_)).upd();
+    }
+
+    /// The engaged quality already computed for `state`, or nullptr.
+    const double* findEngagedQuality(const SimTK::State& state) const {
+        if (!forces_.isCacheValueRealized(state, qualityIndex_)) return nullptr;
+        return &SimTK::Value<double>::downcast(forces_.getCacheEntry(state, qualityIndex_)).get();
+    }
+    /// Keeps `quality` with `state` (a cache entry: the State is const). Needs Stage::Velocity.
+    void setEngagedQuality(const SimTK::State& state, double quality) const {
+        SimTK::Value<double>::updDowncast(forces_.updCacheEntry(state, qualityIndex_)).upd() = quality;
+        forces_.markCacheValueRealized(state, qualityIndex_);
     }
 
     void calcForce(const SimTK::State&, SimTK::Vector_<SimTK::SpatialVec>&, SimTK::Vector_<SimTK::Vec3>&,
@@ -125,29 +124,23 @@ public:
 private:
     const SimTK::GeneralForceSubsystem& forces_;
     GraspSwitchRecord initial_;
-    mutable SimTK::DiscreteVariableIndex recordIndex_;  // set once, at realizeTopology (Simbody's pattern)
+    // Set once, at realizeTopology, where Simbody hands a const element the State to allocate in:
+    // Simbody's own pattern for indices (no state of the simulation lives here).
+    mutable SimTK::DiscreteVariableIndex recordIndex_;
+    mutable SimTK::CacheEntryIndex qualityIndex_;
 };
 
-GraspSwitch::GraspSwitch(const GraspScene& scene, SimTK::GeneralForceSubsystem& forces,
-                         const control::GraspController& controller, const ApproxOptions& options, double interval)
-    : SimTK::PeriodicEventHandler(interval), scene_(scene), controller_(controller),
-      attachment_(findAttachment(scene)), options_(resolveOptions(options, scene.getScenario().approximation)) {
-    if (!(options_.qThreshold >= 0) || !(options_.qMinimum >= 0)) {
-        throw InputError("approx: the quality thresholds Q_Th and Q_M must be >= 0 (0 = automatic)");
-    }
-    if (!(options_.releaseSlideDistance > 0)) throw InputError("approx: the release slide distance must be > 0 m");
-    if (!(options_.maxEngagedPenetration > 0)) throw InputError("approx: the engaged penetration bound must be > 0 m");
-    if (options_.qThreshold > 0 && options_.qMinimum >= options_.qThreshold) {
-        throw InputError(format("approx: Q_M (%g N) must be below Q_Th (%g N)", options_.qMinimum, options_.qThreshold));
-    }
-    GraspSwitchRecord initial{options_.qThreshold, 0, SimTK::Transform(), {}, EngagedGraspTracker(scene)};
+GraspSwitch::GraspSwitch(const ApproximationContext& context, SimTK::GeneralForceSubsystem& forces,
+                         const ApproxOptions& options)
+    : SimTK::PeriodicEventHandler(context.ikInterval), context_(context), options_(options) {
+    GraspSwitchRecord initial{options_.qThreshold, 0, SimTK::Transform(), {}, EngagedGraspTracker(context)};
     initial.qMinimum = options_.qMinimum > 0 ? options_.qMinimum : options_.hysteresisFraction * initial.qThreshold;
     auto* keeper = new RecordKeeper(forces, std::move(initial));
     SimTK::Force::Custom(forces, keeper);
     keeper_ = keeper;
-    const model::ModelDescription& d = scene.getModel().getDescription();
-    for (const std::string& e : scene.getGoalEndEffectors()) goalBodies_.push_back(d.findEndEffector(e)->body);
-    if (scene.getMultiAttachment()) multi_ = std::make_unique<MultiAttachmentSwitch>(scene, options.releaseSlideDistance, options.maxEngagedPenetration);
+    const model::ModelDescription& d = context.model.getDescription();
+    for (const std::string& e : context.goals.getEndEffectors()) goalBodies_.push_back(d.findEndEffector(e)->body);
+    if (context.multi) multi_ = std::make_unique<MultiAttachmentSwitch>(context, options.releaseSlideDistance, options.maxEngagedPenetration);
 }
 
 GraspSwitch::~GraspSwitch() = default;
@@ -179,19 +172,7 @@ private:
 
 SimTK::TriggeredEventHandler* GraspSwitch::makeDetachWitness() const { return multi_ ? new DetachWitness(*this) : nullptr; }
 
-bool GraspSwitch::QualityMemo::isFor(const SimTK::State& state) const {
-    const SimTK::Vector& stateY = state.getY();
-    if (time != state.getTime() || y.size() != stateY.size()) return false;
-    if (y.hasContiguousData() && stateY.hasContiguousData()) {
-        return std::equal(&y[0], &y[0] + y.size(), &stateY[0]);  // element access costs a call each
-    }
-    for (int i = 0; i < y.size(); ++i) {
-        if (y[i] != stateY[i]) return false;
-    }
-    return true;
-}
-
-bool GraspSwitch::isEngaged(const SimTK::State& state) const { return attachment_.isEngaged(state); }
+bool GraspSwitch::isEngaged(const SimTK::State& state) const { return context_.attachment.isEngaged(state); }
 
 void GraspSwitch::handleEvent(SimTK::State& state, SimTK::Real accuracy, bool& shouldTerminate) const {
     shouldTerminate = false;
@@ -199,32 +180,32 @@ void GraspSwitch::handleEvent(SimTK::State& state, SimTK::Real accuracy, bool& s
         checkRelease(state);  // IK paused: the fingers are locked to the palm
         return;
     }
-    controller_.handleEvent(state, accuracy, shouldTerminate);
-    if (!scene_.isObjectHeld(state)) checkEngage(state);  // only once the object is released
+    context_.controller.handleEvent(state, accuracy, shouldTerminate);
+    if (!context_.hold.isHeld(state)) checkEngage(state);  // only once the object is released
 }
 
 double GraspSwitch::calcQuality(const SimTK::State& state) const {
-    scene_.getSystem().realize(state, SimTK::Stage::Velocity);
-    return calcQualityOf(state, scene_.getCompliantContacts().findContactReports(state));
+    context_.model.getSystem().realize(state, SimTK::Stage::Velocity);
+    return calcQualityOf(state, context_.contacts.findContactReports(state));
 }
 
 double GraspSwitch::calcQualityOf(const SimTK::State& state, const std::vector<contact::ContactReport>& reports) const {
-    return calcContactGraspQuality(reports, scene_.getObject().getBodyTransform(state),
-                                   makeQualityOptions(scene_.getContactParameters()));
+    return calcContactGraspQuality(reports, context_.object.getBodyTransform(state),
+                                   makeQualityOptions(context_.contactParameters));
 }
 
 double GraspSwitch::calcEngagedQuality(const SimTK::State& state) const {
-    if (memo_.isFor(state)) return memo_.quality;
+    if (const double* known = keeper_->findEngagedQuality(state)) return *known;
     double q = 0;
     if (!multi_) {
         q = getRecord(state).tracker.calcQuality(state);
     } else {
         // Multi: the fingers move on their own and the palm-fixed tracker does not apply; Q is that
         // of the contacts every pair would produce in `state`, switched on or not.
-        scene_.getSystem().realize(state, SimTK::Stage::Velocity);
-        q = calcQualityOf(state, scene_.getCompliantContacts().findContactReports(state, scene_.getCompliantContacts().findAllPairIndices()));
+        context_.model.getSystem().realize(state, SimTK::Stage::Velocity);
+        q = calcQualityOf(state, context_.contacts.findContactReports(state, context_.contacts.findAllPairIndices()));
     }
-    memo_ = {state.getTime(), state.getY(), q};
+    if (state.getSystemStage() >= SimTK::Stage::Velocity) keeper_->setEngagedQuality(state, q);
     return q;
 }
 
@@ -240,20 +221,20 @@ bool GraspSwitch::isFullContact(const std::vector<contact::ContactReport>& repor
 // release) was re-engaged and dragged through the locked fingertips.
 bool GraspSwitch::isSticking(const std::vector<contact::ContactReport>& reports) const {
     if (multi_) return multi_->isSticking(reports);
-    const double limit = scene_.getContactParameters().transitionVelocity;
+    const double limit = context_.contactParameters.transitionVelocity;
     return std::all_of(reports.begin(), reports.end(),
                        [&](const contact::ContactReport& c) { return c.slipVelocity_G.norm() < limit; });
 }
 
 // One set of contact reports serves every test of the check and the engagement itself.
 void GraspSwitch::checkEngage(SimTK::State& state) const {
-    scene_.getSystem().realize(state, SimTK::Stage::Velocity);
-    const std::vector<contact::ContactReport> reports = scene_.getCompliantContacts().findContactReports(state);
+    context_.model.getSystem().realize(state, SimTK::Stage::Velocity);
+    const std::vector<contact::ContactReport> reports = context_.contacts.findContactReports(state);
     if (!isFullContact(reports)) return;
     const double q = calcQualityOf(state, reports);
     if (getRecord(state).qThreshold == 0) {
         // Automatic Q_Th from the first full-contact check once the grasp has settled.
-        if (state.getTime() < scene_.getScenario().simulation.settleTime - 1e-12) return;
+        if (state.getTime() < context_.settleTime - 1e-12) return;
         GraspSwitchRecord& record = updRecord(state);
         record.qThreshold = options_.autoThresholdFraction * q;
         if (options_.qMinimum == 0) record.qMinimum = options_.hysteresisFraction * record.qThreshold;
@@ -277,7 +258,6 @@ std::string GraspSwitch::describeEngagement(double qThreshold, const SimTK::Vec6
 }
 
 void GraspSwitch::engage(SimTK::State& state, double quality, const std::vector<contact::ContactReport>& reports) const {
-    memo_ = {};
     updRecord(state).tracker.capture(state, reports);  // penetration, for both attachments; Q tracking is merged's
     const double qThreshold = getRecord(state).qThreshold;
     if (multi_) {
@@ -286,22 +266,22 @@ void GraspSwitch::engage(SimTK::State& state, double quality, const std::vector<
         return;
     }
     grasp::AttachmentEngagement engagement;
-    const contact::ContactParameters& pair = scene_.getContactParameters();
+    const contact::ContactParameters& pair = context_.contactParameters;
     const double mu = options_.staticFrictionLimits ? pair.staticFriction : pair.dynamicFriction;
     const SimTK::Vec3 p_GC = findContactCentroid(reports);
     placeConstraintFrames(state, p_GC, engagement);
     if (options_.limitModel == grasp::FrictionLimitModel::Thesis) {
         engagement.limits = calcFrictionLimits(reports, mu);
     } else {
-        engagement.limits = calcContactGeometryLimits(reports, mu, scene_.getObject().getBodyTransform(state).R(), p_GC);
+        engagement.limits = calcContactGeometryLimits(reports, mu, context_.object.getBodyTransform(state).R(), p_GC);
     }
     engagement.leverArm = findLeverArm(reports, p_GC);
     engagement.penetrationBound = options_.maxEngagedPenetration;
     for (int k = 0; k < 6; ++k) engagement.lockedAxes[k] = !(*options_.relaxedAxes)[k];
-    scene_.getCompliantContacts().setPairsEnabled(state, scene_.getCompliantContacts().findAllPairIndices(), false);  // (b)
+    context_.contacts.setPairsEnabled(state, context_.contacts.findAllPairIndices(), false);  // (b)
     setFingersMerged(state, true);                                                        // (c)
-    attachment_.engage(state, engagement);                                                // (d)
-    const SimTK::Transform X_HO = ~scene_.getPalm().getBodyTransform(state) * scene_.getObject().getBodyTransform(state);
+    context_.attachment.engage(state, engagement);                                                // (d)
+    const SimTK::Transform X_HO = ~context_.palm.getBodyTransform(state) * context_.object.getBodyTransform(state);
     GraspSwitchRecord& record = updRecord(state);
     record.X_HO_engaged = X_HO;
     record.events.push_back({state.getTime(), GraspEventKind::Engage, quality, describeEngagement(qThreshold, engagement.limits)});  // (e)
@@ -310,14 +290,13 @@ void GraspSwitch::engage(SimTK::State& state, double quality, const std::vector<
 // F on the palm and M on the object coincide at the contact centroid, with O's orientation.
 void GraspSwitch::placeConstraintFrames(const SimTK::State& state, const SimTK::Vec3& p_GC,
                                         grasp::AttachmentEngagement& engagement) const {
-    const SimTK::Transform& X_GO = scene_.getObject().getBodyTransform(state);
-    const SimTK::Transform& X_GH = scene_.getPalm().getBodyTransform(state);
+    const SimTK::Transform& X_GO = context_.object.getBodyTransform(state);
+    const SimTK::Transform& X_GH = context_.palm.getBodyTransform(state);
     engagement.X_OM = SimTK::Transform(~X_GO * p_GC);  // O's orientation
     engagement.X_HF = ~X_GH * X_GO * engagement.X_OM;
 }
 
 void GraspSwitch::checkRelease(SimTK::State& state) const {
-    const std::size_t eventsBefore = getRecord(state).events.size();
     double q = 0;
     std::string reason;
     // Written back only when a maximum grew: writing the record (a discrete variable) at every
@@ -341,32 +320,31 @@ void GraspSwitch::checkRelease(SimTK::State& state) const {
         reason = describeRelease(state, q);
     }
     if (!reason.empty()) release(state, q, reason);
-    if (getRecord(state).events.size() != eventsBefore) memo_ = {};  // a detach or the release changed the state
 }
 
 // Empty while the approximation still holds; otherwise the first reason to release, with numbers.
 std::string GraspSwitch::describeRelease(const SimTK::State& state, double quality) const {
-    scene_.getSystem().realize(state, SimTK::Stage::Position);
-    const SimTK::Transform X_HO = ~scene_.getPalm().getBodyTransform(state) * scene_.getObject().getBodyTransform(state);
+    context_.model.getSystem().realize(state, SimTK::Stage::Position);
+    const SimTK::Transform X_HO = ~context_.palm.getBodyTransform(state) * context_.object.getBodyTransform(state);
     const GraspSwitchRecord& record = getRecord(state);
     const double slide = (X_HO.p() - record.X_HO_engaged.p()).norm();
     if (slide > options_.releaseSlideDistance) {
         return format("object slid %.6g m in the hand (limit %.6g m)", slide, options_.releaseSlideDistance);
     }
-    const double distance = scene_.findMaxFingertipGoalDistance(state);
-    const double tolerance = scene_.getScenario().simulation.heldTolerance;
+    const double distance = context_.goals.findMaxDistance(state);
+    const double tolerance = context_.heldTolerance;
     if (distance > tolerance) return format("fingertip %.6g m from its goal (held tolerance %.6g m)", distance, tolerance);
     if (quality < record.qMinimum) return format("Q < Q_M = %.6g N", record.qMinimum);
     return {};
 }
 
 void GraspSwitch::release(SimTK::State& state, double quality, const std::string& reason) const {
-    const SimTK::MultibodySystem& system = scene_.getSystem();
+    const SimTK::MultibodySystem& system = context_.model.getSystem();
     system.realize(state, SimTK::Stage::Velocity);
-    const SimTK::Vec3 v_before = scene_.getObject().getBodyOriginVelocity(state);
-    attachment_.release(state);
+    const SimTK::Vec3 v_before = context_.object.getBodyOriginVelocity(state);
+    context_.attachment.release(state);
     if (!multi_) setFingersMerged(state, false);  // multi never merges them
-    scene_.getCompliantContacts().setPairsEnabled(state, scene_.getCompliantContacts().findAllPairIndices(), true);
+    context_.contacts.setPairsEnabled(state, context_.contacts.findAllPairIndices(), true);
     const double velocityJump = findVelocityJump(state, v_before);
     updRecord(state).events.push_back({state.getTime(), GraspEventKind::Release, quality, reason, velocityJump});
 }
@@ -374,18 +352,18 @@ void GraspSwitch::release(SimTK::State& state, double quality, const std::string
 // The object's velocity as the integrator will restart from it: realized after the switch and
 // projected onto whatever constraints remain, as the TimeStepper's reinitialization does.
 double GraspSwitch::findVelocityJump(SimTK::State& state, const SimTK::Vec3& v_before) const {
-    const SimTK::MultibodySystem& system = scene_.getSystem();
+    const SimTK::MultibodySystem& system = context_.model.getSystem();
     system.realize(state, SimTK::Stage::Velocity);
     system.projectU(state, 1e-12);
     system.realize(state, SimTK::Stage::Velocity);
-    return (scene_.getObject().getBodyOriginVelocity(state) - v_before).norm();
+    return (context_.object.getBodyOriginVelocity(state) - v_before).norm();
 }
 
 // Locking at Motion::Position keeps each finger joint at its current angle (and zero rate
 // relative to its parent): the fingers become part of one rigid body with the palm.
 void GraspSwitch::setFingersMerged(SimTK::State& state, bool merged) const {
-    const SimTK::SimbodyMatterSubsystem& matter = scene_.getModel().getMatter();
-    for (SimTK::MobilizedBodyIndex index : scene_.getFingerMobilizers()) {
+    const SimTK::SimbodyMatterSubsystem& matter = context_.model.getMatter();
+    for (SimTK::MobilizedBodyIndex index : context_.fingerMobilizers) {
         const SimTK::MobilizedBody& mobod = matter.getMobilizedBody(index);
         if (merged) {
             mobod.lock(state, SimTK::Motion::Position);

@@ -4,7 +4,6 @@
 #include "graspsim/grasp/limited_bushing_law.h"
 #include "graspsim/grasp/multi_attachment.h"
 #include "graspsim/model/body_model.h"
-#include "graspsim/simulation/grasp_scene.h"
 #include "graspsim/simulation/grasp_switch.h"
 
 #include <algorithm>
@@ -63,11 +62,11 @@ grasp::FingerLoad calcFingerLoad(const std::vector<const contact::ContactReport*
 
 }  // namespace
 
-MultiAttachmentSwitch::MultiAttachmentSwitch(const GraspScene& scene, double slideLimit, double penetrationBound)
-    : scene_(scene), slideLimit_(slideLimit), penetrationBound_(penetrationBound) {
-    const model::ModelDescription& d = scene.getModel().getDescription();
-    const contact::CompliantContactForce& contacts = scene.getCompliantContacts();
-    for (const std::string& endEffector : scene.getGoalEndEffectors()) {
+MultiAttachmentSwitch::MultiAttachmentSwitch(const ApproximationContext& context, double slideLimit, double penetrationBound)
+    : context_(context), slideLimit_(slideLimit), penetrationBound_(penetrationBound) {
+    const model::ModelDescription& d = context.model.getDescription();
+    const contact::CompliantContactForce& contacts = context.contacts;
+    for (const std::string& endEffector : context.goals.getEndEffectors()) {
         fingerBodies_.push_back(findDigitBodies(d, endEffector));
         fingerPairs_.emplace_back();
     }
@@ -87,7 +86,7 @@ int MultiAttachmentSwitch::findFinger(const std::string& body) const {
 }
 
 bool MultiAttachmentSwitch::isSticking(const std::vector<contact::ContactReport>& reports) const {
-    const double limit = scene_.getContactParameters().transitionVelocity;
+    const double limit = context_.contactParameters.transitionVelocity;
     for (const contact::ContactReport& c : reports) {
         if (findFinger(c.bodyA) >= 0 && !(c.slipVelocity_G.norm() < limit)) return false;
     }
@@ -103,25 +102,24 @@ std::string MultiAttachmentSwitch::engage(SimTK::State& state, const std::vector
     // Only the goal digits' pairs: the palm and digits without a goal stay in ordinary contact.
     std::vector<int> replaced;
     for (const std::vector<int>& pairs : fingerPairs_) replaced.insert(replaced.end(), pairs.begin(), pairs.end());
-    scene_.getCompliantContacts().setPairsEnabled(state, replaced, false);
+    context_.contacts.setPairsEnabled(state, replaced, false);
     grasp::AttachmentEngagement engagement;
-    engagement.mu = scene_.getContactParameters().dynamicFriction;
+    engagement.mu = context_.contactParameters.dynamicFriction;
     engagement.penetrationBound = penetrationBound_;
     std::string text = "multi: tangent limits";
-    const auto& g = scene_.getScenario().world.gravity;
     for (std::size_t i = 0; i < perFinger.size(); ++i) {
         grasp::FingerLoad load = calcFingerLoad(perFinger[i]);
-        load.tangentHint_G = SimTK::Vec3(g[0], g[1], g[2]);  // the main load: exact along it
+        load.tangentHint_G = context_.gravity_G;  // the main load: exact along it
         engagement.fingers.push_back(load);
-        text += " " + scene_.getGoalEndEffectors()[i] + format(" %.4g N", engagement.mu * load.normalForce);
+        text += " " + context_.goals.getEndEffectors()[i] + format(" %.4g N", engagement.mu * load.normalForce);
     }
-    scene_.getMultiAttachment()->engage(state, engagement);
+    context_.multi->engage(state, engagement);
     return text;
 }
 
 std::string MultiAttachmentSwitch::update(SimTK::State& state, double quality, std::vector<GraspEvent>& events) const {
-    const grasp::MultiAttachment& multi = *scene_.getMultiAttachment();
-    scene_.getSystem().realize(state, SimTK::Stage::Velocity);
+    const grasp::MultiAttachment& multi = *context_.multi;
+    context_.model.getSystem().realize(state, SimTK::Stage::Velocity);
     std::vector<std::pair<int, std::string>> leaving;
     for (int i = 0; i < multi.getNumParts(); ++i) {
         if (!multi.isAttached(state, i)) continue;
@@ -130,8 +128,8 @@ std::string MultiAttachmentSwitch::update(SimTK::State& state, double quality, s
     }
     for (const auto& [i, reason] : leaving) {
         multi.detach(state, i);
-        scene_.getCompliantContacts().setPairsEnabled(state, fingerPairs_[static_cast<std::size_t>(i)], true);
-        events.push_back({state.getTime(), GraspEventKind::Detach, quality, scene_.getGoalEndEffectors()[static_cast<std::size_t>(i)] + ": " + reason});
+        context_.contacts.setPairsEnabled(state, fingerPairs_[static_cast<std::size_t>(i)], true);
+        events.push_back({state.getTime(), GraspEventKind::Detach, quality, context_.goals.getEndEffectors()[static_cast<std::size_t>(i)] + ": " + reason});
     }
     const int attached = multi.countAttached(state);
     if (attached >= kMinAttachedFingers) return {};
@@ -140,21 +138,19 @@ std::string MultiAttachmentSwitch::update(SimTK::State& state, double quality, s
 
 // Empty while finger i still holds; needs Stage::Velocity.
 std::string MultiAttachmentSwitch::describeDetach(const SimTK::State& state, int finger) const {
-    const grasp::MultiAttachment& multi = *scene_.getMultiAttachment();
+    const grasp::MultiAttachment& multi = *context_.multi;
     const double pressing = multi.findPressingForce(state, finger);
     if (!(pressing > 0)) return format("stopped pressing (normal force %.4g N)", pressing);
     const double slide = multi.findSlide(state, finger);
     if (slide > slideLimit_) return format("slid %.4g m on the object (limit %.4g m)", slide, slideLimit_);
-    const std::size_t k = static_cast<std::size_t>(finger);
-    const SimTK::Vec3 p_GE = scene_.getModel().findEndEffectorLocationInGround(state, scene_.getGoalEndEffectors()[k]);
-    const double distance = (p_GE - scene_.getObject().getBodyTransform(state) * scene_.getSurfaceGoals()[k]).norm();
-    const double tolerance = scene_.getScenario().simulation.heldTolerance;
+    const double distance = context_.goals.findDistance(state, static_cast<std::size_t>(finger));
+    const double tolerance = context_.heldTolerance;
     if (distance > tolerance) return format("fingertip %.4g m from its goal (held tolerance %.4g m)", distance, tolerance);
     return {};
 }
 
 double MultiAttachmentSwitch::findSmallestPressing(const SimTK::State& state) const {
-    const grasp::MultiAttachment& multi = *scene_.getMultiAttachment();
+    const grasp::MultiAttachment& multi = *context_.multi;
     double smallest = SimTK::Infinity;
     for (int i = 0; i < multi.getNumParts(); ++i) {
         if (multi.isAttached(state, i)) smallest = std::min(smallest, multi.findPressingForce(state, i));
@@ -163,8 +159,8 @@ double MultiAttachmentSwitch::findSmallestPressing(const SimTK::State& state) co
 }
 
 void MultiAttachmentSwitch::release(SimTK::State& state) const {
-    scene_.getMultiAttachment()->detachAll(state);
-    const contact::CompliantContactForce& contacts = scene_.getCompliantContacts();
+    context_.multi->detachAll(state);
+    const contact::CompliantContactForce& contacts = context_.contacts;
     contacts.setPairsEnabled(state, contacts.findAllPairIndices(), true);
 }
 

@@ -86,6 +86,8 @@ void requireSetup(const SetupCheck& check, const std::string& where) {
 }
 
 SetupCheck checkScenarioSetup(const scenario::Scenario& scenario, const SimulationOptions& options) {
+    // The approximation's options too: a run checked here must not fail on them once its folder exists.
+    if (options.mode == SimulationMode::Approx) resolveApproxOptions(options.approx, scenario.approximation);
     GraspScene scene(scenario, options);
     scene.makeInitialState();  // checks the initial state
     return scene.getSetupCheck();

@@ -4,6 +4,8 @@
 #include "graspsim/model/body_model.h"
 #include "graspsim/scenario/scenario.h"
 
+#include <cstdio>
+
 namespace graspsim::simulation {
 
 ContactModel parseContactModel(const std::string& text, const std::string& source) {
@@ -65,6 +67,24 @@ void checkApproxAttach(const scenario::Scenario& scenario, const SimulationOptio
         throw InputError("--attach: 'multi' is not accepted for scenario '" + scenario.name + "': goal end-effector '" +
                          endEffector + "' is on a body without contact geometry; use --attach merged");
     }
+}
+
+ApproxOptions resolveApproxOptions(const ApproxOptions& given, const scenario::ApproximationSpec& scenario) {
+    ApproxOptions options = given;
+    if (options.qThreshold == 0) options.qThreshold = scenario.qThreshold;
+    if (options.qMinimum == 0) options.qMinimum = scenario.qMinimum;
+    if (!options.relaxedAxes) options.relaxedAxes = scenario.relaxedAxes;
+    if (!(options.qThreshold >= 0) || !(options.qMinimum >= 0)) {
+        throw InputError("approx: the quality thresholds Q_Th and Q_M must be >= 0 (0 = automatic)");
+    }
+    if (!(options.releaseSlideDistance > 0)) throw InputError("approx: the release slide distance must be > 0 m");
+    if (!(options.maxEngagedPenetration > 0)) throw InputError("approx: the engaged penetration bound must be > 0 m");
+    if (options.qThreshold > 0 && options.qMinimum >= options.qThreshold) {
+        char text[160];
+        std::snprintf(text, sizeof text, "approx: Q_M (%g N) must be below Q_Th (%g N)", options.qMinimum, options.qThreshold);
+        throw InputError(text);
+    }
+    return options;
 }
 
 }  // namespace graspsim::simulation

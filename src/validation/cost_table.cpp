@@ -51,11 +51,10 @@ public:
     // `endTime`: the run's last sample, after which its System is gone.
     ApproxRunMeter(ApproxCost& cost, int realizations, double endTime) : cost_(cost), realizations_(realizations), endTime_(endTime) {}
 
-    void observe(const simulation::GraspScene& scene, const SimTK::State& state) {
+    void observe(const simulation::GraspScene& scene, const simulation::GraspSwitch* grasp, const SimTK::State& state) {
         const Mark here = clock_.mark(state.getTime(), scene.getSystem());
         const double before = clock_.getObservingSeconds();
         clock_.beginObserving(scene.getSystem());
-        const simulation::GraspSwitch* grasp = scene.getGraspSwitch();
         if (!scene.isObjectHeld(state) && grasp) observeReleased(scene, state, *grasp, here);
         if (state.getTime() >= endTime_ - 1e-9) ownFloor_.reset();
         clock_.endObserving(scene.getSystem());
@@ -126,8 +125,8 @@ ApproxCost measureApprox(const scenario::Scenario& s, simulation::ApproxConstrai
     options.approx.constraint = constraint;
     options.duration = duration + kHoldSeconds;
     ApproxRunMeter meter(cost, realizations, options.duration);
-    const simulation::SampleObserver observe = [&](const simulation::GraspScene& scene, const SimTK::State& state) {
-        meter.observe(scene, state);
+    const simulation::SampleObserver observe = [&](const simulation::GraspScene& scene, const simulation::GraspSwitch* grasp, const SimTK::State& state) {
+        meter.observe(scene, grasp, state);
     };
     meter.finish(simulation::runGraspSimulation(s, options, {}, observe).summary);
     return cost;
@@ -138,7 +137,7 @@ ApproxCost measureApprox(const scenario::Scenario& s, simulation::ApproxConstrai
 // per-step figures.
 void measureFloor(const scenario::Scenario& s, const simulation::SimulationOptions& options, int realizations,
                   ExperimentCost& cost) {
-    const simulation::SampleObserver observe = [&](const simulation::GraspScene& scene, const SimTK::State& state) {
+    const simulation::SampleObserver observe = [&](const simulation::GraspScene& scene, const simulation::GraspSwitch*, const SimTK::State& state) {
         if (state.getTime() < options.duration - 1e-9) return;
         const SimTK::State floor = makeFloorState(scene, state);
         cost.floorRealizeUs = timeRealization(scene.getSystem(), floor, realizations);
@@ -197,7 +196,7 @@ EndEffectorCost measureEndEffectors(int count, double duration, int realizations
     EndEffectorCost cost;
     cost.endEffectors = count;
     double endTime = duration;
-    const simulation::SampleObserver observe = [&](const simulation::GraspScene& scene, const SimTK::State& state) {
+    const simulation::SampleObserver observe = [&](const simulation::GraspScene& scene, const simulation::GraspSwitch*, const SimTK::State& state) {
         if (state.getTime() >= endTime - 1e-9) cost.realizeUs = timeRealization(scene.getSystem(), state, realizations);
     };
     const simulation::SimulationSummary r = simulation::runGraspSimulation(s, options, {}, observe).summary;

@@ -4,10 +4,12 @@
 
 #include "graspsim/simulation/grasp_simulation.h"
 
+#include "graspsim/simulation/grasp_approximation.h"
 #include "graspsim/simulation/grasp_scene.h"
 #include "graspsim/simulation/grasp_switch.h"
 
 #include "graspsim/error.h"
+#include "graspsim/grasp/limited_weld.h"
 #include "graspsim/scenario/scenario_file.h"
 
 #include <gtest/gtest.h>
@@ -153,16 +155,19 @@ TEST(GraspSwitch, WeldObjectIsHeldByTheGroundWeldThenByTheMobilizerLock) {
     bool haveEngagedPose = false;
     SimTK::Transform X_PO_engaged;
     double drift = 0;
-    const simulation::SampleObserver observe = [&](const simulation::GraspScene& scene, const SimTK::State& state) {
+    const simulation::SampleObserver observe = [&](const simulation::GraspScene& scene,
+                                                   const simulation::GraspSwitch* grasp, const SimTK::State& state) {
         EXPECT_EQ(scene.getObject().getParentMobilizedBody().getMobilizedBodyIndex(), scene.getPalm().getMobilizedBodyIndex());
         if (scene.isObjectHeld(state)) {
             heldTimes.push_back(state.getTime());
             heldPositions.push_back(scene.getObject().getBodyOriginLocation(state));
         }
-        const simulation::GraspSwitch* grasp = scene.getGraspSwitch();
+        ASSERT_NE(grasp, nullptr);
         if (!grasp->isEngaged(state)) return;
         ++engagedSamples;
-        if (scene.getWeld()->isHeldByLock(state)) ++lockedSamples;
+        const auto* weld = dynamic_cast<const grasp::LimitedWeld*>(scene.getAttachment());
+        ASSERT_NE(weld, nullptr);
+        if (weld->isHeldByLock(state)) ++lockedSamples;
         const SimTK::Transform X_PO = ~scene.getPalm().getBodyTransform(state) * scene.getObject().getBodyTransform(state);
         if (!haveEngagedPose) {
             X_PO_engaged = X_PO;
@@ -193,7 +198,8 @@ TEST(GraspSwitch, WeldObjectIsHeldByTheGroundWeldThenByTheMobilizerLock) {
 TEST(GraspSwitch, EachStateCarriesItsOwnRecord) {
     const scenario::Scenario s = scenario::findBuiltinScenario("phone-pinch");
     std::vector<SimTK::State> samples;
-    const simulation::SampleObserver observe = [&](const simulation::GraspScene&, const SimTK::State& state) {
+    const simulation::SampleObserver observe = [&](const simulation::GraspScene&, const simulation::GraspSwitch*,
+                                                   const SimTK::State& state) {
         samples.push_back(state);
     };
     const auto r = simulation::runGraspSimulation(
@@ -205,7 +211,8 @@ TEST(GraspSwitch, EachStateCarriesItsOwnRecord) {
     // A fresh scene reads the copied States (the record lives in them, not in the switch).
     simulation::SimulationOptions options = makeOptions(simulation::SimulationMode::Approx, 1);
     simulation::GraspScene scene(s, options);
-    const simulation::GraspSwitch& grasp = *scene.getGraspSwitch();
+    const simulation::GraspApproximation approximation(scene, simulation::resolveApproxOptions(options.approx, s.approximation));
+    const simulation::GraspSwitch& grasp = approximation.getSwitch();
     int before = 0, after = 0;
     for (const SimTK::State& state : samples) {
         const std::vector<simulation::GraspEvent>& events = grasp.getEvents(state);

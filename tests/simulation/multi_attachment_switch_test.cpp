@@ -97,7 +97,7 @@ TEST(MultiAttachmentSwitch, ADetachedFingerCarriesNothingAndReturnsToContactWhil
     // Per sample: which parts are attached, the force of the detached ones, fingertip-goal distances.
     std::map<std::string, double> detachedForce, firstDetachedSample;
     std::map<std::string, int> contactSamples;  // samples after the detach with the finger in contact
-    const auto observe = [&](const simulation::GraspScene& scene, const SimTK::State& state) {
+    const auto observe = [&](const simulation::GraspScene& scene, const simulation::GraspSwitch*, const SimTK::State& state) {
         const grasp::MultiAttachment& multi = *scene.getMultiAttachment();
         for (int i = 0; i < multi.getNumParts(); ++i) {
             const std::string& name = scene.getGoalEndEffectors()[static_cast<std::size_t>(i)];

@@ -98,6 +98,24 @@ TEST(SetupCheck, ThesisScenariosPass) {
     }
 }
 
+// Commands call the check before their output folder exists: approximation options that a run
+// would refuse are refused here too (the scenario's own Q_Th with a Q_M above it).
+TEST(SetupCheck, RefusesApproximationOptionsBeforeAnythingIsBuilt) {
+    scenario::Scenario s = scenario::findBuiltinScenario("ball-clutch");
+    s.approximation.qThreshold = 1.0;
+    simulation::SimulationOptions options;
+    options.mode = simulation::SimulationMode::Approx;
+    options.approx.qMinimum = 2.0;
+    try {
+        simulation::checkScenarioSetup(s, options);
+        FAIL() << "Q_M above Q_Th accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("Q_M (2 N) must be below Q_Th (1 N)"), std::string::npos) << e.what();
+    }
+    options.approx.qMinimum = 0.5;
+    EXPECT_NO_THROW(simulation::checkScenarioSetup(s, options));
+}
+
 // The ball's fingertips sit 2-5 mm off its surface: no capsule overlaps it (closed form), so the
 // summary's initial penetration is 0.
 TEST(SetupCheck, BallClutchSummaryHasTheClosedFormInitialPenetration) {

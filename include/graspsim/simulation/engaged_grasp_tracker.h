@@ -38,6 +38,7 @@
 /// approximation. Sampled at the switch's checks (every ik_interval) and at the output samples.
 
 #include "graspsim/contact/compliant_contact_force.h"
+#include "graspsim/simulation/approximation_context.h"
 
 #include "graspsim/simbody.h"
 
@@ -45,8 +46,6 @@
 #include <vector>
 
 namespace graspsim::simulation {
-
-class GraspScene;
 
 /// Penetration of the tracked fingers into the object while engaged (m).
 struct PenetrationStats {
@@ -58,7 +57,8 @@ struct PenetrationStats {
 /// The tracked contacts of the current engagement and the penetration seen so far.
 class EngagedGraspTracker {
 public:
-    explicit EngagedGraspTracker(const GraspScene& scene);
+    /// @param context the approximation's view of the scene; must outlive the tracker and its copies.
+    explicit EngagedGraspTracker(const ApproximationContext& context);
 
     /// Captures the contacts of `reports` (those with normal force > 0) as the tracked contacts.
     /// Needs Stage::Position; `reports` from `state`.
@@ -83,7 +83,7 @@ private:
     };
     SimTK::SpatialVec findConstraintWrench(const SimTK::State& state) const;
 
-    const GraspScene* scene_;  // a pointer, so that the tracker copies and assigns as part of a State
+    const ApproximationContext* context_;  // a pointer, so that the tracker copies and assigns as part of a State
     std::vector<TrackedContact> tracked_;
     std::map<int, double> depthAtEngage_;  // by contact pair index (m)
     PenetrationStats penetration_;

@@ -15,10 +15,12 @@
 /// tolerance where the lock is exact: a few micrometres by the release in the built-in scenarios).
 /// After the release the object is the same free rigid body either way; only its coordinates differ.
 ///
-/// In SimulationMode::Approx the scene also holds the approximation's parts: the friction-limited
-/// palm-object constraint chosen by ApproxOptions::constraint, a LimitedBushing or a LimitedWeld
-/// (disabled at t = 0), and a GraspSwitch that runs the IK controller and switches between
-/// contact and that constraint (grasp_switch.h).
+/// In SimulationMode::Approx the scene also holds the approximation's friction-limited attachment
+/// (ApproxOptions: a LimitedBushing or a LimitedWeld palm-object, or a MultiAttachment; released
+/// at t = 0), added before the perturbation and the load so that Simbody sums the object's forces
+/// in the same order in every mode, and leaves its IK controller out of the System: the grasp
+/// switch built on top of the scene runs it (grasp_approximation.h). The scene knows nothing of
+/// that switch.
 ///
 /// With ContactModel::Rigid the finger-object pairs are rigid contacts (contact::RigidContactSet)
 /// instead of the compliant force element, and the joints' impedance (passive spring, damper,
@@ -34,6 +36,8 @@
 #include "graspsim/grasp/limited_weld.h"
 #include "graspsim/grasp/multi_attachment.h"
 #include "graspsim/scenario/scenario.h"
+#include "graspsim/simulation/fingertip_goals.h"
+#include "graspsim/simulation/object_hold.h"
 #include "graspsim/simulation/perturbation_force.h"
 #include "graspsim/simulation/setup_check.h"
 #include "graspsim/simulation/simulation_options.h"
@@ -61,8 +65,6 @@ constexpr double kArmKd = 20.0;   ///< N m s/rad
 /// limits (ApproxOptions::maxEngagedPenetration).
 constexpr double kBushingFrequency = 200.0;
 
-class GraspSwitch;
-
 /// The assembled experiment. Neither copyable nor movable (Simbody elements refer into it).
 class GraspScene {
 public:
@@ -77,6 +79,9 @@ public:
     /// sticking speed and the grasp quality's mu from here.
     const contact::ContactParameters& getContactParameters() const { return scenario_.contact; }
     const system::MultibodyModel& getModel() const { return model_; }
+    /// The model, for elements built on top of the scene (grasp_approximation.h), which call
+    /// realizeTopology() again after adding theirs.
+    system::MultibodyModel& updModel() { return model_; }
     const SimTK::MultibodySystem& getSystem() const { return model_.getSystem(); }
     /// The object's body; its frame O is at its centre of mass.
     const SimTK::MobilizedBody& getObject() const { return object_; }
@@ -93,13 +98,18 @@ public:
     /// Every finger-object contact at `state` with its forces, from the contact model in use
     /// (rigid: from the multipliers of the step that produced `state`). Needs Stage::Velocity.
     std::vector<contact::ContactReport> findContactReports(const SimTK::State& state) const;
-    /// The IK grasp controller (for steppers that run no event handlers).
+    /// The IK grasp controller: an event handler of the System in full mode; in approx mode the
+    /// grasp switch runs it (and steppers that run no event handlers call it).
     const control::GraspController& getController() const { return *controller_; }
     const control::IkTiming& getIkTiming() const { return ikTiming_; }
     /// Names of the end-effectors that have goals, in goal order.
-    const std::vector<std::string>& getGoalEndEffectors() const { return goalEndEffectors_; }
+    const std::vector<std::string>& getGoalEndEffectors() const { return goals_.getEndEffectors(); }
     /// The goals on the object's surface (not pressed in), in O (m), in goal order.
-    const std::vector<SimTK::Vec3>& getSurfaceGoals() const { return surfaceGoals_; }
+    const std::vector<SimTK::Vec3>& getSurfaceGoals() const { return goals_.getSurfacePoints(); }
+    /// The goals with the fingertip-goal distance.
+    const FingertipGoals& getFingertipGoals() const { return goals_; }
+    /// How the object is held until its release.
+    const ObjectHold& getObjectHold() const { return hold_; }
     /// The palm: frame H of the approximation's bushing and the goals' frame.
     const SimTK::MobilizedBody& getPalm() const;
     /// Mobilizers of the finger joints (the ones merged into the palm while the approximation
@@ -107,19 +117,14 @@ public:
     const std::vector<SimTK::MobilizedBodyIndex>& getFingerMobilizers() const { return fingerMobilizers_; }
     /// The approximation's attachment in approx mode (the bushing, the weld or the
     /// multi-attachment, per ApproxOptions), nullptr in full mode. The switch, the tracker and the
-    /// cost table use it through this interface; the accessors below are for inspection.
+    /// cost table use it through this interface.
     const grasp::GraspAttachment* getAttachment() const { return attachment_; }
-    /// The approximation's weld palm (F = palm frame) - object (M = O), or nullptr unless in
-    /// approx mode with the weld realization.
-    const grasp::LimitedWeld* getWeld() const { return weld_.get(); }
     /// The `multi` attachment (object - every goal fingertip), or nullptr unless in approx mode with
     /// ApproxOptions::attach Multi (multi_attachment_switch.h).
     const grasp::MultiAttachment* getMultiAttachment() const { return multi_.get(); }
-    /// The grasp switch (owned by the System) in approx mode, nullptr in full mode.
-    const GraspSwitch* getGraspSwitch() const { return switch_; }
     /// Largest distance between a goal's fingertip and its goal point on the object's surface
     /// (m): how far the object has left the hand. Realizes `state` to Stage::Position.
-    double findMaxFingertipGoalDistance(const SimTK::State& state) const;
+    double findMaxFingertipGoalDistance(const SimTK::State& state) const { return goals_.findMaxDistance(state); }
     /// The perturbation of this run, or nullptr.
     const PerturbationForce* getPerturbation() const { return perturbation_.get(); }
     /// The load of SimulationOptions::loadRamp, or nullptr.
@@ -133,9 +138,9 @@ public:
     const SetupCheck& getSetupCheck() const { return setupCheck_; }
     /// Releases the object (unlocks its mobilizer, or disables the Ground weld that holds it): an
     /// Instance-stage change.
-    void releaseObject(SimTK::State& state) const;
+    void releaseObject(SimTK::State& state) const { hold_.release(state); }
     /// Whether the object is still held at its initial pose (not yet released). Any stage.
-    bool isObjectHeld(const SimTK::State& state) const;
+    bool isObjectHeld(const SimTK::State& state) const { return hold_.isHeld(state); }
     /// When the object is released (s).
     double getReleaseTime() const { return scenario_.controller.approachTime; }
 
@@ -153,7 +158,7 @@ private:
     const scenario::Scenario& scenario_;
     system::MultibodyModel model_;
     SimTK::MobilizedBody::Free object_;
-    SimTK::Constraint::Weld groundHold_;  // empty unless the object hangs from the palm
+    ObjectHold hold_;
     ContactModel contactModel_ = ContactModel::Compliant;
     std::string palmBody_;  // the body with the palm role (the builder's, not found by name)
     contact::CompliantContactForce contacts_;
@@ -162,18 +167,16 @@ private:
     std::unique_ptr<control::JointPdController> pd_;
     std::unique_ptr<control::FingertipIk> ik_;
     control::GraspController* controller_ = nullptr;  // owned by the system (full) or ownedController_ (approx)
-    std::unique_ptr<control::GraspController> ownedController_;  // approx: run by the switch, not the system
+    std::unique_ptr<control::GraspController> ownedController_;  // approx: run by the grasp switch, not the system
     grasp::LimitedBushing bushing_;
     std::unique_ptr<grasp::MultiAttachment> multi_;
     std::unique_ptr<grasp::LimitedWeld> weld_;  // its handlers refer to it: destroyed before the System
     const grasp::GraspAttachment* attachment_ = nullptr;  // one of bushing_, *weld_, *multi_
-    GraspSwitch* switch_ = nullptr;  // owned by the system
     std::vector<SimTK::MobilizedBodyIndex> fingerMobilizers_;
     control::IkTiming ikTiming_;
     std::unique_ptr<PerturbationForce> perturbation_;
     std::unique_ptr<RampLoad> loadRamp_;
-    std::vector<std::string> goalEndEffectors_;
-    std::vector<SimTK::Vec3> surfaceGoals_;
+    FingertipGoals goals_;
     SetupCheck setupCheck_;
 };
 

@@ -107,9 +107,11 @@ struct SimulationResult {
 using ProgressCallback = std::function<void(double time, double duration)>;
 
 class GraspScene;
-/// Called after each output sample with the scene and its state there (realized to Velocity at
-/// least), e.g. to measure the cost of the dynamics in that state. Must not change the scene.
-using SampleObserver = std::function<void(const GraspScene& scene, const SimTK::State& state)>;
+/// Called after each output sample with the scene, the grasp switch (approx mode; nullptr in full
+/// mode) and the state there (realized to Velocity at least), e.g. to measure the cost of the
+/// dynamics in that state. Must not change the scene.
+using SampleObserver =
+    std::function<void(const GraspScene& scene, const GraspSwitch* grasp, const SimTK::State& state)>;
 
 /// Runs the scenario with the chosen implicit integrator (SimulationOptions::integrator: Simbody's
 /// CPodes by default, or the SUNDIALS CVODE reference) at the scenario's accuracy,

@@ -64,8 +64,7 @@
 /// variable: writing it changes no dynamics, so it restarts no integrator, and a copied State
 /// carries its own history.
 
-#include "graspsim/control/grasp_controller.h"
-#include "graspsim/grasp/grasp_attachment.h"
+#include "graspsim/simulation/approximation_context.h"
 #include "graspsim/simulation/engaged_grasp_tracker.h"
 #include "graspsim/simulation/simulation_options.h"
 
@@ -77,7 +76,6 @@
 
 namespace graspsim::simulation {
 
-class GraspScene;
 class MultiAttachmentSwitch;
 
 /// What a switch of the approximation did.
@@ -113,14 +111,13 @@ struct GraspSwitchRecord {
 /// The periodic event handler described in the file comment (owned by the System once added).
 class GraspSwitch : public SimTK::PeriodicEventHandler {
 public:
-    /// @param scene the approx-mode scene (its contacts, GraspScene::getAttachment() and finger
-    ///        mobilizers).
-    /// @param controller the IK controller this handler runs while ungrasped (not itself added
-    ///        to the System, so IK can be paused).
-    /// @throws graspsim::InputError for a negative threshold or a slide distance <= 0.
+    /// Built by GraspApproximation (grasp_approximation.h), which adds it to the System.
+    /// @param context what the switch uses of the scene: its contacts, attachment, finger
+    ///        mobilizers and the IK controller it runs while ungrasped (not itself added to the
+    ///        System, so IK can be paused); must outlive the switch.
     /// @param forces where the switch keeps its GraspSwitchRecord (an element that applies no force).
-    GraspSwitch(const GraspScene& scene, SimTK::GeneralForceSubsystem& forces, const control::GraspController& controller,
-                const ApproxOptions& options, double interval);
+    /// @param options resolved (resolveApproxOptions).
+    GraspSwitch(const ApproximationContext& context, SimTK::GeneralForceSubsystem& forces, const ApproxOptions& options);
     ~GraspSwitch() override;
 
     void handleEvent(SimTK::State& state, SimTK::Real accuracy, bool& shouldTerminate) const override;
@@ -148,8 +145,8 @@ public:
     /// (EngagedGraspTracker::calcQuality; realizes `state` to Stage::Acceleration). Multi: the
     /// quality of the contacts every pair would produce in `state`, switched on or not
     /// (CompliantContactForce::findContactReports of a list), since the fingers move on their own.
-    /// Asked twice for the same state (the switch's check, then the sample recorded at that
-    /// instant), the second call returns the first's value.
+    /// Kept in a cache entry of `state` (valid until its time, q, u or switch flags change), so
+    /// that the switch's check and the sample recorded at that instant compute it once.
     double calcEngagedQuality(const SimTK::State& state) const;
     /// The contacts tracked while engaged and the penetration measured up to `state`.
     const EngagedGraspTracker& getTracker(const SimTK::State& state) const { return getRecord(state).tracker; }
@@ -172,24 +169,12 @@ private:
     std::string describeEngagement(double qThreshold, const SimTK::Vec6& limits) const;
     double findVelocityJump(SimTK::State& state, const SimTK::Vec3& v_before) const;
 
-    const GraspScene& scene_;
-    const control::GraspController& controller_;
-    const grasp::GraspAttachment& attachment_;
+    const ApproximationContext& context_;
     ApproxOptions options_;
     std::unique_ptr<MultiAttachmentSwitch> multi_;  // ApproxAttach::Multi: replaces the merge (c) and (d)
     std::vector<std::string> goalBodies_;  // body of each goal end-effector
 
     const RecordKeeper* keeper_ = nullptr;  // owned by the force subsystem
-    // A cache, not state: the last engaged Q and the (time, Y) it is a function of, so that the
-    // check and the sample recorded at the same instant (two State objects with equal values)
-    // compute it once. Engage, detach and release change the discrete state and forget it.
-    struct QualityMemo {
-        double time = -1;
-        SimTK::Vector y;
-        double quality = 0;
-        bool isFor(const SimTK::State& state) const;
-    };
-    mutable QualityMemo memo_;
 };
 
 }  // namespace graspsim::simulation

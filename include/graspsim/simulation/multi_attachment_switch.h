@@ -39,7 +39,7 @@
 
 #include "graspsim/contact/compliant_contact_force.h"
 #include "graspsim/grasp/multi_attachment.h"
-#include "graspsim/scenario/scenario.h"
+#include "graspsim/simulation/approximation_context.h"
 #include "graspsim/simulation/simulation_options.h"
 
 #include "graspsim/simbody.h"
@@ -49,18 +49,18 @@
 
 namespace graspsim::simulation {
 
-class GraspScene;
 struct GraspEvent;
 
 /// The multi variant's engage / detach / release steps (see the file comment). Used by GraspSwitch.
 class MultiAttachmentSwitch {
 public:
-    /// @param scene an approx-mode scene with a MultiAttachment (GraspScene::getMultiAttachment()).
+    /// @param context the approximation's view of the scene, with a MultiAttachment
+    ///        (ApproximationContext::multi); must outlive the switch.
     /// @param slideLimit how far a finger's anchor may slide before it is detached (m).
     /// @param penetrationBound how far an attached fingertip may sink into the object under loads
     ///        up to its limits (m): each part is stiffened from its own loads at attachment, as the
     ///        merged bushing is (grasp_switch.h, step (d)).
-    MultiAttachmentSwitch(const GraspScene& scene, double slideLimit, double penetrationBound);
+    MultiAttachmentSwitch(const ApproximationContext& context, double slideLimit, double penetrationBound);
 
     /// Whether every goal finger's contacts stick: slip speed below the scenario's friction transition
     /// velocity (its own threshold for "sticking"). Multi engages only then: each part is a sticking
@@ -82,7 +82,7 @@ private:
     int findFinger(const std::string& body) const;
     std::string describeDetach(const SimTK::State& state, int finger) const;
 
-    const GraspScene& scene_;
+    const ApproximationContext& context_;
     double slideLimit_;
     double penetrationBound_;
     std::vector<std::vector<std::string>> fingerBodies_;  // per goal: the digit's bodies, palm excluded

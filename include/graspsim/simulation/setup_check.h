@@ -75,7 +75,8 @@ void requireSetup(const SetupCheck& check, const std::string& where);
 
 /// Builds the scenario's scene with `options`, makes its initial state and checks it: what a
 /// command calls before it writes anything. Returns what was measured.
-/// @throws graspsim::InputError as requireSetup, or for options the scene rejects.
+/// @throws graspsim::InputError as requireSetup, or for options the scene or the approximation
+///         (resolveApproxOptions) rejects.
 SetupCheck checkScenarioSetup(const scenario::Scenario& scenario, const SimulationOptions& options);
 
 }  // namespace graspsim::simulation

@@ -11,6 +11,7 @@
 
 namespace graspsim::scenario {
 struct Scenario;
+struct ApproximationSpec;
 }
 
 namespace graspsim::simulation {
@@ -132,5 +133,12 @@ std::string toString(ApproxAttach attach);
 /// the bushing realization, and every goal end-effector on a body with contact geometry.
 /// Call before anything is written. @throws graspsim::InputError naming --attach otherwise.
 void checkApproxAttach(const scenario::Scenario& scenario, const SimulationOptions& options);
+
+/// The approximation's options of a run: `given` over the scenario's `approximation:` section (a
+/// threshold or relaxed axes given to the run win; 0 / unset take the scenario's), checked, before
+/// anything is built (grasp_approximation.h takes only resolved options).
+/// @throws graspsim::InputError for a negative threshold, Q_M not below a given Q_Th, or a slide
+///         distance or penetration bound <= 0.
+ApproxOptions resolveApproxOptions(const ApproxOptions& given, const scenario::ApproximationSpec& scenario);
 
 }  // namespace graspsim::simulation

@@ -1,0 +1,70 @@
+// The approximation's options resolved before anything is built (simulation_options.h). Oracle:
+// the precedence rule itself (a value given to the run wins; 0 or unset takes the scenario's) and
+// the accepted ranges, checked on hand-picked values.
+
+#include "graspsim/simulation/simulation_options.h"
+
+#include "graspsim/error.h"
+#include "graspsim/scenario/scenario.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+using namespace graspsim;
+
+namespace {
+
+scenario::ApproximationSpec makeScenarioSection() {
+    scenario::ApproximationSpec spec;
+    spec.qThreshold = 3.0;
+    spec.qMinimum = 1.0;
+    spec.relaxedAxes = {true, false, true, false, true, false};
+    return spec;
+}
+
+std::string findMessage(const simulation::ApproxOptions& given) {
+    try {
+        simulation::resolveApproxOptions(given, makeScenarioSection());
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+TEST(ResolveApproxOptions, TakesTheScenariosValuesWhereTheRunGivesNone) {
+    const simulation::ApproxOptions resolved = simulation::resolveApproxOptions({}, makeScenarioSection());
+    EXPECT_EQ(resolved.qThreshold, 3.0);
+    EXPECT_EQ(resolved.qMinimum, 1.0);
+    ASSERT_TRUE(resolved.relaxedAxes.has_value());
+    EXPECT_EQ(*resolved.relaxedAxes, makeScenarioSection().relaxedAxes);
+}
+
+TEST(ResolveApproxOptions, ValuesGivenToTheRunWin) {
+    simulation::ApproxOptions given;
+    given.qThreshold = 5.0;
+    given.qMinimum = 2.0;
+    given.relaxedAxes = std::array<bool, 6>{false, false, false, true, true, true};
+    const simulation::ApproxOptions resolved = simulation::resolveApproxOptions(given, makeScenarioSection());
+    EXPECT_EQ(resolved.qThreshold, 5.0);
+    EXPECT_EQ(resolved.qMinimum, 2.0);
+    EXPECT_EQ(*resolved.relaxedAxes, *given.relaxedAxes);
+}
+
+TEST(ResolveApproxOptions, RejectsWhatTheSwitchCannotUse) {
+    simulation::ApproxOptions given;
+    given.qThreshold = -1;
+    EXPECT_NE(findMessage(given).find("must be >= 0"), std::string::npos);
+    given = {};
+    given.qMinimum = 4.0;  // above the scenario's Q_Th of 3 N
+    EXPECT_NE(findMessage(given).find("Q_M (4 N) must be below Q_Th (3 N)"), std::string::npos);
+    given = {};
+    given.releaseSlideDistance = 0;
+    EXPECT_NE(findMessage(given).find("slide distance must be > 0 m"), std::string::npos);
+    given = {};
+    given.maxEngagedPenetration = -1e-4;
+    EXPECT_NE(findMessage(given).find("penetration bound must be > 0 m"), std::string::npos);
+    EXPECT_EQ(findMessage({}), "");
+}
