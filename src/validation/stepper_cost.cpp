@@ -59,7 +59,8 @@ StepperCost measureFullContactStepper(const scenario::Scenario& scenario, simula
     options.duration = duration;
     options.integrator = integrator;
     double realizeUs = 0, contactUs = 0, observing = 0;
-    const simulation::SampleObserver observe = [&](const simulation::GraspScene& scene, const SimTK::State& state) {
+    const simulation::SampleObserver observe = [&](const simulation::GraspScene& scene, const simulation::GraspSwitch*,
+                                                    const SimTK::State& state) {
         if (state.getTime() < duration - 1e-9) return;
         const double start = nowSeconds();
         realizeUs = timeRealization(scene.getSystem(), state, realizations);
