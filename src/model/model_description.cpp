@@ -184,6 +184,18 @@ const Body* ModelDescription::findBody(const std::string& n) const {
     return findByName(const_cast<std::vector<Body>&>(bodies), n);
 }
 Body* ModelDescription::updBody(const std::string& n) { return findByName(bodies, n); }
+const Body& ModelDescription::findPalm() const {
+    const Body* palm = nullptr;
+    for (const Body& b : bodies) {
+        if (b.role != BodyRole::Palm || b.isVirtual()) continue;
+        if (palm != nullptr) {
+            throw InputError("model '" + name + "': two palms ('" + palm->name + "', '" + b.name + "'); a grasp needs one hand");
+        }
+        palm = &b;
+    }
+    if (palm == nullptr) throw InputError("model '" + name + "': no body has the palm role; a grasp needs a hand");
+    return *palm;
+}
 const Joint* ModelDescription::findJoint(const std::string& n) const {
     return findByName(const_cast<std::vector<Joint>&>(joints), n);
 }

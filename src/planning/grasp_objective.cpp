@@ -113,7 +113,8 @@ double calcObjectWidth(const contact::ContactShape& shape) {
 }
 
 GraspObjective::GraspObjective(const GraspRequest& request, const GraspTemplate& graspTemplate)
-    : m_request(request), m_template(graspTemplate), m_arm(model::buildBodyModel(request.bodyOptions)) {
+    : m_request(request), m_template(graspTemplate), m_arm(model::buildBodyModel(request.bodyOptions)),
+      m_palm(m_arm.findBodyIndex(m_arm.getModel().findPalm().name)) {
     for (const std::string& effector : graspTemplate.goalEffectors) m_pads.push_back(findPad(m_arm, effector));
     m_targetGaps.assign(m_pads.size(), request.targetGap);
     for (const SegmentShape& s : m_arm.getSegmentShapes()) m_inflated.push_back(inflate(s.shape, kClearance));
@@ -162,11 +163,11 @@ SimTK::Vec3 GraspObjective::findThesisBallCentre() const {
     for (const auto& [name, angle] : m_template.startPose) q[thesisArm.findJointIndex(name)] = angle;
     std::vector<SimTK::Transform> X_GB;
     thesisArm.calcBodyPoses(q, X_GB);
-    const SimTK::Transform& X_GH0 = X_GB[thesisArm.findBodyIndex("palm")];
+    const SimTK::Transform& X_GH0 = X_GB[thesisArm.findBodyIndex(thesisArm.getModel().findPalm().name)];
     const SimTK::Vec3 p_GO(m_template.ballPosition[0], m_template.ballPosition[1], m_template.ballPosition[2]);
     const double scale = model::calcHandLength(m_request.bodyOptions.subject) / model::calcHandLength(thesisOptions.subject);
     const SimTK::Vec3 p_HO = scale * (~X_GH0 * p_GO) + SimTK::Vec3(m_objectWidth / 2 - m_template.ballRadius, 0, 0);
-    return m_X_GB[m_arm.findBodyIndex("palm")] * p_HO;  // x_H is palmar
+    return m_X_GB[m_palm] * p_HO;  // x_H is palmar
 }
 
 void GraspObjective::placeObjectAtStart() {
@@ -180,7 +181,7 @@ void GraspObjective::placeObjectAtStart() {
     const SimTK::Vec3 p_GC = m_template.startUnderPalm ? findThesisBallCentre() : findNormalsMeet(p, n);
     SimTK::Rotation R_GS(makeDiagonal(1), true);  // identity: a sphere's orientation does not matter
     const contact::ContactShape& shape = m_request.shape;
-    const SimTK::Rotation& R_GH = m_X_GB[m_arm.findBodyIndex("palm")].R();
+    const SimTK::Rotation& R_GH = m_X_GB[m_palm].R();
     if (shape.type == contact::ContactShape::Type::Capsule || shape.type == contact::ContactShape::Type::Cylinder) {
         // the long axis across the fingers, along the hand's radial axis z_H
         R_GS.setRotationFromOneAxis(R_GH.z(), SimTK::ZAxis);
@@ -189,7 +190,7 @@ void GraspObjective::placeObjectAtStart() {
         SimTK::Vec3 others(0);
         for (size_t i = 1; i < p.size(); ++i) others += p[i] / double(p.size() - 1);
         const SimTK::UnitVec3 squeeze(others - p[0]);
-        const SimTK::Vec3 out = p_GC - m_X_GB[m_arm.findBodyIndex("palm")].p();
+        const SimTK::Vec3 out = p_GC - m_X_GB[m_palm].p();
         std::array<int, 3> axis{0, 1, 2};
         std::sort(axis.begin(), axis.end(), [&](int a, int b) { return shape.halfLengths[a] < shape.halfLengths[b]; });
         const SimTK::UnitVec3 longest(out - dot(out, squeeze) * squeeze);

@@ -86,6 +86,7 @@ private:
     GraspRequest m_request;
     GraspTemplate m_template;
     ArmKinematics m_arm;
+    int m_palm = -1;  // the palm's body index in m_arm (the builder's palm role)
     std::vector<Pad> m_pads;
     std::vector<double> m_targetGaps;               // per pad (m)
     std::vector<contact::ContactShape> m_inflated;  // segment shapes grown by the clearance

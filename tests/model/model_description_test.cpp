@@ -115,3 +115,22 @@ TEST(ModelDescription, DuplicateNamesAreRejected) {
     m.bodies[1].name = "base";
     EXPECT_NE(messageOf(m).find("unique"), std::string::npos);
 }
+
+TEST(ModelDescription, FindPalmTakesTheMassiveBodyWithThePalmRoleNotAName) {
+    ModelDescription m = twoLinks();
+    EXPECT_THROW(m.findPalm(), graspsim::InputError);
+    m.bodies[1].role = BodyRole::Palm;  // "arm": found by its role
+    Body wristChain;
+    wristChain.name = "palm";  // the name alone does not make it the palm: massless, virtual
+    wristChain.role = BodyRole::Palm;
+    m.bodies.push_back(wristChain);
+    ASSERT_TRUE(wristChain.isVirtual());
+    EXPECT_EQ(m.findPalm().name, "arm");
+    m.bodies[0].role = BodyRole::Palm;
+    try {
+        m.findPalm();
+        FAIL() << "two palms must be refused";
+    } catch (const graspsim::InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("two palms ('base', 'arm')"), std::string::npos) << e.what();
+    }
+}

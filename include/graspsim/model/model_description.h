@@ -147,6 +147,9 @@ struct ModelDescription {
     const Joint* findParentJoint(const std::string& body) const;
     /// End-effector by name, or nullptr.
     const EndEffector* findEndEffector(const std::string& name) const;
+    /// The palm: the one body with BodyRole::Palm that has mass (the builder's role, not a name).
+    /// @throws graspsim::InputError when there is none or more than one (a grasp needs one hand).
+    const Body& findPalm() const;
 
     /// Total degrees of freedom (sum over joints).
     int getDofCount() const;
