@@ -19,7 +19,7 @@ struct BenchCommand::Options {
 
 BenchCommand::BenchCommand(CLI::App& app) : options_(std::make_shared<Options>()) {
     Options& o = *options_;
-    command_ = app.add_subcommand("bench", "Measure the thesis's Table 5.1 on this machine: full contact vs the approximation");
+    command_ = app.add_subcommand("bench", "Measure the thesis's Table 5.1 on this machine: full contact (per stepper) vs the approximation and the floor");
     command_->add_flag("--json", o.json, "print JSON instead of the table");
     command_->add_option("--duration", o.duration, "simulated seconds per run, >= 1.5 (default 2)");
     command_->add_flag("-q,--quiet", o.quiet, "no progress display (it appears only on a terminal anyway)");

@@ -169,13 +169,19 @@ public:
         enabledIndex_ = forces_.allocateDiscreteVariable(state, SimTK::Stage::Instance,
                                                          new SimTK::Value<EnabledFlags>(defaults));
         if (hasAnchors()) zStart_ = forces_.allocateZ(state, SimTK::Vector(kAnchorSize * getNumPairs(), 0.0));
+        evaluatedIndex_ = forces_.allocateLazyCacheEntry(state, SimTK::Stage::Velocity,
+                                                         new SimTK::Value<std::vector<ContactReport>>());
     }
 
     // Also sets the anchors' rates: calcForce is called while the State is realized to
     // Stage::Dynamics, where Z derivatives are written, for every evaluation of an enabled element.
+    // The contact points are kept in a cache entry (getEvaluatedContacts) as they are evaluated:
+    // the linearly implicit stepper's Jacobian needs the same geometry, which was a second pass.
     void calcForce(const SimTK::State& state, SimTK::Vector_<SimTK::SpatialVec>& bodyForces,
                    SimTK::Vector_<SimTK::Vec3>&, SimTK::Vector&) const override {
         const EnabledFlags& enabled = getEnabledFlags(state);
+        std::vector<ContactReport>& evaluated = updEvaluatedCache(state);
+        evaluated.clear();
         for (int i = 0; i < getNumPairs(); ++i) {
             AnchorState rate;
             if (enabled[i]) {
@@ -184,12 +190,35 @@ public:
                     const SimTK::Vec3 F_G = force.normalForce * contact.n_G + force.frictionForce_G;
                     applyForceAtPoint(pairs_[i].pair.a.body, a, contact.p_G, -F_G, bodyForces);
                     applyForceAtPoint(pairs_[i].pair.b.body, b, contact.p_G, F_G, bodyForces);
+                    evaluated.push_back(makeUnnamedReport(i, contact, force));
                 });
             } else if (hasAnchors()) {
                 rate = calcAnchorRelaxationRate(friction_.anchor, getAnchorState(state, i));
             }
             if (hasAnchors()) setAnchorRate(state, i, rate);
         }
+        forces_.markCacheValueRealized(state, evaluatedIndex_);
+    }
+
+    // The cache written by calcForce, or, where no force evaluation filled it at this state's
+    // positions and velocities (the element disabled, or the state realized only to Velocity),
+    // the same computed here.
+    const std::vector<ContactReport>& getEvaluatedContacts(const SimTK::State& state) const {
+        if (!forces_.isCacheValueRealized(state, evaluatedIndex_)) {
+            std::vector<ContactReport>& evaluated = updEvaluatedCache(state);
+            evaluated.clear();
+            const EnabledFlags& enabled = getEnabledFlags(state);
+            for (int i = 0; i < getNumPairs(); ++i) {
+                if (!enabled[i]) continue;
+                AnchorState unused;
+                forEachPairForce(state, i, unused, [&](const ContactPoint& contact, const ContactForce& force,
+                                                       const BodyMotion&, const BodyMotion&) {
+                    evaluated.push_back(makeUnnamedReport(i, contact, force));
+                });
+            }
+            forces_.markCacheValueRealized(state, evaluatedIndex_);
+        }
+        return SimTK::Value<std::vector<ContactReport>>::downcast(forces_.getCacheEntry(state, evaluatedIndex_)).get();
     }
 
     SimTK::Real calcPotentialEnergy(const SimTK::State& state) const override {
@@ -293,8 +322,23 @@ private:
         return reports;
     }
 
+    std::vector<ContactReport>& updEvaluatedCache(const SimTK::State& state) const {
+        return SimTK::Value<std::vector<ContactReport>>::updDowncast(forces_.updCacheEntry(state, evaluatedIndex_)).upd();
+    }
+
     ContactReport makeReport(int i, const ContactPoint& contact, const ContactForce& force) const {
-        ContactReport report = makePairReport(pairs_[i].pair, i);
+        ContactReport report = makeUnnamedReport(i, contact, force);
+        const ContactPair& pair = pairs_[i].pair;
+        report.bodyA = pair.a.bodyName;
+        report.bodyB = pair.b.bodyName;
+        report.shapeA = pair.a.shapeName;
+        report.shapeB = pair.b.shapeName;
+        return report;
+    }
+
+    static ContactReport makeUnnamedReport(int i, const ContactPoint& contact, const ContactForce& force) {
+        ContactReport report;
+        report.pairIndex = i;
         report.p_G = contact.p_G;
         report.n_G = contact.n_G;
         report.depth = contact.depth;
@@ -310,6 +354,7 @@ private:
     FrictionSettings friction_;
     mutable SimTK::DiscreteVariableIndex enabledIndex_;
     mutable SimTK::ZIndex zStart_;
+    mutable SimTK::CacheEntryIndex evaluatedIndex_;
 };
 
 namespace {
@@ -398,6 +443,10 @@ std::vector<ContactDepth> CompliantContactForce::findContactDepths(const SimTK::
                                                                   const std::vector<int>& pairIndices) const {
     for (int i : pairIndices) checkPairIndex(i);
     return asContactImpl(getImplementation()).findContactDepths(state, pairIndices);
+}
+
+const std::vector<ContactReport>& CompliantContactForce::getEvaluatedContacts(const SimTK::State& state) const {
+    return asContactImpl(getImplementation()).getEvaluatedContacts(state);
 }
 
 std::vector<ContactReport> CompliantContactForce::findContactReports(

@@ -1,5 +1,7 @@
 #include "graspsim/contact/compliant_contact_jacobian.h"
 
+#include "graspsim/integration/point_jacobian.h"
+
 #include <algorithm>
 #include <vector>
 
@@ -70,54 +72,58 @@ CompliantContactJacobian::CompliantContactJacobian(const SimTK::SimbodyMatterSub
 
 namespace {
 
-// A += J^T B J for a 3 x nu J and a 3x3 B, on column-major storage (J[r + 3 c], A[r + nu c]):
-// SimTK::Matrix's element access costs more than the arithmetic here.
-void addProjected(const double* J, int nu, const SimTK::Mat33& B, double* A) {
+// A += J^T B J for a 3 x nu J and a 3x3 B, on column-major storage (J[r + 3 c], A[r + nu c]),
+// over J's nonzero columns only: SimTK::Matrix's element access costs more than the arithmetic.
+void addProjected(const double* J, int nu, const std::vector<int>& columns, const SimTK::Mat33& B, double* A) {
     thread_local std::vector<double> BJ;
-    BJ.resize(3 * static_cast<std::size_t>(nu));
-    for (int c = 0; c < nu; ++c)
-        for (int r = 0; r < 3; ++r) BJ[r + 3 * c] = B(r, 0) * J[3 * c] + B(r, 1) * J[1 + 3 * c] + B(r, 2) * J[2 + 3 * c];
-    for (int r = 0; r < nu; ++r) {
+    BJ.resize(3 * columns.size());
+    for (std::size_t k = 0; k < columns.size(); ++k) {
+        const double* Jc = J + 3 * columns[k];
+        for (int r = 0; r < 3; ++r) BJ[r + 3 * k] = B(r, 0) * Jc[0] + B(r, 1) * Jc[1] + B(r, 2) * Jc[2];
+    }
+    for (int r : columns) {
         const double* Jr = J + 3 * r;
-        if (Jr[0] == 0 && Jr[1] == 0 && Jr[2] == 0) continue;  // mobilities off both bodies' paths
-        for (int c = 0; c < nu; ++c) A[r + nu * c] += Jr[0] * BJ[3 * c] + Jr[1] * BJ[1 + 3 * c] + Jr[2] * BJ[2 + 3 * c];
+        for (std::size_t k = 0; k < columns.size(); ++k) {
+            A[r + nu * columns[k]] += Jr[0] * BJ[3 * k] + Jr[1] * BJ[1 + 3 * k] + Jr[2] * BJ[2 + 3 * k];
+        }
     }
 }
 
 }  // namespace
 
-// Row k of J = J_b(P) - J_a(P) is the generalized force of a unit force along axis k applied at
-// P on b and its opposite on a: three transposed products, where calcStationJacobian for the
-// two stations would take six.
+// J = J_b(P) - J_a(P); the mobilities both paths share cancel.
 void CompliantContactJacobian::fillRelativeJacobian(const ContactPair& pair, const SimTK::Vec3& p_G,
                                                     const SimTK::State& state, std::vector<double>& J) const {
-    const int nu = state.getNU();
-    const SimTK::MobilizedBodyIndex a = pair.a.body.getMobilizedBodyIndex(), b = pair.b.body.getMobilizedBodyIndex();
-    const SimTK::Vec3 r_a = p_G - pair.a.body.getBodyOriginLocation(state);
-    const SimTK::Vec3 r_b = p_G - pair.b.body.getBodyOriginLocation(state);
-    SimTK::Vector_<SimTK::SpatialVec> F(matter_.getNumBodies(), SimTK::SpatialVec(SimTK::Vec3(0), SimTK::Vec3(0)));
-    SimTK::Vector row;
-    for (int k = 0; k < 3; ++k) {
-        SimTK::Vec3 e(0);
-        e[k] = 1;
-        F[b] += SimTK::SpatialVec(r_b % e, e);
-        F[a] -= SimTK::SpatialVec(r_a % e, e);
-        matter_.multiplyBySystemJacobianTranspose(state, F, row);
-        for (int c = 0; c < nu; ++c) J[k + 3 * c] = row[c];
-        F[a] = F[b] = SimTK::SpatialVec(SimTK::Vec3(0), SimTK::Vec3(0));
-    }
+    std::fill(J.begin(), J.end(), 0.0);
+    integration::addPointJacobian(matter_, state, pair.b.body.getMobilizedBodyIndex(), p_G, 1, 3, J);
+    integration::addPointJacobian(matter_, state, pair.a.body.getMobilizedBodyIndex(), p_G, -1, 3, J);
 }
 
+// The contact points come from the force element's own evaluation (its cache), not a second
+// geometry pass.
 void CompliantContactJacobian::addForceJacobians(const SimTK::State& state, SimTK::Matrix& D, SimTK::Matrix& K) const {
     const int nu = state.getNU();
     std::vector<double> J(3 * static_cast<std::size_t>(nu));
-    for (const ContactReport& report : contacts_.findContactReports(state)) {
+    std::vector<int> columns;
+    for (const ContactReport& report : contacts_.getEvaluatedContacts(state)) {
         if (report.normalForce <= 0) continue;
         const ContactPair& pair = contacts_.getPair(report.pairIndex);
         fillRelativeJacobian(pair, report.p_G, state, J);
+        integration::findNonzeroColumns(J, 3, nu, columns);
         const ContactForceDerivatives d = calcContactForceDerivatives(parameters_[report.pairIndex], report, withFriction_);
-        addProjected(J.data(), nu, d.dF_dv, D.updContiguousScalarData());
-        if (withStiffness_) addProjected(J.data(), nu, d.dF_dp, K.updContiguousScalarData());
+        addProjected(J.data(), nu, columns, d.dF_dv, D.updContiguousScalarData());
+        if (withStiffness_) addProjected(J.data(), nu, columns, d.dF_dp, K.updContiguousScalarData());
+    }
+}
+
+// Per pushing contact point, its pair and whether it sticks (slip below the transition velocity):
+// the friction slope there is about f_n mu_s / v_t, far above the sliding one, so a point that
+// starts or stops sliding changes D by orders of magnitude.
+void CompliantContactJacobian::appendActiveSet(const SimTK::State& state, std::vector<int>& active) const {
+    for (const ContactReport& report : contacts_.getEvaluatedContacts(state)) {
+        if (report.normalForce <= 0) continue;
+        const bool sticking = report.slipVelocity_G.norm() < parameters_[report.pairIndex].transitionVelocity;
+        active.push_back(2 * report.pairIndex + (sticking ? 1 : 0));
     }
 }
 

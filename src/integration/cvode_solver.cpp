@@ -287,7 +287,7 @@ void CvodeSolver::foldCurrentCounts() { addCurrentCountsTo(totals_); }
 void CvodeSolver::addCurrentCountsTo(IntegrationStatistics& out) const {
     if (!cvode_) return;
     long steps = 0, rhs = 0, setups = 0, errorFails = 0, jacobians = 0, rhsForJacobian = 0;
-    long solveFails = 0, projections = 0, roots = 0;
+    long solveFails = 0, projections = 0, roots = 0, iterations = 0;
     CVodeGetNumSteps(cvode_, &steps);
     CVodeGetNumRhsEvals(cvode_, &rhs);
     CVodeGetNumLinSolvSetups(cvode_, &setups);
@@ -297,7 +297,9 @@ void CvodeSolver::addCurrentCountsTo(IntegrationStatistics& out) const {
     CVodeGetNumStepSolveFails(cvode_, &solveFails);
     if (options_.projection) CVodeGetNumProjEvals(cvode_, &projections);
     CVodeGetNumGEvals(cvode_, &roots);
+    CVodeGetNumNonlinSolvIters(cvode_, &iterations);
     out.steps += steps;
+    out.newtonIterations = std::max(out.newtonIterations, 0L) + iterations;
     out.rhsEvaluations += rhs + rhsForJacobian;
     out.linearSolverSetups = std::max(out.linearSolverSetups, 0L) + setups;
     out.jacobianEvaluations = std::max(out.jacobianEvaluations, 0L) + jacobians;

@@ -8,6 +8,16 @@
 
 namespace graspsim::integration {
 
+namespace {
+
+// How far joint j's coordinate is beyond its stop's range (rad or m), <= 0 inside it.
+double findStopViolation(const SimTK::State& s, const SimTK::MobilizedBody& mobod, const system::JointImpedance& j) {
+    const double q = mobod.getOneQ(s, 0);
+    return std::max(q - j.stop.getUpperBound(s), j.stop.getLowerBound(s) - q);
+}
+
+}  // namespace
+
 JointImpedanceJacobian::JointImpedanceJacobian(const SimTK::SimbodyMatterSubsystem& matter,
                                                const SimTK::GeneralForceSubsystem& forces,
                                                std::vector<system::JointImpedance> joints)
@@ -24,11 +34,17 @@ void JointImpedanceJacobian::addForceJacobians(const SimTK::State& s, SimTK::Mat
         K(i, i) -= j.stiffness;
         D(i, i) -= j.damping;
         if (j.stop.isEmptyHandle() || forces_.isForceDisabled(s, j.stop.getForceIndex())) continue;
-        const double q = mobod.getOneQ(s, 0);
-        const double x = std::max(q - j.stop.getUpperBound(s), j.stop.getLowerBound(s) - q);
+        const double x = findStopViolation(s, mobod, j);
         if (x <= 0) continue;
         K(i, i) -= j.stop.getStiffness(s);
         D(i, i) -= j.stop.getStiffness(s) * j.stop.getDissipation(s) * x;
+    }
+}
+
+void JointImpedanceJacobian::appendActiveSet(const SimTK::State& s, std::vector<int>& active) const {
+    for (const system::JointImpedance& j : joints_) {
+        if (j.stop.isEmptyHandle() || forces_.isForceDisabled(s, j.stop.getForceIndex())) continue;
+        if (findStopViolation(s, matter_.getMobilizedBody(j.mobod), j) > 0) active.push_back(int(j.mobod));
     }
 }
 

@@ -6,6 +6,7 @@
 #include "graspsim/error.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -50,6 +51,8 @@ LinearlyImplicitStepper::LinearlyImplicitStepper(const SimTK::MultibodySystem& s
     checkOptions(options_);
 }
 
+LinearlyImplicitStepper::~LinearlyImplicitStepper() = default;
+
 // As Simbody's Integrator::initialize: onto the constraints first, then Initialization events,
 // then the auto-update discrete variables.
 void LinearlyImplicitStepper::initialize(const SimTK::State& initial) {
@@ -74,6 +77,7 @@ void LinearlyImplicitStepper::initialize(const SimTK::State& initial) {
     triggers_ = state_.getEventTriggers();
     stepsAtInitialize_ = steps_;
     massMatrixTime_ = -SimTK::Infinity;
+    matrixStale_ = true;
     initialized_ = true;
 }
 
@@ -138,6 +142,7 @@ void LinearlyImplicitStepper::advanceControlled(double tStop) {
         }
         nextStepSize_ = h * factor;
         justRejected_ = true;
+        matrixStale_ = true;
         ++rejectedSteps_;
         setState(t, q, u, z);
         system_.realize(state_, SimTK::Stage::Acceleration);
@@ -146,6 +151,19 @@ void LinearlyImplicitStepper::advanceControlled(double tStop) {
 }
 
 namespace {
+
+// Adds the wall time of its scope to `seconds` (the linear algebra's share, in the statistics).
+class ScopeClock {
+public:
+    explicit ScopeClock(double& seconds) : seconds_(seconds), start_(std::chrono::steady_clock::now()) {}
+    ~ScopeClock() { seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
+    ScopeClock(const ScopeClock&) = delete;
+    ScopeClock& operator=(const ScopeClock&) = delete;
+
+private:
+    double& seconds_;
+    std::chrono::steady_clock::time_point start_;
+};
 
 std::vector<double> toStd(const SimTK::Vector& v) { return std::vector<double>(&v[0], &v[0] + v.size()); }
 SimTK::Vector toSimTK(const std::vector<double>& v) { return SimTK::Vector(static_cast<int>(v.size()), v.data()); }
@@ -185,10 +203,16 @@ bool LinearlyImplicitStepper::takeStep(double h, double& error) {
 
 // (M - h D - h^2 K) du = h (f + h K u), f = M udot; u' = u + du, q' = q + h N u', z' = z + h zdot.
 void LinearlyImplicitStepper::takeEulerStep(double h) {
-    const StepMatrix A(system_.getMatterSubsystem(), contributors_, state_, h);
+    std::unique_ptr<const StepMatrix> built;
+    {
+        const ScopeClock clock(linearSolveSeconds_);
+        built = std::make_unique<const StepMatrix>(system_.getMatterSubsystem(), contributors_, state_, h);
+        ++matrixBuilds_;
+    }
+    const StepMatrix& A = *built;
     const std::vector<double> u = toStd(state_.getU());
-    std::vector<double> du = addScaled(A.multiplyByM(toStd(state_.getUDot())), h, A.multiplyByK(u));
-    A.solve(du);
+    std::vector<double> du = addScaled(A.multiplyByM(toStd(state_.getUDot())), 1, A.multiplyByGK(u, h));
+    solve(A, du);
     const SimTK::Vector uNext = toSimTK(addScaled(u, h, du));
     const SimTK::Vector zNext = state_.getZ() + h * state_.getZDot();
     SimTK::Vector qdot;
@@ -207,17 +231,12 @@ void LinearlyImplicitStepper::takeEulerStep(double h) {
 double LinearlyImplicitStepper::takeRosenbrockStep(double h) {
     const double gamma = 1 + 1 / std::sqrt(2.0), g = gamma * h;
     const SimTK::SimbodyMatterSubsystem& matter = system_.getMatterSubsystem();
-    const bool fresh = !(state_.getTime() - massMatrixTime_ < kMassMatrixAge);
-    const StepMatrix A(matter, contributors_, state_, g, fresh ? std::vector<double>() : massMatrix_);
-    if (fresh) {
-        massMatrix_ = A.getMassMatrix();
-        massMatrixTime_ = state_.getTime();
-    }
+    const StepMatrix& A = findStepMatrix(g);
     const double t0 = state_.getTime();
     const SimTK::Vector q0 = state_.getQ(), z0 = state_.getZ(), zdot0 = state_.getZDot();
     const std::vector<double> u0 = toStd(state_.getU());
-    std::vector<double> b1 = addScaled(A.multiplyByM(toStd(state_.getUDot())), g, A.multiplyByK(u0));
-    A.solve(b1);
+    std::vector<double> b1 = addScaled(A.multiplyByM(toStd(state_.getUDot())), 1, A.multiplyByGK(u0, g));
+    solve(A, b1);
     const std::vector<double> a1 = addScaled(u0, g, b1);
     SimTK::Vector qdot1, qdot2;
     matter.multiplyByN(state_, false, toSimTK(a1), qdot1);  // N(q0) a1
@@ -226,8 +245,8 @@ double LinearlyImplicitStepper::takeRosenbrockStep(double h) {
     ++evaluations_;
     const SimTK::Vector zdot2 = state_.getZDot();
     const std::vector<double> r1 = addScaled(addScaled(u0, h, b1), -2, a1);
-    std::vector<double> b2 = addScaled(A.multiplyByM(addScaled(toStd(state_.getUDot()), -2, b1)), g, A.multiplyByK(r1));
-    A.solve(b2);
+    std::vector<double> b2 = addScaled(A.multiplyByM(addScaled(toStd(state_.getUDot()), -2, b1)), 1, A.multiplyByGK(r1, g));
+    solve(A, b2);
     const std::vector<double> a2 = addScaled(r1, g, b2);
     state_.updQ() = q0;  // N(q0) for the final combination
     system_.realize(state_, SimTK::Stage::Position);
@@ -235,6 +254,37 @@ double LinearlyImplicitStepper::takeRosenbrockStep(double h) {
     const SimTK::Vector uNext = toSimTK(addScaled(addScaled(u0, 1.5 * h, b1), 0.5 * h, b2));
     setState(t0 + h, q0 + (1.5 * h) * qdot1 + (0.5 * h) * qdot2, uNext, z0 + (0.5 * h) * (zdot0 + zdot2));
     return options_.accuracy > 0 ? calcErrorNorm(A, h, a1, a2, b1, b2, u0) : 0.0;
+}
+
+// The step's matrix: the one kept from an earlier step while nothing says it is out of date (see
+// the header's kMatrixAge), else a new one (with M kept for kMassMatrixAge). At fixed steps no
+// error estimate watches a stale matrix, so each step builds its own.
+const StepMatrix& LinearlyImplicitStepper::findStepMatrix(double g) {
+    const ScopeClock clock(linearSolveSeconds_);
+    activeSet_.clear();
+    for (const ForceJacobianContributor* c : contributors_) c->appendActiveSet(state_, activeSet_);
+    const double t = state_.getTime();
+    const bool keep = options_.accuracy > 0 && matrix_ && !matrixStale_ && activeSet_ == matrixActiveSet_ &&
+                      t - matrixTime_ < kMatrixAge && g < kMatrixStepRatio * matrix_->getFactor() &&
+                      matrix_->getFactor() < kMatrixStepRatio * g;
+    if (keep) return *matrix_;
+    const bool freshM = !(t - massMatrixTime_ < kMassMatrixAge);
+    matrix_ = std::make_unique<StepMatrix>(system_.getMatterSubsystem(), contributors_, state_, g,
+                                           freshM ? std::vector<double>() : massMatrix_);
+    if (freshM) {
+        massMatrix_ = matrix_->getMassMatrix();
+        massMatrixTime_ = t;
+    }
+    matrixTime_ = t;
+    matrixActiveSet_.swap(activeSet_);
+    matrixStale_ = false;
+    ++matrixBuilds_;
+    return *matrix_;
+}
+
+void LinearlyImplicitStepper::solve(const StepMatrix& A, std::vector<double>& b) const {
+    const ScopeClock clock(linearSolveSeconds_);
+    A.solve(b);
 }
 
 // The difference from the embedded first-order solution y0 + h k1, E = h (k1 + k2) / 2, filtered
@@ -245,15 +295,15 @@ double LinearlyImplicitStepper::takeRosenbrockStep(double h) {
 double LinearlyImplicitStepper::calcErrorNorm(const StepMatrix& A, double h, const std::vector<double>& a1,
                                               const std::vector<double>& a2, const std::vector<double>& b1,
                                               const std::vector<double>& b2, const std::vector<double>& u0) const {
-    const double g = A.getFactor();
+    const double g = (1 + 1 / std::sqrt(2.0)) * h;
     const std::size_t n = u0.size();
     std::vector<double> ex(n), eu(n);
     for (std::size_t i = 0; i < n; ++i) {
         ex[i] = 0.5 * h * (a1[i] + a2[i]);
         eu[i] = 0.5 * h * (b1[i] + b2[i]);
     }
-    std::vector<double> fu = addScaled(A.multiplyByM(eu), g, A.multiplyByK(ex));
-    A.solve(fu);
+    std::vector<double> fu = addScaled(A.multiplyByM(eu), 1, A.multiplyByGK(ex, g));
+    solve(A, fu);
     const std::vector<double> fx = addScaled(ex, g, fu);
     double sum = 0;
     for (std::size_t i = 0; i < n; ++i) {
@@ -306,6 +356,7 @@ void LinearlyImplicitStepper::handleResults(const SimTK::HandleEventsResults& re
     }
     if (results.getExitStatus() == SimTK::HandleEventsResults::ShouldTerminate) terminated_ = true;
     if (results.getLowestModifiedStage() >= SimTK::Stage::Report || !initialized_) return;
+    if (results.getLowestModifiedStage() <= SimTK::Stage::Instance) matrixStale_ = true;  // pairs, locks
     system_.realize(state_, SimTK::Stage::Acceleration);
     ++evaluations_;
     system_.calcEventTriggerInfo(state_, triggerInfo_);
@@ -317,12 +368,14 @@ IntegrationStatistics LinearlyImplicitStepper::getStatistics() const {
     s.steps = steps_;
     s.errorTestFailures = rejectedSteps_;
     s.rhsEvaluations = evaluations_;
-    s.jacobianEvaluations = steps_;
-    s.linearSolverSetups = steps_;
+    s.jacobianEvaluations = matrixBuilds_;
+    s.linearSolverSetups = matrixBuilds_;
     s.projections = projections_;
     s.triggeredEvents = triggeredEvents_;
     s.scheduledEvents = scheduledEvents_;
     s.restarts = 0;  // a one-step method has no history to restart
+    s.newtonIterations = 0;
+    s.linearSolveSeconds = linearSolveSeconds_;
     return s;
 }
 

@@ -148,6 +148,7 @@ void SimbodyCpodesStepper::addCurrentCountsTo(IntegrationStatistics& s) const {
     s.errorTestFailures += integrator_->getNumErrorTestFailures();
     s.convergenceFailures += integrator_->getNumConvergenceTestFailures();
     s.projections += integrator_->getNumProjections();
+    s.newtonIterations = std::max(s.newtonIterations, 0L) + integrator_->getNumIterations();
 }
 
 IntegrationStatistics SimbodyCpodesStepper::getStatistics() const {

@@ -106,6 +106,11 @@ std::vector<double> multiply(const std::vector<double>& A, int n, const std::vec
 }  // namespace
 
 std::vector<double> StepMatrix::multiplyByM(const std::vector<double>& v) const { return multiply(M_, n_, v); }
-std::vector<double> StepMatrix::multiplyByK(const std::vector<double>& v) const { return multiply(K_, n_, v); }
+std::vector<double> StepMatrix::multiplyByGK(const std::vector<double>& v, double g) const {
+    std::vector<double> out = multiply(K_, n_, v);
+    const double scale = g_ * g_ / g;
+    for (double& x : out) x *= scale;
+    return out;
+}
 
 }  // namespace graspsim::integration

@@ -25,8 +25,11 @@ public:
 
     // M v, with the M of the state A was built at.
     std::vector<double> multiplyByM(const std::vector<double>& v) const;
-    // K v.
-    std::vector<double> multiplyByK(const std::vector<double>& v) const;
+    // g K_g v, with K_g = (g_/g)^2 K: the stiffness this matrix stands for when a step's factor
+    // is g rather than the g_ it was built with. A = M - g_ D - g_^2 K = M - g D_g - g^2 K_g with
+    // D_g = (g_/g) D: a W-method may take A as the matrix of any step, its approximate Jacobian
+    // being D_g, K_g, as long as the stages use K_g with it.
+    std::vector<double> multiplyByGK(const std::vector<double>& v, double g) const;
     // x = A^-1 b in place; b's entries for locked speeds are zeroed first.
     void solve(std::vector<double>& b) const;
     int size() const { return n_; }

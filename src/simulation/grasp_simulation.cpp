@@ -3,6 +3,7 @@
 
 #include "graspsim/error.h"
 #include "graspsim/contact/compliant_contact_jacobian.h"
+#include "graspsim/grasp/limited_bushing_jacobian.h"
 #include "graspsim/integration/cvode_integrator.h"
 #include "graspsim/integration/joint_impedance_jacobian.h"
 #include "graspsim/integration/linearly_implicit_stepper.h"
@@ -203,12 +204,18 @@ struct SceneStepper {
 
 // The linearly implicit stepper (ROS2) with the joints' impedance and the compliant contacts
 // implicit; steps up to `stepSize`, chosen by error control at `accuracy` (0: fixed steps).
-SceneStepper makeLinearlyImplicitStepper(const GraspScene& scene, double stepSize, double accuracy) {
+SceneStepper makeLinearlyImplicitStepper(const GraspExperiment& experiment, double stepSize, double accuracy) {
+    const GraspScene& scene = experiment.getScene();
+    const GraspApproximation* approximation = experiment.getApproximation();
     SceneStepper made;
     const SimTK::SimbodyMatterSubsystem& matter = scene.getModel().getMatter();
     made.jacobians.push_back(std::make_unique<integration::JointImpedanceJacobian>(
         matter, scene.getModel().getForces(), scene.findJointImpedances()));
     made.jacobians.push_back(std::make_unique<contact::CompliantContactJacobian>(matter, scene.getCompliantContacts()));
+    const auto* bushing = approximation ? dynamic_cast<const grasp::LimitedBushing*>(&approximation->getAttachment()) : nullptr;
+    if (bushing) {
+        made.jacobians.push_back(std::make_unique<grasp::LimitedBushingJacobian>(matter, *bushing, scene.getPalm(), scene.getObject()));
+    }
     std::vector<const integration::ForceJacobianContributor*> contributors;
     for (const auto& j : made.jacobians) contributors.push_back(j.get());
     integration::LinearlyImplicitOptions implicit;
@@ -220,14 +227,15 @@ SceneStepper makeLinearlyImplicitStepper(const GraspScene& scene, double stepSiz
 
 // The accuracy is a relative tolerance for both BDF integrators; CVODE takes its atol and
 // constraint tolerance from it as Simbody's integrators do (cvode_integrator.h).
-SceneStepper makeStepper(const GraspScene& scene, const SimulationOptions& options) {
+SceneStepper makeStepper(const GraspExperiment& experiment, const SimulationOptions& options) {
+    const GraspScene& scene = experiment.getScene();
     const scenario::SimulationSpec& spec = scene.getScenario().simulation;
     const double accuracy = options.accuracy > 0 ? options.accuracy : spec.accuracy;
     if (options.integrator == IntegratorChoice::LinearlyImplicit) {
-        return makeLinearlyImplicitStepper(scene, options.stepSize > 0 ? options.stepSize : spec.stepSize, accuracy);
+        return makeLinearlyImplicitStepper(experiment, options.stepSize > 0 ? options.stepSize : spec.stepSize, accuracy);
     }
     if (options.integrator == IntegratorChoice::LinearlyImplicitFixed) {
-        return makeLinearlyImplicitStepper(scene, options.stepSize > 0 ? options.stepSize : spec.stepSize, 0.0);
+        return makeLinearlyImplicitStepper(experiment, options.stepSize > 0 ? options.stepSize : spec.stepSize, 0.0);
     }
     SceneStepper made;
     if (options.integrator == IntegratorChoice::SimbodyCpodes) {
@@ -362,7 +370,7 @@ SimulationResult runGraspSimulation(const scenario::Scenario& scenario, const Si
         result.summary.integrator = "simbody-semiexpliciteuler-pgs";
         return result;
     }
-    const SceneStepper made = makeStepper(scene, options);
+    const SceneStepper made = makeStepper(experiment, options);
     const std::unique_ptr<integration::Stepper>& stepper = made.stepper;
     runScene(experiment, *stepper, duration, "integration failed", progress, observer, result);
     result.summary.integrator = stepper->getMethodName();

@@ -25,10 +25,21 @@ SilencedStdout::SilencedStdout() {
     // stream makes every insertion a no-op.
     savedState_ = std::cout.rdstate();
     std::cout.setstate(std::ios::badbit);
+    // The impulse solver's C printf formats its matrices too. A narrow printf on a wide-oriented
+    // stream fails before formatting anything (C11 7.21.2: a stream's orientation is fixed once
+    // set). printf reads the `stdout` variable at each call, while std::cout keeps the FILE it was
+    // synchronized with at start-up; so swapping the variable reaches printf only.
+    wideNull_ = std::fopen("/dev/null", "w");
+    if (wideNull_ != nullptr && std::fwide(wideNull_, 1) > 0) {
+        savedStdout_ = stdout;
+        stdout = wideNull_;
+    }
 }
 
 SilencedStdout::~SilencedStdout() {
     // What was printed meanwhile sits in the C and C++ buffers: drop it into /dev/null first.
+    if (savedStdout_ != nullptr) stdout = savedStdout_;
+    if (wideNull_ != nullptr) std::fclose(wideNull_);
     std::cout.clear(savedState_);
     std::cout.flush();
     std::fflush(stdout);

@@ -174,6 +174,23 @@ ExperimentCost measureExperiment(const std::string& name, double duration, int r
     for (auto constraint : {simulation::ApproxConstraint::Bushing, simulation::ApproxConstraint::Weld}) {
         cost.approx.push_back(measureApprox(s, constraint, duration, realizations));
     }
+    for (auto integrator : {simulation::IntegratorChoice::SimbodyCpodes, simulation::IntegratorChoice::LinearlyImplicit}) {
+        cost.steppers.push_back(measureFullContactStepper(s, integrator, duration, realizations));
+    }
+    for (const ApproxCost& a : cost.approx) {
+        StepperCost hold;
+        hold.scenario = name;
+        hold.run = "approx, " + a.constraint;
+        hold.wallPerSimSecond = a.holdWallPerSimSecond;
+        hold.evaluationsPerSimSecond = a.holdEvaluationsPerSimSecond;
+        cost.steppers.push_back(hold);
+    }
+    StepperCost floor;
+    floor.scenario = name;
+    floor.run = "floor";
+    floor.wallPerSimSecond = cost.floorHoldWallPerSimSecond;
+    floor.evaluationsPerSimSecond = cost.floorEvaluationsPerSimSecond;
+    cost.steppers.push_back(floor);
     return cost;
 }
 
@@ -323,8 +340,11 @@ std::string formatScalingTable(const CostTable& t) {
 }  // namespace
 
 std::string formatCostTable(const CostTable& t) {
+    std::vector<StepperCost> steppers;
+    for (const ExperimentCost& e : t.experiments) steppers.insert(steppers.end(), e.steppers.begin(), e.steppers.end());
     return "Table 5.1 on this machine (µs per step; thesis figures from Vortex in brackets)\n\n" + formatStepTable(t) +
-           formatSimSecondTable(t) + formatEvaluationCountTable(t) + formatEvaluationTable(t) + formatScalingTable(t) + line("\nmeasured in %.1f s", t.wallTime);
+           formatSimSecondTable(t) + formatEvaluationCountTable(t) + formatEvaluationTable(t) + formatStepperTable(steppers) +
+           formatScalingTable(t) + line("\nmeasured in %.1f s", t.wallTime);
 }
 
 std::string formatCostTableJson(const CostTable& t) {
@@ -351,6 +371,24 @@ std::string formatCostTableJson(const CostTable& t) {
                                                          {"full_realize_us", a.fullRealizeUs},
                                                          {"engaged_realize_us", a.engagedRealizeUs},
                                                          {"own_floor_realize_us", a.ownFloorRealizeUs}});
+        }
+    }
+    for (std::size_t k = 0; k < t.experiments.size(); ++k) {
+        for (const StepperCost& r : t.experiments[k].steppers) {
+            j["experiments"][k]["steppers"].push_back({{"run", r.run},
+                                                       {"wall_per_sim_s", r.wallPerSimSecond},
+                                                       {"steps_per_sim_s", r.stepsPerSimSecond},
+                                                       {"evaluations_per_sim_s", r.evaluationsPerSimSecond},
+                                                       {"jacobians_per_sim_s", r.jacobiansPerSimSecond},
+                                                       {"factorizations_per_sim_s", r.factorizationsPerSimSecond},
+                                                       {"newton_iterations_per_sim_s", r.newtonPerSimSecond},
+                                                       {"restarts_per_sim_s", r.restartsPerSimSecond},
+                                                       {"step_us", r.stepUs},
+                                                       {"dynamics_us_per_step", r.dynamicsUs},
+                                                       {"contact_us_per_step", r.contactUs},
+                                                       {"linear_solve_us_per_step", r.linearSolveUs},
+                                                       {"ik_us_per_step", r.ikUs},
+                                                       {"rest_us_per_step", r.restUs}});
         }
     }
     for (const EndEffectorCost& c : t.scaling) {

@@ -156,6 +156,30 @@ TEST(LinearlyImplicitStepper, ErrorControlledDoublePendulumMatchesRungeKutta) {
     EXPECT_GT(stepper.getNumStepsTaken(), 20);  // the error, not the 50 ms cap, chose the steps
 }
 
+// With error control the step's matrix (M - g D - g^2 K and its LU) is kept across steps of
+// nearly the same size and rebuilt at least every 10 ms: on the stiff damper over 0.3 s, once
+// the steps have grown to the 2 ms cap, about one build per 5 steps, and the answer still within
+// the accuracy's reach of the exact solution.
+TEST(LinearlyImplicitStepper, ErrorControlledStepsKeepTheirMatrixForAWhile) {
+    StiffDamper damper;
+    SimTK::State state = damper.scene.system.realizeTopology();
+    damper.scene.body.setOneQ(state, 0, StiffDamper::kStart);
+    LinearlyImplicitOptions options;
+    options.stepSize = 2e-3;
+    options.accuracy = 1e-4;
+    LinearlyImplicitStepper stepper(damper.scene.system, {&damper.jacobian}, options);
+    stepper.initialize(state);
+    const double T = 0.3;
+    stepper.stepTo(T);
+    const IntegrationStatistics stats = stepper.getStatistics();
+    RecordProperty("steps", std::to_string(stats.steps));
+    RecordProperty("matrix_builds", std::to_string(stats.linearSolverSetups));
+    EXPECT_GE(stats.steps, static_cast<long>(T / options.stepSize));
+    EXPECT_LT(stats.linearSolverSetups, stats.steps / 2);  // kept
+    EXPECT_GE(stats.linearSolverSetups, static_cast<long>(T / 0.01));  // but no longer than 10 ms
+    EXPECT_NEAR(damper.scene.body.getOneQ(stepper.getState(), 0), StiffDamper::calcExact(T), 1e-4 * StiffDamper::kStart);
+}
+
 TEST(LinearlyImplicitStepper, ReportsLandOnTheirTimesBetweenSteps) {
     StiffDamper damper;
     SimTK::State state = damper.scene.system.realizeTopology();

@@ -21,7 +21,8 @@
 ///
 /// Stages: forces are computed when the system is realized to Stage::Dynamics (they need
 /// positions and velocities); the potential energy needs Stage::Position; reports need
-/// Stage::Velocity. The element keeps no cache: every evaluation redoes the geometry.
+/// Stage::Velocity. Each force evaluation keeps its contact points in a cache entry
+/// (getEvaluatedContacts()), so that the contact Jacobian needs no second geometry pass.
 /// With anchors, the anchors' rates (Z derivatives) are set in the same Dynamics-stage pass; do
 /// not disable the element as a whole (Force::disable) then, as its anchors would get no rate
 /// (disable its pairs instead: a disabled pair's anchor relaxes to zero).
@@ -121,6 +122,13 @@ public:
 
     /// Every contact point of every enabled pair, with its forces. Needs Stage::Velocity.
     std::vector<ContactReport> findContactReports(const SimTK::State& state) const;
+    /// The contact points of every enabled pair as the last force evaluation at `state` found
+    /// them: findContactReports(state) without the body and shape names (left empty), from a
+    /// cache entry the evaluation fills (Stage::Dynamics), or computed here where none filled it
+    /// (state realized to Stage::Velocity only, or the element disabled). With the elastic-anchor
+    /// law the friction forces are those of the anchors at the last Dynamics realization.
+    /// The reference is valid until the state's positions or velocities change.
+    const std::vector<ContactReport>& getEvaluatedContacts(const SimTK::State& state) const;
     /// Every contact point of the listed pairs, enabled or not, with the forces they would apply
     /// (nothing is applied): what switching them on would give, without an Instance-stage
     /// change. Needs Stage::Velocity. @throws graspsim::InputError for an index out of range.

@@ -33,6 +33,9 @@ public:
     CompliantContactJacobian(const SimTK::SimbodyMatterSubsystem& matter, const CompliantContactForce& contacts,
                              bool withStiffness = true);
     void addForceJacobians(const SimTK::State& state, SimTK::Matrix& D, SimTK::Matrix& K) const override;
+    /// Per contact point that pushes (f_n > 0), in the element's order: 2 pairIndex + 1 if it
+    /// sticks (slip speed below the pair's transition velocity), 2 pairIndex if it slides.
+    void appendActiveSet(const SimTK::State& state, std::vector<int>& active) const override;
 
 private:
     // J = J_b(P) - J_a(P) (3 x nu, column-major) for the pair's two bodies at P (in Ground, m).

@@ -7,6 +7,8 @@
 
 #include "graspsim/simbody.h"
 
+#include <vector>
+
 namespace graspsim::integration {
 
 /// One force element's share of the force Jacobians, added in place.
@@ -24,6 +26,14 @@ public:
     /// storage, so an element may write through updContiguousScalarData()) at `state`, realized through
     /// Stage::Velocity (Acceleration where the stepper calls it).
     virtual void addForceJacobians(const SimTK::State& state, SimTK::Matrix& D, SimTK::Matrix& K) const = 0;
+    /// Appends identifiers of the terms active at `state` (contact points pushing, limit stops
+    /// engaged; same realization as addForceJacobians): between two states with equal lists this
+    /// element's D and K change smoothly, so a stepper may keep them for a while; a change in the
+    /// list is a jump in structure and calls for new ones. The default: no such terms.
+    virtual void appendActiveSet(const SimTK::State& state, std::vector<int>& active) const {
+        static_cast<void>(state);
+        static_cast<void>(active);
+    }
 };
 
 }  // namespace graspsim::integration

@@ -21,6 +21,8 @@ public:
                            std::vector<system::JointImpedance> joints);
     /// @throws graspsim::InputError for a joint whose mobilizer has other than one mobility.
     void addForceJacobians(const SimTK::State& state, SimTK::Matrix& D, SimTK::Matrix& K) const override;
+    /// The mobilized body index of every joint whose limit stop is engaged (violated).
+    void appendActiveSet(const SimTK::State& state, std::vector<int>& active) const override;
 
 private:
     const SimTK::SimbodyMatterSubsystem& matter_;

@@ -13,9 +13,11 @@
 ///
 /// Order 2 (the default), the Rosenbrock method ROS2 (Verwer et al. 1999): two stages with
 /// M - gamma h D - (gamma h)^2 K, gamma = 1 + 1/sqrt(2), two dynamics evaluations; L-stable, and
-/// second order for any approximate Jacobian (a W-method), so D and K may leave terms out and M
-/// is kept for 10 ms. Optionally error-controlled (LinearlyImplicitOptions::accuracy): steps up
-/// to h chosen from the difference to the embedded first-order solution.
+/// second order for any approximate Jacobian (a W-method), so D and K may leave terms out, M is
+/// kept for 10 ms, and with error control the whole matrix and its LU are kept across steps until
+/// the contributors' active set changes (see findStepMatrix in the class). Optionally
+/// error-controlled (LinearlyImplicitOptions::accuracy): steps up to h chosen from the difference
+/// to the embedded first-order solution.
 ///
 /// A locked mobilizer's rows are du = 0. After each step q and u are projected onto the
 /// constraints with System::project (without constraints, quaternions are only normalized).
@@ -35,6 +37,7 @@
 
 #include "graspsim/simbody.h"
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -63,6 +66,7 @@ public:
     ///         finite and > 0.
     LinearlyImplicitStepper(const SimTK::MultibodySystem& system, std::vector<const ForceJacobianContributor*> contributors,
                             const LinearlyImplicitOptions& options = {});
+    ~LinearlyImplicitStepper() override;
 
     void initialize(const SimTK::State& initial) override;
     void stepTo(double time) override;
@@ -80,6 +84,8 @@ private:
     void projectStep();
     void takeEulerStep(double h);
     double takeRosenbrockStep(double h);
+    const StepMatrix& findStepMatrix(double g);
+    void solve(const StepMatrix& A, std::vector<double>& b) const;  // A^-1 b in place, timed
     double calcErrorNorm(const StepMatrix& A, double h, const std::vector<double>& a1, const std::vector<double>& a2,
                          const std::vector<double>& b1, const std::vector<double>& b2, const std::vector<double>& u0) const;
     void setState(double t, const SimTK::Vector& q, const SimTK::Vector& u, const SimTK::Vector& z);
@@ -100,6 +106,19 @@ private:
     static constexpr double kMassMatrixAge = 0.01;  // s
     std::vector<double> massMatrix_;
     double massMatrixTime_ = -SimTK::Infinity;
+    // W = M - g D - g^2 K with its LU kept across error-controlled ROS2 steps (a W-method stays
+    // second order with a stale W; the error estimate watches) until the active set of the
+    // contributors (contacts pushing, stops engaged) changes, a step is rejected, an event changes
+    // the Instance stage, the step's g moves beyond kMatrixStepRatio of the one it was built
+    // with, or it is kMatrixAge old. Measurements: docs/performance.md.
+    static constexpr double kMatrixAge = 0.01;       // s
+    static constexpr double kMatrixStepRatio = 1.1;  // g / g_built within (1/1.1, 1.1)
+    std::unique_ptr<StepMatrix> matrix_;
+    double matrixTime_ = -SimTK::Infinity;
+    std::vector<int> matrixActiveSet_, activeSet_;
+    bool matrixStale_ = true;
+    long matrixBuilds_ = 0;
+    mutable double linearSolveSeconds_ = 0;  // building, factoring, solving (s)
     bool justRejected_ = false;
     double lastEventTime_ = -SimTK::Infinity, lastReportTime_ = -SimTK::Infinity;
     long steps_ = 0, stepsAtInitialize_ = 0, evaluations_ = 0, projections_ = 0;

@@ -25,6 +25,10 @@ struct IntegrationStatistics {
     long triggeredEvents = -1;       ///< event-trigger zero crossings handled
     long scheduledEvents = -1;       ///< scheduled event times handled
     long restarts = -1;              ///< integrator restarts (after a state change by an event or the caller)
+    long newtonIterations = -1;      ///< nonlinear (Newton) iterations; 0 for a linearly implicit method
+    /// Wall time (s) spent building, factoring and solving with the step's linear system, where the
+    /// stepper measures it itself (the linearly implicit stepper); -1 otherwise.
+    double linearSolveSeconds = -1;
 };
 
 /// Advances a SimTK::System's State in time, handling the System's events on the way.

@@ -7,13 +7,15 @@
 /// contacts). graspsim writes its results to files and its progress to stderr, so the rigid
 /// stepping runs with fd 1 pointed at /dev/null. This is the one place that does it.
 
+#include <cstdio>
 #include <ios>
 
 namespace graspsim::system {
 
-/// Points fd 1 at /dev/null and puts std::cout in a failed state while alive (after flushing
-/// stdout and std::cout), and restores both.
-/// Not thread-safe: fd 1 is shared by the whole process. Nesting is allowed.
+/// Points fd 1 at /dev/null, puts std::cout in a failed state and points C's `stdout` at a
+/// wide-oriented /dev/null stream while alive (after flushing stdout and std::cout), and restores
+/// all three.
+/// Not thread-safe: fd 1 and `stdout` are shared by the whole process. Nesting is allowed.
 class SilencedStdout {
 public:
     /// @throws graspsim::Error if /dev/null cannot be opened or fd 1 cannot be duplicated.
@@ -25,6 +27,8 @@ public:
 private:
     int saved_ = -1;  // duplicate of the original fd 1
     std::ios::iostate savedState_ = std::ios::goodbit;  // std::cout's state before
+    std::FILE* savedStdout_ = nullptr;  // C's stdout before
+    std::FILE* wideNull_ = nullptr;  // /dev/null, wide-oriented: narrow printf returns at once
 };
 
 }  // namespace graspsim::system

@@ -24,6 +24,8 @@
 ///    the approximation run's own System with its constraint off (ApproxCost). This is the
 ///    thesis's "time to solve the contacts of one step".
 
+#include "graspsim/validation/stepper_cost.h"
+
 #include <functional>
 #include <string>
 #include <vector>
@@ -68,6 +70,9 @@ struct ExperimentCost {
     double floorEvaluationsPerSimSecond = 0;  ///< the floor's dynamics evaluations per simulated s (a count)
     double floorRealizeUs = 0;
     std::vector<ApproxCost> approx;      ///< bushing, then weld
+    /// Full contact per stepper (CPodes, the default; the linearly implicit stepper), each in a run
+    /// of its own, then the approximations' holds and the floor, side by side (stepper_cost.h).
+    std::vector<StepperCost> steppers;
 };
 
 /// Full-contact cost with `endEffectors` fingertip goals (thumb first, then index, middle, ...).
