@@ -3,7 +3,7 @@
 #include "graspsim/error.h"
 #include "graspsim/integration/simbody_stepper.h"
 #include "graspsim/integration/cvode_integrator.h"
-#include "graspsim/simulation/grasp_approximation.h"
+#include "graspsim/simulation/grasp_experiment.h"
 #include "graspsim/simulation/grasp_scene.h"
 #include "graspsim/simulation/grasp_switch.h"
 #include "graspsim/simulation/rigid_stepping.h"
@@ -13,7 +13,6 @@
 #include <cmath>
 #include <cstdio>
 #include <iterator>
-#include <optional>
 
 namespace graspsim::capacity {
 
@@ -25,11 +24,10 @@ constexpr double kGravity = 9.81;  // m/s^2, for the default rate only
 class GraspRun : public LoadedRun {
 public:
     GraspRun(const scenario::Scenario& scenario, simulation::SimulationOptions options)
-        : approxOptions_(resolveApproxOptions(scenario, options)), scene_(scenario, options) {
-        if (approxOptions_) approximation_ = std::make_unique<simulation::GraspApproximation>(scene_, *approxOptions_);
+        : experiment_(scenario, options), scene_(experiment_.getScene()) {
         if (options.contact == simulation::ContactModel::Rigid) {
             rigid_ = std::make_unique<simulation::RigidStepper>(scene_);
-            rigid_->initialize(scene_.makeInitialState());
+            rigid_->initialize(experiment_.makeInitialState());
             return;
         }
         const double accuracy = options.accuracy > 0 ? options.accuracy : scenario.simulation.accuracy;
@@ -40,7 +38,7 @@ public:
         } else {
             stepper_ = std::make_unique<integration::SimbodyCpodesStepper>(scene_.getSystem(), accuracy);
         }
-        stepper_->initialize(scene_.makeInitialState());
+        stepper_->initialize(experiment_.makeInitialState());
     }
 
     void advanceTo(double t) override {
@@ -84,12 +82,7 @@ public:
     }
 
 private:
-    static std::optional<simulation::ApproxOptions> resolveApproxOptions(const scenario::Scenario& scenario,
-                                                                         const simulation::SimulationOptions& options) {
-        if (options.mode != simulation::SimulationMode::Approx) return std::nullopt;
-        return simulation::resolveApproxOptions(options.approx, scenario.approximation);
-    }
-    const simulation::GraspSwitch* findSwitch() const { return approximation_ ? &approximation_->getSwitch() : nullptr; }
+    const simulation::GraspSwitch* findSwitch() const { return experiment_.findSwitch(); }
 
     const SimTK::State& getState() const { return rigid_ ? rigid_->getState() : stepper_->getState(); }
 
@@ -129,9 +122,8 @@ private:
         return points;
     }
 
-    std::optional<simulation::ApproxOptions> approxOptions_;  // resolved before the scene is built
-    simulation::GraspScene scene_;
-    std::unique_ptr<simulation::GraspApproximation> approximation_;  // approx mode
+    simulation::GraspExperiment experiment_;
+    const simulation::GraspScene& scene_;
     std::unique_ptr<integration::Stepper> stepper_;
     std::unique_ptr<simulation::RigidStepper> rigid_;
     std::vector<SimTK::Vec3> reference_;

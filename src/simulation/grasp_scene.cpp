@@ -2,7 +2,6 @@
 
 #include "graspsim/contact/hand_object_pairs.h"
 #include "graspsim/error.h"
-#include "graspsim/grasp/limited_bushing_law.h"
 #include "graspsim/model/body_model.h"
 
 #include <algorithm>
@@ -41,18 +40,6 @@ std::vector<std::string> findFingerJoints(const model::ModelDescription& d, cons
     return joints;
 }
 
-// Stiffness per bushing axis (rotation first) giving the body natural frequency w (rad/s) about
-// and along its central principal axes: I_k w^2 and m w^2.
-SimTK::Vec6 calcBushingStiffness(const SimTK::MassProperties& mp, double w) {
-    const SimTK::Vec3 I = mp.calcCentralInertia().getMoments();
-    SimTK::Vec6 stiffness;
-    for (int k = 0; k < 3; ++k) {
-        stiffness[k] = I[k] * w * w;
-        stiffness[k + 3] = mp.getMass() * w * w;
-    }
-    return stiffness;
-}
-
 // The palm: the one massive body the model builder gave the palm role.
 std::string findPalmBody(const model::ModelDescription& d) {
     std::string palm;
@@ -80,27 +67,8 @@ GraspScene::GraspScene(const scenario::Scenario& scenario, const SimulationOptio
     addObject(options.mode == SimulationMode::Approx && options.approx.attach != ApproxAttach::Multi &&
               options.approx.constraint == ApproxConstraint::Weld);
     addContacts();
-    if (options.mode == SimulationMode::Approx) {
-        if (options.approx.attach == ApproxAttach::Multi) {
-            addMultiAttachment();
-        } else if (options.approx.constraint == ApproxConstraint::Weld) {
-            addWeld();
-        } else {
-            addBushing();
-        }
-    }
     addController(options);
     if (contactModel_ == ContactModel::Rigid) addImplicitImpedance();
-    if (options.perturbation != "none") {
-        const scenario::Perturbation* p = scenario.findPerturbation(options.perturbation);
-        if (!p) {
-            throw InputError("--perturbation: '" + options.perturbation + "' is not a perturbation of scenario '" +
-                             scenario.name + "'; use none or one the scenario defines");
-        }
-        perturbation_ = std::make_unique<PerturbationForce>(model_.updForces(), object_, toVec3(p->force), p->start,
-                                                            p->duration);
-    }
-    if (options.loadRamp) loadRamp_ = std::make_unique<RampLoad>(model_.updForces(), object_, *options.loadRamp);
     model_.realizeTopology();
 }
 
@@ -163,46 +131,6 @@ std::vector<contact::ContactReport> GraspScene::findContactReports(const SimTK::
     return contacts_.findContactReports(state);
 }
 
-// Critically damped at kBushingFrequency with the object's own mass and central inertia (O is
-// at the centre of mass), per axis: rotation first, as the bushing's axes are ordered.
-void GraspScene::addBushing() {
-    const SimTK::MassProperties mp = object_.getBody().getDefaultRigidBodyMassProperties();
-    const SimTK::Vec3 I = mp.calcCentralInertia().getMoments();
-    const SimTK::Vec6 stiffness = calcBushingStiffness(mp, kBushingFrequency);
-    bushing_ = grasp::LimitedBushing(model_.updForces(), getPalm(), SimTK::Transform(), object_, SimTK::Transform(),
-                                     stiffness, grasp::calcCriticalDamping(stiffness, I, mp.getMass()));
-    attachment_ = &bushing_;
-}
-
-// Rigid: no stiffness to choose; the limits are set by the switch on engagement.
-void GraspScene::addWeld() {
-    weld_ = std::make_unique<grasp::LimitedWeld>(model_.updSystem(), model_.updMatter(), model_.updForces(), getPalm(),
-                                                 SimTK::Transform(), object_, SimTK::Transform());
-    attachment_ = weld_.get();
-}
-
-// One part per goal, at the goal on the surface, normal outward, x along gravity's tangent part (the
-// main load: the per-axis limits are exact along it). The parts share the merged bushing's stiffness:
-// N of them in parallel give the object the same frequency kBushingFrequency in translation.
-void GraspScene::addMultiAttachment() {
-    const model::ModelDescription& d = model_.getDescription();
-    const SimTK::Rotation R_OG = ~toTransform(scenario_.object.findPose()).R();
-    const SimTK::Vec3 g_O = R_OG * toVec3(scenario_.world.gravity);
-    std::vector<grasp::AttachmentSite> sites;
-    for (const auto& [endEffector, p_OT] : scenario_.goals) {
-        const model::Vec3 n = scenario_.object.findOutwardNormal(p_OT);
-        sites.push_back({model_.getMobilizedBody(d.findEndEffector(endEffector)->body), toVec3(p_OT),
-                         SimTK::UnitVec3(toVec3(n)), g_O});
-    }
-    const SimTK::MassProperties mp = object_.getBody().getDefaultRigidBodyMassProperties();
-    const SimTK::Vec3 I = mp.calcCentralInertia().getMoments();
-    const SimTK::Vec6 stiffness = calcBushingStiffness(mp, kBushingFrequency);
-    const double parts = static_cast<double>(sites.size());
-    multi_ = std::make_unique<grasp::MultiAttachment>(model_.updForces(), object_, sites, stiffness / parts,
-                                                      grasp::calcCriticalDamping(stiffness, I, mp.getMass()) / parts);
-    attachment_ = multi_.get();
-}
-
 const SimTK::MobilizedBody& GraspScene::getPalm() const { return model_.getMobilizedBody(palmBody_); }
 
 SimTK::MobilizedBody& GraspScene::updPalm() { return model_.updMatter().updMobilizedBody(getPalm().getMobilizedBodyIndex()); }
@@ -251,7 +179,6 @@ SimTK::State GraspScene::makeInitialState() {
     }
     pd_->setTargets(state, targets);
     placeObject(state);
-    if (attachment_) attachment_->release(state);  // contact holds the object until the switch engages
     model_.getSystem().realize(state, SimTK::Stage::Position);
     // The goals T: the scenario's points on the object, pressed in along the inward normal, as they
     // sit in the palm frame now that hand and object are in place.

@@ -9,15 +9,13 @@
 #include "graspsim/integration/linearly_implicit_stepper.h"
 #include "graspsim/integration/simbody_stepper.h"
 #include "graspsim/simulation/contact_grasp_quality.h"
-#include "graspsim/simulation/grasp_approximation.h"
-#include "graspsim/simulation/grasp_scene.h"
+#include "graspsim/simulation/grasp_experiment.h"
 #include "graspsim/simulation/rigid_stepping.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <memory>
-#include <optional>
 #include <set>
 
 namespace graspsim::simulation {
@@ -28,7 +26,8 @@ using Clock = std::chrono::steady_clock;
 
 // Output times, plus every instant where the inputs jump (release, perturbation on and off) so
 // that no integration step straddles a discontinuity.
-std::vector<double> makeSampleTimes(const GraspScene& scene, double duration) {
+std::vector<double> makeSampleTimes(const GraspExperiment& experiment, double duration) {
+    const GraspScene& scene = experiment.getScene();
     std::set<double> times;
     const double dt = scene.getScenario().simulation.outputInterval;
     const long n = static_cast<long>(std::floor(duration / dt + 1e-9));
@@ -37,7 +36,7 @@ std::vector<double> makeSampleTimes(const GraspScene& scene, double duration) {
     const auto addInside = [&](double t) { if (t > 0 && t < duration) times.insert(t); };
     addInside(scene.getReleaseTime());
     addInside(scene.getScenario().simulation.settleTime);
-    if (const PerturbationForce* p = scene.getPerturbation()) {
+    if (const PerturbationForce* p = experiment.getLoads().getPerturbation()) {
         addInside(p->getStartTime());
         addInside(p->getEndTime());
     }
@@ -46,8 +45,10 @@ std::vector<double> makeSampleTimes(const GraspScene& scene, double duration) {
 
 class Recorder {
 public:
-    Recorder(const GraspScene& scene, const GraspSwitch* grasp, SimulationResult& result)
-        : scene_(scene), grasp_(grasp), result_(result) {
+    Recorder(const GraspExperiment& experiment, SimulationResult& result)
+        : scene_(experiment.getScene()), approximation_(experiment.getApproximation()),
+          grasp_(experiment.findSwitch()), result_(result) {
+        const GraspScene& scene = experiment.getScene();
         result_.jointNames = scene.getModel().getJointNames();
         for (const std::string& j : result_.jointNames) jointQ_.push_back(scene.getModel().getJointQIndex(j));
         qualityOptions_ = makeQualityOptions(scene.getContactParameters());
@@ -71,7 +72,9 @@ public:
         } else {
             sample.graspQuality = calcContactGraspQuality(contacts.contacts, X_GO, qualityOptions_);
         }
-        if (auto constraint = findConstraintSample(scene_, s)) result_.constraint.push_back(*constraint);
+        if (approximation_) {
+            if (auto constraint = findConstraintSample(approximation_->getContext(), s)) result_.constraint.push_back(*constraint);
+        }
         result_.summary.maxGraspQuality = std::max(result_.summary.maxGraspQuality, sample.graspQuality);
         result_.trajectory.push_back(std::move(sample));
         for (const auto& c : contacts.contacts) result_.summary.maxPenetration = std::max(result_.summary.maxPenetration, c.depth);
@@ -80,7 +83,8 @@ public:
 
 private:
     const GraspScene& scene_;
-    const GraspSwitch* grasp_;  // approx mode only
+    const GraspApproximation* approximation_;  // approx mode only
+    const GraspSwitch* grasp_;                 // approx mode only
     SimulationResult& result_;
     grasp::QualityOptions qualityOptions_;  // box friction cone, smallest singular value
     std::vector<SimTK::QIndex> jointQ_;     // per joint name, looked up once: a sample is taken every 10 ms
@@ -173,10 +177,11 @@ long countSteps(const RigidStepper& stepper) { return stepper.getNumSteps(); }
 // Steps from sample to sample, releasing the object on time; `lastEvent` says what happened last.
 // AnyStepper: an integration::Stepper (CPodes, CVODE) or the rigid model's RigidStepper.
 template <class AnyStepper>
-void stepThroughSamples(const GraspScene& scene, const GraspSwitch* grasp, AnyStepper& stepper, Recorder& recorder, PhaseTimer& phases,
+void stepThroughSamples(const GraspExperiment& experiment, AnyStepper& stepper, Recorder& recorder, PhaseTimer& phases,
                         double duration, const ProgressCallback& progress, const SampleObserver& observer,
                         std::string& lastEvent) {
-    for (double t : makeSampleTimes(scene, duration)) {
+    const GraspScene& scene = experiment.getScene();
+    for (double t : makeSampleTimes(experiment, duration)) {
         stepper.stepTo(t);
         checkFinite(stepper.getState(), lastEvent);
         phases.mark(stepper.getState(), countSteps(stepper));
@@ -186,7 +191,7 @@ void stepThroughSamples(const GraspScene& scene, const GraspSwitch* grasp, AnySt
             lastEvent = "object released at t = " + std::to_string(t) + " s";
         }
         recorder.record(stepper.getState());
-        if (observer) observer(scene, grasp, stepper.getState());
+        if (observer) observer(experiment, stepper.getState());
         if (progress) progress(t, duration);
     }
 }
@@ -199,13 +204,16 @@ struct SceneStepper {
 
 // The linearly implicit stepper (ROS2) with the joints' impedance and the compliant contacts
 // implicit; steps up to `stepSize`, chosen by error control at `accuracy` (0: fixed steps).
-SceneStepper makeLinearlyImplicitStepper(const GraspScene& scene, double stepSize, double accuracy) {
+SceneStepper makeLinearlyImplicitStepper(const GraspExperiment& experiment, double stepSize, double accuracy) {
+    const GraspScene& scene = experiment.getScene();
+    const GraspApproximation* approximation = experiment.getApproximation();
     SceneStepper made;
     const SimTK::SimbodyMatterSubsystem& matter = scene.getModel().getMatter();
     made.jacobians.push_back(std::make_unique<integration::JointImpedanceJacobian>(
         matter, scene.getModel().getForces(), scene.findJointImpedances()));
     made.jacobians.push_back(std::make_unique<contact::CompliantContactJacobian>(matter, scene.getCompliantContacts()));
-    if (const auto* bushing = dynamic_cast<const grasp::LimitedBushing*>(scene.getAttachment())) {
+    const auto* bushing = approximation ? dynamic_cast<const grasp::LimitedBushing*>(&approximation->getAttachment()) : nullptr;
+    if (bushing) {
         made.jacobians.push_back(std::make_unique<grasp::LimitedBushingJacobian>(matter, *bushing, scene.getPalm(), scene.getObject()));
     }
     std::vector<const integration::ForceJacobianContributor*> contributors;
@@ -219,14 +227,15 @@ SceneStepper makeLinearlyImplicitStepper(const GraspScene& scene, double stepSiz
 
 // The accuracy is a relative tolerance for both BDF integrators; CVODE takes its atol and
 // constraint tolerance from it as Simbody's integrators do (cvode_integrator.h).
-SceneStepper makeStepper(const GraspScene& scene, const SimulationOptions& options) {
+SceneStepper makeStepper(const GraspExperiment& experiment, const SimulationOptions& options) {
+    const GraspScene& scene = experiment.getScene();
     const scenario::SimulationSpec& spec = scene.getScenario().simulation;
     const double accuracy = options.accuracy > 0 ? options.accuracy : spec.accuracy;
     if (options.integrator == IntegratorChoice::LinearlyImplicit) {
-        return makeLinearlyImplicitStepper(scene, options.stepSize > 0 ? options.stepSize : spec.stepSize, accuracy);
+        return makeLinearlyImplicitStepper(experiment, options.stepSize > 0 ? options.stepSize : spec.stepSize, accuracy);
     }
     if (options.integrator == IntegratorChoice::LinearlyImplicitFixed) {
-        return makeLinearlyImplicitStepper(scene, options.stepSize > 0 ? options.stepSize : spec.stepSize, 0.0);
+        return makeLinearlyImplicitStepper(experiment, options.stepSize > 0 ? options.stepSize : spec.stepSize, 0.0);
     }
     SceneStepper made;
     if (options.integrator == IntegratorChoice::SimbodyCpodes) {
@@ -317,10 +326,12 @@ void summarizeRun(const GraspScene& scene, const GraspSwitch* grasp, const Phase
 // initial state to `duration`, filling `result` except the integrator's name and statistics.
 // `failureVerb` says what failed when the stepper throws something other than a NumericalError.
 template <class AnyStepper>
-void runScene(GraspScene& scene, const GraspSwitch* grasp, AnyStepper& stepper, double duration, const char* failureVerb,
+void runScene(GraspExperiment& experiment, AnyStepper& stepper, double duration, const char* failureVerb,
               const ProgressCallback& progress, const SampleObserver& observer, SimulationResult& result) {
-    Recorder recorder(scene, grasp, result);
-    stepper.initialize(scene.makeInitialState());
+    const GraspScene& scene = experiment.getScene();
+    const GraspSwitch* grasp = experiment.findSwitch();
+    Recorder recorder(experiment, result);
+    stepper.initialize(experiment.makeInitialState());
     result.summary.initialPenetration = scene.getSetupCheck().initialPenetration;
     recorder.record(stepper.getState());
     std::string lastEvent = "start";
@@ -328,7 +339,7 @@ void runScene(GraspScene& scene, const GraspSwitch* grasp, AnyStepper& stepper, 
     const auto start = Clock::now();
     const double ikBefore = scene.getIkTiming().totalSeconds;
     try {
-        stepThroughSamples(scene, grasp, stepper, recorder, phases, duration, progress, observer, lastEvent);
+        stepThroughSamples(experiment, stepper, recorder, phases, duration, progress, observer, lastEvent);
         result.summary.complete = true;
     } catch (const NumericalError& e) {
         result.summary.failure = foldToOneLine(e.what());
@@ -348,24 +359,20 @@ void runScene(GraspScene& scene, const GraspSwitch* grasp, AnyStepper& stepper, 
 SimulationResult runGraspSimulation(const scenario::Scenario& scenario, const SimulationOptions& options,
                                     const ProgressCallback& progress, const SampleObserver& observer) {
     const double duration = options.duration > 0 ? options.duration : scenario.simulation.duration;
-    std::optional<ApproxOptions> approxOptions;
-    if (options.mode == SimulationMode::Approx) approxOptions = resolveApproxOptions(options.approx, scenario.approximation);
-    GraspScene scene(scenario, options);
-    std::unique_ptr<GraspApproximation> approximation;
-    if (approxOptions) approximation = std::make_unique<GraspApproximation>(scene, *approxOptions);
-    const GraspSwitch* grasp = approximation ? &approximation->getSwitch() : nullptr;
+    GraspExperiment experiment(scenario, options);
+    const GraspScene& scene = experiment.getScene();
     SimulationResult result;
     result.summary = makeSummaryHeader(scenario, options, duration);
     if (options.contact == ContactModel::Rigid) {
         // Rigid contact: Simbody's SemiExplicitEulerTimeStepper at a fixed step (rigid_stepping.h).
         RigidStepper stepper(scene);
-        runScene(scene, grasp, stepper, duration, "stepping failed", progress, observer, result);
+        runScene(experiment, stepper, duration, "stepping failed", progress, observer, result);
         result.summary.integrator = "simbody-semiexpliciteuler-pgs";
         return result;
     }
-    const SceneStepper made = makeStepper(scene, options);
+    const SceneStepper made = makeStepper(experiment, options);
     const std::unique_ptr<integration::Stepper>& stepper = made.stepper;
-    runScene(scene, grasp, *stepper, duration, "integration failed", progress, observer, result);
+    runScene(experiment, *stepper, duration, "integration failed", progress, observer, result);
     result.summary.integrator = stepper->getMethodName();
     result.summary.integratorStatistics = stepper->getStatistics();
     return result;

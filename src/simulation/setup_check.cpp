@@ -2,6 +2,7 @@
 
 #include "graspsim/contact/shape_contact.h"
 #include "graspsim/error.h"
+#include "graspsim/simulation/grasp_experiment.h"
 #include "graspsim/simulation/grasp_scene.h"
 
 #include <algorithm>
@@ -85,12 +86,12 @@ void requireSetup(const SetupCheck& check, const std::string& where) {
     }
 }
 
+// The whole run's system, approximation and loads included: a run checked here must not fail on
+// its options once its folder exists.
 SetupCheck checkScenarioSetup(const scenario::Scenario& scenario, const SimulationOptions& options) {
-    // The approximation's options too: a run checked here must not fail on them once its folder exists.
-    if (options.mode == SimulationMode::Approx) resolveApproxOptions(options.approx, scenario.approximation);
-    GraspScene scene(scenario, options);
-    scene.makeInitialState();  // checks the initial state
-    return scene.getSetupCheck();
+    GraspExperiment experiment(scenario, options);
+    experiment.makeInitialState();  // checks the initial state
+    return experiment.getScene().getSetupCheck();
 }
 
 }  // namespace graspsim::simulation

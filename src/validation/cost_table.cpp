@@ -1,6 +1,7 @@
 #include "graspsim/validation/cost_table.h"
 
 #include "graspsim/scenario/scenario_file.h"
+#include "graspsim/simulation/grasp_experiment.h"
 #include "graspsim/simulation/grasp_scene.h"
 #include "graspsim/simulation/grasp_simulation.h"
 #include "graspsim/simulation/grasp_switch.h"
@@ -25,9 +26,13 @@ namespace {
 // The floor state: `state` with the approximation's element off, the fingers and the object locked
 // where they are and every finger-object pair off: the same arm and merged hand with no object
 // dynamics and no contact. Its cost depends on the System it is in (see ExperimentCost).
-SimTK::State makeFloorState(const simulation::GraspScene& scene, const SimTK::State& state) {
+SimTK::State makeFloorState(const simulation::GraspExperiment& experiment, const SimTK::State& state) {
+    const simulation::GraspScene& scene = experiment.getScene();
     SimTK::State floor = state;
-    if (scene.getAttachment()) scene.getAttachment()->release(floor);  // first: a weld may own the object's lock
+    // First: a weld may own the object's lock.
+    if (const simulation::GraspApproximation* approximation = experiment.getApproximation()) {
+        approximation->getAttachment().release(floor);
+    }
     const SimTK::SimbodyMatterSubsystem& matter = scene.getModel().getMatter();
     for (SimTK::MobilizedBodyIndex finger : scene.getFingerMobilizers()) {
         matter.getMobilizedBody(finger).lock(floor, SimTK::Motion::Position);
@@ -51,11 +56,13 @@ public:
     // `endTime`: the run's last sample, after which its System is gone.
     ApproxRunMeter(ApproxCost& cost, int realizations, double endTime) : cost_(cost), realizations_(realizations), endTime_(endTime) {}
 
-    void observe(const simulation::GraspScene& scene, const simulation::GraspSwitch* grasp, const SimTK::State& state) {
+    void observe(const simulation::GraspExperiment& experiment, const SimTK::State& state) {
+        const simulation::GraspScene& scene = experiment.getScene();
+        const simulation::GraspSwitch* grasp = experiment.findSwitch();
         const Mark here = clock_.mark(state.getTime(), scene.getSystem());
         const double before = clock_.getObservingSeconds();
         clock_.beginObserving(scene.getSystem());
-        if (!scene.isObjectHeld(state) && grasp) observeReleased(scene, state, *grasp, here);
+        if (!scene.isObjectHeld(state) && grasp) observeReleased(experiment, state, *grasp, here);
         if (state.getTime() >= endTime_ - 1e-9) ownFloor_.reset();
         clock_.endObserving(scene.getSystem());
         if (engaged_.isSet()) observingWhileEngaged_ += clock_.getObservingSeconds() - before;
@@ -77,13 +84,14 @@ public:
     }
 
 private:
-    void observeReleased(const simulation::GraspScene& scene, const SimTK::State& state, const simulation::GraspSwitch& grasp,
-                         const Mark& here) {
+    void observeReleased(const simulation::GraspExperiment& experiment, const SimTK::State& state,
+                         const simulation::GraspSwitch& grasp, const Mark& here) {
+        const simulation::GraspScene& scene = experiment.getScene();
         if (!grasp.isEngaged(state) && grasp.getEvents(state).empty()) {
             cost_.fullRealizeUs = timeRealization(scene.getSystem(), state, realizations_);
         } else if (grasp.isEngaged(state) && !engaged_.isSet()) {
             engaged_ = here;
-            const SimTK::State floor = makeFloorState(scene, state);
+            const SimTK::State floor = makeFloorState(experiment, state);
             std::tie(cost_.engagedRealizeUs, cost_.ownFloorRealizeUs) =
                 timeRealizationPair(scene.getSystem(), state, floor, realizations_);
             const scenario::Scenario& s = scene.getScenario();
@@ -125,8 +133,8 @@ ApproxCost measureApprox(const scenario::Scenario& s, simulation::ApproxConstrai
     options.approx.constraint = constraint;
     options.duration = duration + kHoldSeconds;
     ApproxRunMeter meter(cost, realizations, options.duration);
-    const simulation::SampleObserver observe = [&](const simulation::GraspScene& scene, const simulation::GraspSwitch* grasp, const SimTK::State& state) {
-        meter.observe(scene, grasp, state);
+    const simulation::SampleObserver observe = [&](const simulation::GraspExperiment& experiment, const SimTK::State& state) {
+        meter.observe(experiment, state);
     };
     meter.finish(simulation::runGraspSimulation(s, options, {}, observe).summary);
     return cost;
@@ -137,9 +145,10 @@ ApproxCost measureApprox(const scenario::Scenario& s, simulation::ApproxConstrai
 // per-step figures.
 void measureFloor(const scenario::Scenario& s, const simulation::SimulationOptions& options, int realizations,
                   ExperimentCost& cost) {
-    const simulation::SampleObserver observe = [&](const simulation::GraspScene& scene, const simulation::GraspSwitch*, const SimTK::State& state) {
+    const simulation::SampleObserver observe = [&](const simulation::GraspExperiment& experiment, const SimTK::State& state) {
         if (state.getTime() < options.duration - 1e-9) return;
-        const SimTK::State floor = makeFloorState(scene, state);
+        const simulation::GraspScene& scene = experiment.getScene();
+        const SimTK::State floor = makeFloorState(experiment, state);
         cost.floorRealizeUs = timeRealization(scene.getSystem(), floor, realizations);
         const scenario::Scenario& scenario = scene.getScenario();
         const HoldCost hold = timeFloorHold(scene.getSystem(), floor, scenario.simulation.accuracy, scenario.controller.ikInterval,
@@ -196,8 +205,8 @@ EndEffectorCost measureEndEffectors(int count, double duration, int realizations
     EndEffectorCost cost;
     cost.endEffectors = count;
     double endTime = duration;
-    const simulation::SampleObserver observe = [&](const simulation::GraspScene& scene, const simulation::GraspSwitch*, const SimTK::State& state) {
-        if (state.getTime() >= endTime - 1e-9) cost.realizeUs = timeRealization(scene.getSystem(), state, realizations);
+    const simulation::SampleObserver observe = [&](const simulation::GraspExperiment& experiment, const SimTK::State& state) {
+        if (state.getTime() >= endTime - 1e-9) cost.realizeUs = timeRealization(experiment.getScene().getSystem(), state, realizations);
     };
     const simulation::SimulationSummary r = simulation::runGraspSimulation(s, options, {}, observe).summary;
     cost.stepUs = r.meanStepUs;

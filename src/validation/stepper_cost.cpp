@@ -1,5 +1,6 @@
 #include "graspsim/validation/stepper_cost.h"
 
+#include "graspsim/simulation/grasp_experiment.h"
 #include "graspsim/simulation/grasp_scene.h"
 #include "graspsim/simulation/grasp_simulation.h"
 
@@ -59,9 +60,9 @@ StepperCost measureFullContactStepper(const scenario::Scenario& scenario, simula
     options.duration = duration;
     options.integrator = integrator;
     double realizeUs = 0, contactUs = 0, observing = 0;
-    const simulation::SampleObserver observe = [&](const simulation::GraspScene& scene, const simulation::GraspSwitch*,
-                                                    const SimTK::State& state) {
+    const simulation::SampleObserver observe = [&](const simulation::GraspExperiment& experiment, const SimTK::State& state) {
         if (state.getTime() < duration - 1e-9) return;
+        const simulation::GraspScene& scene = experiment.getScene();
         const double start = nowSeconds();
         realizeUs = timeRealization(scene.getSystem(), state, realizations);
         contactUs = timeContactForce(scene, state, realizations);

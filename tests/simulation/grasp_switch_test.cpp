@@ -4,7 +4,7 @@
 
 #include "graspsim/simulation/grasp_simulation.h"
 
-#include "graspsim/simulation/grasp_approximation.h"
+#include "graspsim/simulation/grasp_experiment.h"
 #include "graspsim/simulation/grasp_scene.h"
 #include "graspsim/simulation/grasp_switch.h"
 
@@ -155,8 +155,9 @@ TEST(GraspSwitch, WeldObjectIsHeldByTheGroundWeldThenByTheMobilizerLock) {
     bool haveEngagedPose = false;
     SimTK::Transform X_PO_engaged;
     double drift = 0;
-    const simulation::SampleObserver observe = [&](const simulation::GraspScene& scene,
-                                                   const simulation::GraspSwitch* grasp, const SimTK::State& state) {
+    const simulation::SampleObserver observe = [&](const simulation::GraspExperiment& experiment, const SimTK::State& state) {
+        const simulation::GraspScene& scene = experiment.getScene();
+        const simulation::GraspSwitch* grasp = experiment.findSwitch();
         EXPECT_EQ(scene.getObject().getParentMobilizedBody().getMobilizedBodyIndex(), scene.getPalm().getMobilizedBodyIndex());
         if (scene.isObjectHeld(state)) {
             heldTimes.push_back(state.getTime());
@@ -165,7 +166,7 @@ TEST(GraspSwitch, WeldObjectIsHeldByTheGroundWeldThenByTheMobilizerLock) {
         ASSERT_NE(grasp, nullptr);
         if (!grasp->isEngaged(state)) return;
         ++engagedSamples;
-        const auto* weld = dynamic_cast<const grasp::LimitedWeld*>(scene.getAttachment());
+        const auto* weld = dynamic_cast<const grasp::LimitedWeld*>(&experiment.getApproximation()->getAttachment());
         ASSERT_NE(weld, nullptr);
         if (weld->isHeldByLock(state)) ++lockedSamples;
         const SimTK::Transform X_PO = ~scene.getPalm().getBodyTransform(state) * scene.getObject().getBodyTransform(state);
@@ -198,8 +199,7 @@ TEST(GraspSwitch, WeldObjectIsHeldByTheGroundWeldThenByTheMobilizerLock) {
 TEST(GraspSwitch, EachStateCarriesItsOwnRecord) {
     const scenario::Scenario s = scenario::findBuiltinScenario("phone-pinch");
     std::vector<SimTK::State> samples;
-    const simulation::SampleObserver observe = [&](const simulation::GraspScene&, const simulation::GraspSwitch*,
-                                                   const SimTK::State& state) {
+    const simulation::SampleObserver observe = [&](const simulation::GraspExperiment&, const SimTK::State& state) {
         samples.push_back(state);
     };
     const auto r = simulation::runGraspSimulation(
@@ -210,9 +210,8 @@ TEST(GraspSwitch, EachStateCarriesItsOwnRecord) {
     const double engageTime = r.events.front().time;
     // A fresh scene reads the copied States (the record lives in them, not in the switch).
     simulation::SimulationOptions options = makeOptions(simulation::SimulationMode::Approx, 1);
-    simulation::GraspScene scene(s, options);
-    const simulation::GraspApproximation approximation(scene, simulation::resolveApproxOptions(options.approx, s.approximation));
-    const simulation::GraspSwitch& grasp = approximation.getSwitch();
+    const simulation::GraspExperiment experiment(s, options);
+    const simulation::GraspSwitch& grasp = *experiment.findSwitch();
     int before = 0, after = 0;
     for (const SimTK::State& state : samples) {
         const std::vector<simulation::GraspEvent>& events = grasp.getEvents(state);

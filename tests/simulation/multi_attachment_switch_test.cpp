@@ -9,6 +9,7 @@
 #include "graspsim/error.h"
 #include "graspsim/grasp/multi_attachment.h"
 #include "graspsim/scenario/scenario_file.h"
+#include "graspsim/simulation/grasp_experiment.h"
 #include "graspsim/simulation/grasp_scene.h"
 #include "graspsim/simulation/multi_attachment_switch.h"
 
@@ -97,8 +98,9 @@ TEST(MultiAttachmentSwitch, ADetachedFingerCarriesNothingAndReturnsToContactWhil
     // Per sample: which parts are attached, the force of the detached ones, fingertip-goal distances.
     std::map<std::string, double> detachedForce, firstDetachedSample;
     std::map<std::string, int> contactSamples;  // samples after the detach with the finger in contact
-    const auto observe = [&](const simulation::GraspScene& scene, const simulation::GraspSwitch*, const SimTK::State& state) {
-        const grasp::MultiAttachment& multi = *scene.getMultiAttachment();
+    const auto observe = [&](const simulation::GraspExperiment& experiment, const SimTK::State& state) {
+        const simulation::GraspScene& scene = experiment.getScene();
+        const grasp::MultiAttachment& multi = *experiment.getApproximation()->getContext().multi;
         for (int i = 0; i < multi.getNumParts(); ++i) {
             const std::string& name = scene.getGoalEndEffectors()[static_cast<std::size_t>(i)];
             if (multi.isAttached(state, i) || state.getTime() < 1.0) continue;

@@ -10,7 +10,7 @@
 
 namespace graspsim::simulation {
 
-class GraspScene;
+struct ApproximationContext;
 
 /// The merged approximation's constraint (bushing or weld) while engaged.
 /// Axes k in SpatialVec order: 0-2 rotation about the constraint frame M's x, y, z, 3-5
@@ -23,10 +23,10 @@ struct ConstraintSample {
     SimTK::SpatialVec wrench_G;   ///< the same as a spatial force on the object (moment about M's origin, N m; force, N), in ground
 };
 
-/// The sample at `state` when the scene's merged approximation is engaged there; nullopt in full
-/// mode, with the multi attachment (one element per fingertip, no single constraint), or while
-/// not engaged. Realizes `state` to the attachment's reaction stage when engaged
+/// The sample at `state` when the merged approximation of `context` is engaged there; nullopt
+/// with the multi attachment (one element per fingertip, no single constraint), or while not
+/// engaged. Realizes `state` to the attachment's reaction stage when engaged
 /// (grasp::GraspAttachment::getReactionStage: the weld's reaction is its multipliers).
-std::optional<ConstraintSample> findConstraintSample(const GraspScene& scene, const SimTK::State& state);
+std::optional<ConstraintSample> findConstraintSample(const ApproximationContext& context, const SimTK::State& state);
 
 }  // namespace graspsim::simulation

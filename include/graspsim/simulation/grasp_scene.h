@@ -1,7 +1,7 @@
 #pragma once
 /// @file
-/// One grasp experiment assembled in Simbody: the arm and hand, the free object, finger-object
-/// contact, the PD + IK grasp controller and the scenario's perturbation.
+/// The scene of a grasp experiment in Simbody: the arm and hand, the free object, finger-object
+/// contact and the PD + IK grasp controller with its fingertip goals.
 ///
 /// The thesis's sequence (Figure 4.1): the hand is put in the grasp pose kinematically at t = 0
 /// ("forward kinematics once"); IK then tracks the fingertips to goal points just inside the
@@ -15,12 +15,11 @@
 /// tolerance where the lock is exact: a few micrometres by the release in the built-in scenarios).
 /// After the release the object is the same free rigid body either way; only its coordinates differ.
 ///
-/// In SimulationMode::Approx the scene also holds the approximation's friction-limited attachment
-/// (ApproxOptions: a LimitedBushing or a LimitedWeld palm-object, or a MultiAttachment; released
-/// at t = 0), added before the perturbation and the load so that Simbody sums the object's forces
-/// in the same order in every mode, and leaves its IK controller out of the System: the grasp
-/// switch built on top of the scene runs it (grasp_approximation.h). The scene knows nothing of
-/// that switch.
+/// The scene is what full contact needs of a run. The approximation (its attachment and grasp
+/// switch, grasp_approximation.h) and the loads on the object (object_loads.h) are built on top of
+/// it, in that order (grasp_experiment.h); the scene knows nothing of them. In
+/// SimulationMode::Approx it only leaves its IK controller out of the System, for the grasp switch
+/// to run, and with the merged weld hangs the object from the palm (above).
 ///
 /// With ContactModel::Rigid the finger-object pairs are rigid contacts (contact::RigidContactSet)
 /// instead of the compliant force element, and the joints' impedance (passive spring, damper,
@@ -32,13 +31,9 @@
 #include "graspsim/contact/compliant_contact_force.h"
 #include "graspsim/contact/rigid_contact_set.h"
 #include "graspsim/control/grasp_controller.h"
-#include "graspsim/grasp/limited_bushing.h"
-#include "graspsim/grasp/limited_weld.h"
-#include "graspsim/grasp/multi_attachment.h"
 #include "graspsim/scenario/scenario.h"
 #include "graspsim/simulation/fingertip_goals.h"
 #include "graspsim/simulation/object_hold.h"
-#include "graspsim/simulation/perturbation_force.h"
 #include "graspsim/simulation/setup_check.h"
 #include "graspsim/simulation/simulation_options.h"
 #include "graspsim/system/implicit_joint_impedance.h"
@@ -58,17 +53,10 @@ namespace graspsim::simulation {
 constexpr double kArmKp = 200.0;  ///< N m/rad
 constexpr double kArmKd = 20.0;   ///< N m s/rad
 
-/// Natural frequency of the approximation's bushing with the object's own mass and inertia
-/// (rad/s, critically damped): stiff enough that gravity sags the object by g / w^2 = 0.25 mm,
-/// soft enough to leave the integrator steps of the full-contact run (about 5 ms period).
-/// The default only: the grasp switch stiffens the merged bushing at engagement from its friction
-/// limits (ApproxOptions::maxEngagedPenetration).
-constexpr double kBushingFrequency = 200.0;
-
-/// The assembled experiment. Neither copyable nor movable (Simbody elements refer into it).
+/// The scene (see the file comment). Neither copyable nor movable (Simbody elements refer into it).
 class GraspScene {
 public:
-    /// @throws graspsim::InputError for an unknown perturbation name or an unsupported option.
+    /// @throws graspsim::InputError for an unsupported option (approx with rigid contact, multi where it cannot attach).
     GraspScene(const scenario::Scenario& scenario, const SimulationOptions& options);
     GraspScene(const GraspScene&) = delete;
     GraspScene& operator=(const GraspScene&) = delete;
@@ -79,7 +67,7 @@ public:
     /// sticking speed and the grasp quality's mu from here.
     const contact::ContactParameters& getContactParameters() const { return scenario_.contact; }
     const system::MultibodyModel& getModel() const { return model_; }
-    /// The model, for elements built on top of the scene (grasp_approximation.h), which call
+    /// The model, for the elements built on top of the scene (grasp_experiment.h), which call
     /// realizeTopology() again after adding theirs.
     system::MultibodyModel& updModel() { return model_; }
     const SimTK::MultibodySystem& getSystem() const { return model_.getSystem(); }
@@ -115,22 +103,12 @@ public:
     /// Mobilizers of the finger joints (the ones merged into the palm while the approximation
     /// is engaged).
     const std::vector<SimTK::MobilizedBodyIndex>& getFingerMobilizers() const { return fingerMobilizers_; }
-    /// The approximation's attachment in approx mode (the bushing, the weld or the
-    /// multi-attachment, per ApproxOptions), nullptr in full mode. The switch, the tracker and the
-    /// cost table use it through this interface.
-    const grasp::GraspAttachment* getAttachment() const { return attachment_; }
-    /// The `multi` attachment (object - every goal fingertip), or nullptr unless in approx mode with
-    /// ApproxOptions::attach Multi (multi_attachment_switch.h).
-    const grasp::MultiAttachment* getMultiAttachment() const { return multi_.get(); }
     /// Largest distance between a goal's fingertip and its goal point on the object's surface
     /// (m): how far the object has left the hand. Realizes `state` to Stage::Position.
     double findMaxFingertipGoalDistance(const SimTK::State& state) const { return goals_.findMaxDistance(state); }
-    /// The perturbation of this run, or nullptr.
-    const PerturbationForce* getPerturbation() const { return perturbation_.get(); }
-    /// The load of SimulationOptions::loadRamp, or nullptr.
-    const RampLoad* getLoadRamp() const { return loadRamp_.get(); }
 
-    /// The state at t = 0: grasp pose, object at its initial pose and held, IK targets set.
+    /// The state at t = 0: grasp pose, object at its initial pose and held, IK targets set (an
+    /// approximation's attachment is released afterwards: GraspExperiment::makeInitialState).
     /// Checks it (setup_check.h) and keeps what the check measured (getSetupCheck()).
     /// @throws graspsim::InputError when a segment starts inside the object or a goal is out of reach.
     SimTK::State makeInitialState();
@@ -150,10 +128,7 @@ private:
     SimTK::MobilizedBody& updPalm();
     void addContacts();
     void addController(const SimulationOptions& options);
-    void addBushing();
-    void addWeld();
     void addImplicitImpedance();
-    void addMultiAttachment();
 
     const scenario::Scenario& scenario_;
     system::MultibodyModel model_;
@@ -168,14 +143,8 @@ private:
     std::unique_ptr<control::FingertipIk> ik_;
     control::GraspController* controller_ = nullptr;  // owned by the system (full) or ownedController_ (approx)
     std::unique_ptr<control::GraspController> ownedController_;  // approx: run by the grasp switch, not the system
-    grasp::LimitedBushing bushing_;
-    std::unique_ptr<grasp::MultiAttachment> multi_;
-    std::unique_ptr<grasp::LimitedWeld> weld_;  // its handlers refer to it: destroyed before the System
-    const grasp::GraspAttachment* attachment_ = nullptr;  // one of bushing_, *weld_, *multi_
     std::vector<SimTK::MobilizedBodyIndex> fingerMobilizers_;
     control::IkTiming ikTiming_;
-    std::unique_ptr<PerturbationForce> perturbation_;
-    std::unique_ptr<RampLoad> loadRamp_;
     FingertipGoals goals_;
     SetupCheck setupCheck_;
 };

@@ -106,12 +106,11 @@ struct SimulationResult {
 /// Called after each output sample with the simulated time reached (s).
 using ProgressCallback = std::function<void(double time, double duration)>;
 
-class GraspScene;
-/// Called after each output sample with the scene, the grasp switch (approx mode; nullptr in full
-/// mode) and the state there (realized to Velocity at least), e.g. to measure the cost of the
-/// dynamics in that state. Must not change the scene.
-using SampleObserver =
-    std::function<void(const GraspScene& scene, const GraspSwitch* grasp, const SimTK::State& state)>;
+class GraspExperiment;
+/// Called after each output sample with the run's system (its scene and, in approx mode, its
+/// approximation) and the state there (realized to Velocity at least), e.g. to measure the cost
+/// of the dynamics in that state. Must not change the experiment.
+using SampleObserver = std::function<void(const GraspExperiment& experiment, const SimTK::State& state)>;
 
 /// Runs the scenario with the chosen implicit integrator (SimulationOptions::integrator: Simbody's
 /// CPodes by default, or the SUNDIALS CVODE reference) at the scenario's accuracy,

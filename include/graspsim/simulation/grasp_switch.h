@@ -25,7 +25,7 @@
 ///         with its anchor reset there (no force jump) and its stiffness raised from the limits
 ///         so that its elastic deflection at them moves no fingertip deeper than
 ///         ApproxOptions::maxEngagedPenetration (K_t = 2 sqrt(3) L_t / bound, K_r = 2 sqrt(3) r L_r
-///         / bound, r the farthest contact from the centroid, never below the scene's default;
+///         / bound, r the farthest contact from the centroid, never below the default stiffness of kBushingFrequency;
 ///         critically damped), or the weld (every axis stuck, those already over their limit
 ///         sliding). Its frames F (on the palm) and M (on the object)
 ///         are placed, coincident, at the CENTROID OF THE CONTACT POINTS at this instant, with

@@ -14,7 +14,7 @@
 ///  (c) NO merge: the finger joints stay free under their PD torques, so each finger flexes on its
 ///      own; the IK is paused all the same (it is most of full contact's cost, and its goals do not
 ///      follow the object);
-///  (d) every part of the scene's grasp::MultiAttachment is attached: finger i's distal body to the
+///  (d) every part of the approximation's grasp::MultiAttachment is attached: finger i's distal body to the
 ///      object at its goal site, limits mu F_perp_i (tangent) and mu r_i F_perp_i (rotation), the
 ///      normal preloaded to f_i (mu: the scenario's dynamic friction, as merged).
 /// Every ik_interval while engaged, each attached finger i is DETACHED on its own (its part off, its

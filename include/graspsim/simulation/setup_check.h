@@ -73,10 +73,10 @@ SetupCheck calcSetupCheck(const GraspScene& scene, const SimTK::State& state);
 /// @throws graspsim::InputError (exit code 2 in the CLI).
 void requireSetup(const SetupCheck& check, const std::string& where);
 
-/// Builds the scenario's scene with `options`, makes its initial state and checks it: what a
-/// command calls before it writes anything. Returns what was measured.
-/// @throws graspsim::InputError as requireSetup, or for options the scene or the approximation
-///         (resolveApproxOptions) rejects.
+/// Builds the scenario's run with `options` (GraspExperiment: scene, approximation, loads), makes
+/// its initial state and checks it: what a command calls before it writes anything. Returns what
+/// was measured.
+/// @throws graspsim::InputError as requireSetup, or for options the run rejects.
 SetupCheck checkScenarioSetup(const scenario::Scenario& scenario, const SimulationOptions& options);
 
 }  // namespace graspsim::simulation
