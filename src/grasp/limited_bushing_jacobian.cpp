@@ -65,4 +65,10 @@ void LimitedBushingJacobian::appendActiveSet(const SimTK::State& state, std::vec
     }
 }
 
+// Defined beside the Jacobian it makes, so that limited_bushing.cpp needs nothing of the stepper.
+std::unique_ptr<integration::ForceJacobianContributor> LimitedBushing::makeForceJacobian(
+    const SimTK::SimbodyMatterSubsystem& matter, const SimTK::MobilizedBody& bodyH, const SimTK::MobilizedBody& bodyO) const {
+    return std::make_unique<LimitedBushingJacobian>(matter, *this, bodyH, bodyO);
+}
+
 }  // namespace graspsim::grasp

@@ -40,17 +40,6 @@ std::vector<std::string> findFingerJoints(const model::ModelDescription& d, cons
     return joints;
 }
 
-// The palm: the one massive body the model builder gave the palm role.
-std::string findPalmBody(const model::ModelDescription& d) {
-    std::string palm;
-    for (const model::Body& b : d.bodies) {
-        if (b.role != model::BodyRole::Palm || b.isVirtual()) continue;
-        if (!palm.empty()) throw InputError("model '" + d.name + "': two palms ('" + palm + "', '" + b.name + "'); a grasp scene needs one hand");
-        palm = b.name;
-    }
-    if (palm.empty()) throw InputError("model '" + d.name + "': no body has the palm role; a grasp scene needs a hand");
-    return palm;
-}
 
 }  // namespace
 
@@ -58,7 +47,7 @@ GraspScene::GraspScene(const scenario::Scenario& scenario, const SimulationOptio
     : scenario_(scenario),
       model_(model::buildBodyModel(scenario.bodyOptions), makeSystemOptions(scenario)),
       contactModel_(options.contact),
-      palmBody_(findPalmBody(model_.getDescription())) {
+      palmBody_(model_.getDescription().findPalm().name) {
     if (options.contact == ContactModel::Rigid && options.mode == SimulationMode::Approx) {
         throw InputError("--mode approx: not available with --contact rigid (the grasp switch is an event handler, "
                          "and the rigid stepper runs none); use --mode full or --contact compliant");

@@ -3,7 +3,6 @@
 
 #include "graspsim/error.h"
 #include "graspsim/contact/compliant_contact_jacobian.h"
-#include "graspsim/grasp/limited_bushing_jacobian.h"
 #include "graspsim/integration/cvode_integrator.h"
 #include "graspsim/integration/joint_impedance_jacobian.h"
 #include "graspsim/integration/linearly_implicit_stepper.h"
@@ -212,9 +211,9 @@ SceneStepper makeLinearlyImplicitStepper(const GraspExperiment& experiment, doub
     made.jacobians.push_back(std::make_unique<integration::JointImpedanceJacobian>(
         matter, scene.getModel().getForces(), scene.findJointImpedances()));
     made.jacobians.push_back(std::make_unique<contact::CompliantContactJacobian>(matter, scene.getCompliantContacts()));
-    const auto* bushing = approximation ? dynamic_cast<const grasp::LimitedBushing*>(&approximation->getAttachment()) : nullptr;
-    if (bushing) {
-        made.jacobians.push_back(std::make_unique<grasp::LimitedBushingJacobian>(matter, *bushing, scene.getPalm(), scene.getObject()));
+    if (approximation) {
+        auto attachment = approximation->getAttachment().makeForceJacobian(matter, scene.getPalm(), scene.getObject());
+        if (attachment) made.jacobians.push_back(std::move(attachment));
     }
     std::vector<const integration::ForceJacobianContributor*> contributors;
     for (const auto& j : made.jacobians) contributors.push_back(j.get());

@@ -68,7 +68,11 @@ struct BushedObject {
 
 TEST(LimitedBushingJacobian, MatchesFiniteDifferencesOfTheGeneralizedForce) {
     BushedObject b;
-    const LimitedBushingJacobian jacobian(b.matter, b.bushing, b.palm, b.object);
+    // Made as the simulation makes it: through the attachment interface.
+    const GraspAttachment& attachment = b.bushing;
+    const std::unique_ptr<integration::ForceJacobianContributor> made = attachment.makeForceJacobian(b.matter, b.palm, b.object);
+    ASSERT_NE(made, nullptr);
+    const integration::ForceJacobianContributor& jacobian = *made;
     const int nu = b.state.getNU();
     SimTK::Matrix D(nu, nu, 0.0), K(nu, nu, 0.0);
     jacobian.addForceJacobians(b.state, D, K);

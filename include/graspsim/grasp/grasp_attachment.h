@@ -11,9 +11,11 @@
 /// limit (carrying exactly the limit, Coulomb friction per axis), and lets go without changing a
 /// velocity (tests/grasp/grasp_attachment_test.cpp checks the three against closed forms).
 
+#include "graspsim/integration/force_jacobian.h"
 #include "graspsim/simbody.h"
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -92,6 +94,16 @@ public:
     virtual std::optional<SingleConstraintState> findSingleConstraintState(const SimTK::State& state) const {
         (void)state;
         return std::nullopt;
+    }
+    /// The attachment's force Jacobians for the linearly implicit stepper
+    /// (integration/force_jacobian.h), for an attachment built between the palm `bodyH` and the
+    /// object `bodyO`; nullptr (the default) when it has none to give: a constraint (its forces
+    /// are not functions of the motion) or an attachment whose Jacobian is not built, which the
+    /// stepper then treats explicitly. The result refers to this attachment and must not outlive it.
+    virtual std::unique_ptr<integration::ForceJacobianContributor> makeForceJacobian(
+        const SimTK::SimbodyMatterSubsystem& matter, const SimTK::MobilizedBody& bodyH, const SimTK::MobilizedBody& bodyO) const {
+        (void)matter, (void)bodyH, (void)bodyO;
+        return nullptr;
     }
 
 protected:

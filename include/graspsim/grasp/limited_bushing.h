@@ -164,6 +164,10 @@ public:
     void release(SimTK::State& state) const override { setEnabled(state, false); }
     /// GraspAttachment: Stage::Velocity (a force of the state).
     SimTK::Stage getReactionStage() const override { return SimTK::Stage::Velocity; }
+    /// GraspAttachment: a LimitedBushingJacobian (limited_bushing_jacobian.h, where it is defined).
+    std::unique_ptr<integration::ForceJacobianContributor> makeForceJacobian(
+        const SimTK::SimbodyMatterSubsystem& matter, const SimTK::MobilizedBody& bodyH,
+        const SimTK::MobilizedBody& bodyO) const override;
     /// GraspAttachment: findWrench() with its moment moved to O's origin. Needs Stage::Velocity.
     SimTK::SpatialVec findReactionOnObject(const SimTK::State& state) const override;
     /// GraspAttachment: getFrameOnO(), findEffectiveLimits(), findGeneralizedForce() and
