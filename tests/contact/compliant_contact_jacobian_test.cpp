@@ -79,6 +79,17 @@ TEST(CompliantContactJacobian, MatchesFiniteDifferencesWhileSliding) {
     expectMatchesFiniteDifferences(makeParameters(0.8, 0.8), 5e-3 * t + 1e-3 * n.asVec3());
 }
 
+// The element's generalized forces (one per mobility) at `s`.
+SimTK::Vector calcElementForce(const test::Scene& scene, const CompliantContactForce& force, const SimTK::State& s) {
+    scene.system.realize(s, SimTK::Stage::Velocity);
+    SimTK::Vector_<SimTK::SpatialVec> bodyForces(scene.matter.getNumBodies(), SimTK::SpatialVec(Vec3(0), Vec3(0)));
+    SimTK::Vector_<Vec3> particles;
+    SimTK::Vector mobility(s.getNU(), 0.0), f;
+    force.calcForceContribution(s, bodyForces, particles, mobility);
+    scene.matter.multiplyBySystemJacobianTranspose(s, bodyForces, f);
+    return f + mobility;
+}
+
 // A 200 g ball of radius 45 mm pressed 0.2 mm into a floor, sinking, spinning and sliding at
 // `slip` (m/s) along x (the spin about the normal adds none): the element's generalized force f(u)
 // and the scene for its Jacobians. mu_s = mu_d, so no falling Stribeck branch is clamped.
@@ -99,16 +110,7 @@ struct PressedBall {
         ball.setUToFitLinearVelocity(state, Vec3(slip - 2 * 0.045, -3e-3, 0));  // rolling about z moves the point by 2 * 0.045
     }
 
-    // The element's generalized forces (one per mobility) at `s`.
-    SimTK::Vector calcGeneralizedForce(const SimTK::State& s) const {
-        scene.system.realize(s, SimTK::Stage::Velocity);
-        SimTK::Vector_<SimTK::SpatialVec> bodyForces(scene.matter.getNumBodies(), SimTK::SpatialVec(Vec3(0), Vec3(0)));
-        SimTK::Vector_<Vec3> particles;
-        SimTK::Vector mobility(s.getNU(), 0.0), f;
-        force.calcForceContribution(s, bodyForces, particles, mobility);
-        scene.matter.multiplyBySystemJacobianTranspose(s, bodyForces, f);
-        return f + mobility;
-    }
+    SimTK::Vector calcGeneralizedForce(const SimTK::State& s) const { return calcElementForce(scene, force, s); }
 };
 
 // D = J^T (dF/dv) J against central differences of the element's generalized force in each speed.
@@ -158,15 +160,7 @@ struct PressedFinger {
         distal.setOneU(state, 0, -2e-3);
     }
 
-    SimTK::Vector calcGeneralizedForce(const SimTK::State& s) const {
-        scene.system.realize(s, SimTK::Stage::Velocity);
-        SimTK::Vector_<SimTK::SpatialVec> bodyForces(scene.matter.getNumBodies(), SimTK::SpatialVec(Vec3(0), Vec3(0)));
-        SimTK::Vector_<Vec3> particles;
-        SimTK::Vector mobility(s.getNU(), 0.0), f;
-        force.calcForceContribution(s, bodyForces, particles, mobility);
-        scene.matter.multiplyBySystemJacobianTranspose(s, bodyForces, f);
-        return f + mobility;
-    }
+    SimTK::Vector calcGeneralizedForce(const SimTK::State& s) const { return calcElementForce(scene, force, s); }
 };
 
 // The damping assembled from the contact points the force evaluation cached, on a free ball at a
