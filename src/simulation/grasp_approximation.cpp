@@ -72,12 +72,13 @@ GraspApproximation::GraspApproximation(GraspScene& scene, const ApproxOptions& o
     const SimTK::MassProperties mp = object.getBody().getDefaultRigidBodyMassProperties();
     const SimTK::Vec3 I = mp.calcCentralInertia().getMoments();
     const SimTK::Vec6 stiffness = calcBushingStiffness(mp, kBushingFrequency);
+    const SimTK::Vec6 damping = grasp::calcCriticalDamping(stiffness, I, mp.getMass());
     if (options.attach == ApproxAttach::Multi) {
         // N parts in parallel give the object the same frequency in translation as the bushing.
         const std::vector<grasp::AttachmentSite> sites = findAttachmentSites(scene);
         const double parts = static_cast<double>(sites.size());
         multi_ = std::make_unique<grasp::MultiAttachment>(model.updForces(), object, sites, stiffness / parts,
-                                                          grasp::calcCriticalDamping(stiffness, I, mp.getMass()) / parts);
+                                                          damping / parts);
         attachment_ = multi_.get();
     } else if (options.constraint == ApproxConstraint::Weld) {
         if (object.getParentMobilizedBody().getMobilizedBodyIndex() != scene.getPalm().getMobilizedBodyIndex()) {
@@ -88,7 +89,7 @@ GraspApproximation::GraspApproximation(GraspScene& scene, const ApproxOptions& o
         attachment_ = weld_.get();
     } else {
         bushing_ = grasp::LimitedBushing(model.updForces(), scene.getPalm(), SimTK::Transform(), object, SimTK::Transform(),
-                                         stiffness, grasp::calcCriticalDamping(stiffness, I, mp.getMass()));
+                                         stiffness, damping);
         attachment_ = &bushing_;
     }
     context_ = std::make_unique<ApproximationContext>(makeContext(scene, *attachment_, multi_.get()));

@@ -40,7 +40,6 @@ std::vector<std::string> findFingerJoints(const model::ModelDescription& d, cons
     return joints;
 }
 
-
 }  // namespace
 
 GraspScene::GraspScene(const scenario::Scenario& scenario, const SimulationOptions& options)
