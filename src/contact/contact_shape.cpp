@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "graspsim/error.h"
+#include "graspsim/system/simtk_conversion.h"
 
 namespace graspsim::contact {
 
@@ -174,23 +175,7 @@ double ContactShape::calcBoundingRadius() const {
 }
 
 SimTK::Transform findGeometryPose(const model::Geometry& geometry) {
-    const std::array<double, 9>& r = geometry.X_BG.R;  // row-major
-    double orthonormalityError = 0;                    // max |R R^T - I|
-    for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) {
-            const double dot =
-                r[3 * i] * r[3 * j] + r[3 * i + 1] * r[3 * j + 1] + r[3 * i + 2] * r[3 * j + 2];
-            orthonormalityError = std::max(orthonormalityError, std::abs(dot - (i == j)));
-        }
-    }
-    const SimTK::Mat33 R(r[0], r[1], r[2], r[3], r[4], r[5], r[6], r[7], r[8]);
-    if (!(orthonormalityError <= 1e-9) || SimTK::det(R) <= 0) {
-        throw InputError("geometry '" + geometry.name +
-                         "': X_BG rotation is not a proper rotation matrix (orthonormal to 1e-9, "
-                         "determinant +1)");
-    }
-    const model::Vec3& p = geometry.X_BG.p;
-    return SimTK::Transform(SimTK::Rotation(R, true), SimTK::Vec3(p[0], p[1], p[2]));
+    return system::toSimTKTransform(geometry.X_BG, "geometry '" + geometry.name + "': X_BG");
 }
 
 }  // namespace graspsim::contact

@@ -1,23 +1,18 @@
 #include "graspsim/planning/arm_kinematics.h"
 
 #include "graspsim/error.h"
+#include "graspsim/system/simtk_conversion.h"
 
 namespace graspsim::planning {
 
-SimTK::Transform toSimTK(const model::Transform& X) {
-    SimTK::Mat33 R;
-    for (int i = 0; i < 3; ++i)
-        for (int k = 0; k < 3; ++k) R(i, k) = X.R[3 * i + k];
-    return SimTK::Transform(SimTK::Rotation(R, true), SimTK::Vec3(X.p[0], X.p[1], X.p[2]));
-}
-
-ArmKinematics::ArmKinematics(const model::ModelDescription& model) : m_model(model) {
+ArmKinematics::ArmKinematics(const model::ModelDescription& model)
+    : m_model(model), m_X_GR(system::toSimTKTransform(model.X_GR, "model '" + model.name + "' X_GR")) {
     const int n = static_cast<int>(m_model.joints.size());
     for (const model::Joint& joint : m_model.joints) {
         m_parentBody.push_back(findBodyIndex(joint.parent));
         m_childBody.push_back(findBodyIndex(joint.child));
-        m_X_PJ.push_back(toSimTK(joint.X_PJ));
-        m_axis.push_back(SimTK::UnitVec3(SimTK::Vec3(joint.axis[0], joint.axis[1], joint.axis[2])));
+        m_X_PJ.push_back(system::toSimTKTransform(joint.X_PJ, "joint '" + joint.name + "' X_PJ"));
+        m_axis.push_back(SimTK::UnitVec3(system::toSimTKVec3(joint.axis)));
     }
     // A joint comes after the joint that places its parent body (a tree: n passes suffice).
     std::vector<bool> placed(m_model.bodies.size(), false);
@@ -62,7 +57,7 @@ void ArmKinematics::findJointAxis(int joint, const std::vector<SimTK::Transform>
 }
 
 void ArmKinematics::calcBodyPoses(const std::vector<double>& q, std::vector<SimTK::Transform>& X_GB) const {
-    X_GB.assign(m_model.bodies.size(), toSimTK(m_model.X_GR));
+    X_GB.assign(m_model.bodies.size(), m_X_GR);
     for (int j : m_order) {
         const model::Joint& joint = m_model.joints[j];
         const double angle = joint.getDofCount() == 0 ? 0.0 : q[j];

@@ -7,6 +7,7 @@
 #include "graspsim/planning/goal_reach.h"
 #include "graspsim/planning/grasp_template.h"
 #include "graspsim/planning/lateral_pinch.h"
+#include "graspsim/system/simtk_conversion.h"
 
 #include <nlopt.hpp>
 
@@ -136,7 +137,7 @@ GraspRequest makeGraspRequest(const scenario::Scenario& scenario, GraspType type
     request.shape = contact::ContactShape::fromGeometry(geometry);
     request.X_OS = contact::findGeometryPose(geometry);
     request.type = type;
-    request.gravity = SimTK::Vec3(scenario.world.gravity[0], scenario.world.gravity[1], scenario.world.gravity[2]);
+    request.gravity = system::toSimTKVec3(scenario.world.gravity);
     request.pressDepth = findPlannedPressDepth(scenario);
     request.mass = scenario.object.mass;
     return request;

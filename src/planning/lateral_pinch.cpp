@@ -3,6 +3,7 @@
 #include "graspsim/error.h"
 #include "graspsim/model/body_model.h"
 #include "graspsim/simbody.h"
+#include "graspsim/system/simtk_conversion.h"
 
 #include <algorithm>
 #include <array>
@@ -13,8 +14,6 @@ namespace graspsim::planning {
 namespace {
 
 double roundToTenthMillimetre(double metres) { return std::round(metres / 1e-4) * 1e-4; }
-
-SimTK::Vec3 toVec3(const model::Vec3& v) { return SimTK::Vec3(v[0], v[1], v[2]); }
 
 }  // namespace
 
@@ -30,7 +29,7 @@ model::SegmentPoint findIndexRadialPoint(const model::BuildOptions& options) {
             const SimTK::Vec3 axis_B(R[2], R[5], R[8]);
             // The hand's radial axis is the body's z at zero flexion; its part across the capsule.
             const SimTK::Vec3 radial_B = SimTK::Vec3(0, 0, 1) - SimTK::dot(SimTK::Vec3(0, 0, 1), axis_B) * axis_B;
-            const SimTK::Vec3 p_B = toVec3(g.X_BG.p) + g.radius * radial_B.normalize();
+            const SimTK::Vec3 p_B = system::toSimTKVec3(g.X_BG.p) + g.radius * radial_B.normalize();
             model::SegmentPoint point;
             point.name = kIndexRadialEffector;
             point.body = phalanx->name;

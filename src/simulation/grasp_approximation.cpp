@@ -2,16 +2,13 @@
 
 #include "graspsim/error.h"
 #include "graspsim/grasp/limited_bushing_law.h"
+#include "graspsim/system/simtk_conversion.h"
 
 namespace graspsim::simulation {
 
 namespace {
 
-SimTK::Vec3 toVec3(const model::Vec3& v) { return SimTK::Vec3(v[0], v[1], v[2]); }
-
-SimTK::Rotation toRotation(const model::Transform& X) {
-    return SimTK::Rotation(SimTK::Mat33(X.R[0], X.R[1], X.R[2], X.R[3], X.R[4], X.R[5], X.R[6], X.R[7], X.R[8]), true);
-}
+using system::toSimTKVec3;
 
 // Stiffness per bushing axis (rotation first) giving the body natural frequency w (rad/s) about
 // and along its central principal axes: I_k w^2 and m w^2.
@@ -30,13 +27,13 @@ SimTK::Vec6 calcBushingStiffness(const SimTK::MassProperties& mp, double w) {
 std::vector<grasp::AttachmentSite> findAttachmentSites(const GraspScene& scene) {
     const scenario::Scenario& s = scene.getScenario();
     const model::ModelDescription& d = scene.getModel().getDescription();
-    const SimTK::Rotation R_OG = ~toRotation(s.object.findPose());
-    const SimTK::Vec3 g_O = R_OG * toVec3(s.world.gravity);
+    const SimTK::Rotation R_OG = ~system::toSimTKTransform(s.object.findPose(), "object pose").R();
+    const SimTK::Vec3 g_O = R_OG * toSimTKVec3(s.world.gravity);
     std::vector<grasp::AttachmentSite> sites;
     for (const auto& [endEffector, p_OT] : s.goals) {
         const model::Vec3 n = s.object.findOutwardNormal(p_OT);
-        sites.push_back({scene.getModel().getMobilizedBody(d.findEndEffector(endEffector)->body), toVec3(p_OT),
-                         SimTK::UnitVec3(toVec3(n)), g_O});
+        sites.push_back({scene.getModel().getMobilizedBody(d.findEndEffector(endEffector)->body), toSimTKVec3(p_OT),
+                         SimTK::UnitVec3(toSimTKVec3(n)), g_O});
     }
     return sites;
 }
@@ -51,7 +48,7 @@ ApproximationContext makeContext(const GraspScene& scene, const grasp::GraspAtta
                                 scene.getCompliantContacts(),
                                 scene.getContactParameters(),
                                 s.object,
-                                toVec3(s.world.gravity),
+                                toSimTKVec3(s.world.gravity),
                                 scene.getFingertipGoals(),
                                 scene.getObjectHold(),
                                 s.simulation.settleTime,

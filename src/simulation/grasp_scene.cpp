@@ -3,6 +3,7 @@
 #include "graspsim/contact/hand_object_pairs.h"
 #include "graspsim/error.h"
 #include "graspsim/model/body_model.h"
+#include "graspsim/system/simtk_conversion.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,17 +14,16 @@ namespace {
 
 system::SystemOptions makeSystemOptions(const scenario::Scenario& s) {
     system::SystemOptions options;
-    options.gravity = SimTK::Vec3(s.world.gravity[0], s.world.gravity[1], s.world.gravity[2]);
+    options.gravity = system::toSimTKVec3(s.world.gravity);
     return options;
 }
 
 // The body that carries the fingertip goals (see grasp_controller.h).
 
-SimTK::Vec3 toVec3(const model::Vec3& v) { return SimTK::Vec3(v[0], v[1], v[2]); }
+using system::toSimTKVec3;
 
-SimTK::Transform toTransform(const model::Transform& X) {
-    const SimTK::Mat33 R(X.R[0], X.R[1], X.R[2], X.R[3], X.R[4], X.R[5], X.R[6], X.R[7], X.R[8]);
-    return SimTK::Transform(SimTK::Rotation(R, true), toVec3(X.p));
+SimTK::Transform findObjectPose(const scenario::Scenario& s) {
+    return system::toSimTKTransform(s.object.findPose(), "object pose");
 }
 
 // The movable joints from the palm out to an end-effector's body (the digit's own joints).
@@ -65,14 +65,14 @@ GraspScene::GraspScene(const scenario::Scenario& scenario, const SimulationOptio
 void GraspScene::addObject(bool onPalm) {
     const model::ModelDescription objectModel = scenario::buildObjectModel(scenario_.object);
     const model::Body& b = objectModel.bodies.at(0);
-    const SimTK::Vec3 p_OCm = toVec3(b.p_BCm);
+    const SimTK::Vec3 p_OCm = toSimTKVec3(b.p_BCm);
     const SimTK::Inertia I_Cm(b.inertia.xx, b.inertia.yy, b.inertia.zz, b.inertia.xy, b.inertia.xz, b.inertia.yz);
     const SimTK::Body::Rigid body(SimTK::MassProperties(b.mass, p_OCm, I_Cm.shiftFromMassCenter(p_OCm, b.mass)));
     SimTK::MobilizedBody& parent = onPalm ? updPalm() : model_.updMatter().updGround();
     object_ = SimTK::MobilizedBody::Free(parent, SimTK::Transform(), body, SimTK::Transform());
     SimTK::Constraint::Weld groundWeld;  // empty unless the object hangs from the palm
     if (onPalm) {
-        groundWeld = SimTK::Constraint::Weld(model_.updMatter().updGround(), toTransform(scenario_.object.findPose()),
+        groundWeld = SimTK::Constraint::Weld(model_.updMatter().updGround(), findObjectPose(scenario_),
                                              object_, SimTK::Transform());
     }
     hold_ = ObjectHold(object_, groundWeld);
@@ -141,7 +141,7 @@ void GraspScene::addController(const SimulationOptions& options) {
     goals_ = FingertipGoals(model_, object_);
     for (const auto& [endEffector, p_OT] : scenario_.goals) {
         for (const std::string& j : findFingerJoints(d, endEffector)) ikJoints.push_back(j);
-        goals_.add(endEffector, toVec3(p_OT));
+        goals_.add(endEffector, toSimTKVec3(p_OT));
     }
     model_.realizeTopology();  // Simbody's Assembler (inside the IK) needs a realized topology
     ik_ = std::make_unique<control::FingertipIk>(model_, goals_.getEndEffectors(), ikJoints);
@@ -176,7 +176,7 @@ SimTK::State GraspScene::makeInitialState() {
     for (std::size_t k = 0; k < goals_.getEndEffectors().size(); ++k) {
         const SimTK::Vec3& onSurface = goals_.getSurfacePoints()[k];
         const model::Vec3 n_O = scenario_.object.findOutwardNormal({onSurface[0], onSurface[1], onSurface[2]});
-        const SimTK::Vec3 p_OT = onSurface - scenario_.controller.pressDepth * toVec3(n_O);
+        const SimTK::Vec3 p_OT = onSurface - scenario_.controller.pressDepth * toSimTKVec3(n_O);
         goals.push_back({goals_.getEndEffectors()[k], X_HG * (X_GO * p_OT)});
     }
     controller_->setGoals(goals);
@@ -189,7 +189,7 @@ SimTK::State GraspScene::makeInitialState() {
 // At the scenario's pose in Ground, held there: by a lock on Ground, or by the Ground weld when the
 // object hangs from the palm (its coordinates then depend on where the grasp pose put the palm).
 void GraspScene::placeObject(SimTK::State& state) const {
-    const SimTK::Transform X_GO = toTransform(scenario_.object.findPose());
+    const SimTK::Transform X_GO = findObjectPose(scenario_);
     if (!hold_.isByGroundWeld()) {
         object_.setQToFitTransform(state, X_GO);
         object_.lock(state, SimTK::Motion::Position);

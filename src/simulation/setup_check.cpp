@@ -1,5 +1,6 @@
 #include "graspsim/simulation/setup_check.h"
 
+#include "graspsim/contact/contact_shape.h"
 #include "graspsim/contact/shape_contact.h"
 #include "graspsim/error.h"
 #include "graspsim/simulation/grasp_experiment.h"
@@ -12,17 +13,12 @@ namespace graspsim::simulation {
 
 namespace {
 
-SimTK::Transform toTransform(const model::Transform& X) {
-    const SimTK::Mat33 R(X.R[0], X.R[1], X.R[2], X.R[3], X.R[4], X.R[5], X.R[6], X.R[7], X.R[8]);
-    return SimTK::Transform(SimTK::Rotation(R, true), SimTK::Vec3(X.p[0], X.p[1], X.p[2]));
-}
-
 // The deepest contact between one segment geometry at X_GS and the object's geometries; 0 if none.
 double findDeepestContact(const model::Geometry& segment, const SimTK::Transform& X_GS,
                           const model::Body& object, const SimTK::Transform& X_GO) {
     double deepest = 0;
     for (const model::Geometry& o : object.geometry) {
-        for (const contact::ContactPoint& c : contact::findContacts(segment, X_GS, o, X_GO * toTransform(o.X_BG))) {
+        for (const contact::ContactPoint& c : contact::findContacts(segment, X_GS, o, X_GO * contact::findGeometryPose(o))) {
             deepest = std::max(deepest, c.depth);
         }
     }
@@ -39,7 +35,7 @@ std::vector<SegmentOverlap> findOverlaps(const GraspScene& scene, const SimTK::S
         if (body.isVirtual()) continue;
         const SimTK::Transform& X_GB = scene.getModel().getMobilizedBody(body.name).getBodyTransform(state);
         for (const model::Geometry& g : body.geometry) {
-            const double depth = findDeepestContact(g, X_GB * toTransform(g.X_BG), object, X_GO);
+            const double depth = findDeepestContact(g, X_GB * contact::findGeometryPose(g), object, X_GO);
             if (depth > 0) overlaps.push_back({body.name, g.name, depth});
         }
     }

@@ -7,12 +7,9 @@
 #include <string>
 
 #include "graspsim/model/model_description.h"
+#include "graspsim/system/simtk_conversion.h"
 
 namespace graspsim::system {
-
-/// X_AB as a SimTK::Transform (same rotation and translation, m).
-/// @throws graspsim::InputError, starting with `what`, if X_AB.R is not a proper rotation.
-SimTK::Transform toSimTKTransform(const model::Transform& X_AB, const std::string& what);
 
 /// Mass properties about the body origin, as SimTK::MassProperties wants them: mass (kg),
 /// p_BCm (m) and the central inertia shifted to the body origin (kg m^2), all in B.

@@ -44,35 +44,6 @@ TEST(BodyMobilizer, AxisAlignedRotationPutsTheMobilizerAxisOnTheJointAxis) {
     EXPECT_LT((R_JF_slider.x() - expected).norm(), 1e-15);
 }
 
-TEST(BodyMobilizer, TransformKeepsRotationAndTranslation) {
-    model::Transform X_AB;
-    X_AB.R = test::rotationAboutAxis({0, 0.6, 0.8}, 1.1);
-    X_AB.p = {1, 2, 3};
-
-    const SimTK::Transform X = toSimTKTransform(X_AB, "test");
-
-    for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) EXPECT_EQ(X.R().asMat33()(i, j), X_AB.R[3 * i + j]);
-    }
-    EXPECT_EQ(X.p(), SimTK::Vec3(1, 2, 3));
-}
-
-TEST(BodyMobilizer, TransformRejectsScaledAndReflectedMatrices) {
-    model::Transform scaled, reflected;
-    scaled.R = {1.01, 0, 0, 0, 1, 0, 0, 0, 1};
-    reflected.R = {-1, 0, 0, 0, 1, 0, 0, 0, 1};
-
-    for (const model::Transform& X : {scaled, reflected}) {
-        try {
-            toSimTKTransform(X, "joint 'bent' X_PJ");
-            ADD_FAILURE() << "accepted a matrix that is not a rotation";
-        } catch (const InputError& e) {
-            EXPECT_NE(std::string(e.what()).find("joint 'bent' X_PJ"), std::string::npos)
-                << e.what();
-        }
-    }
-}
-
 // Simbody itself, as the oracle: a bare system with the body on a free joint, realized.
 void realizeInSimbody(const model::Body& body) {
     SimTK::MultibodySystem system;

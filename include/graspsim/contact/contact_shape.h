@@ -92,7 +92,7 @@ struct ContactShape {
 
 /// The pose X_BS of a model geometry's frame in its body frame, as a SimTK::Transform (m).
 /// @throws graspsim::InputError naming the geometry if X_BG's rotation is not a proper
-///         rotation matrix (orthonormal to 1e-9, determinant +1).
+///         rotation (see system::toSimTKTransform).
 SimTK::Transform findGeometryPose(const model::Geometry& geometry);
 
 }  // namespace graspsim::contact

@@ -50,12 +50,10 @@ private:
     std::vector<int> m_order;          // joint indices, parents before children
     std::vector<int> m_parentBody;     // per joint
     std::vector<int> m_childBody;      // per joint
+    SimTK::Transform m_X_GR;          // root body in Ground
     std::vector<SimTK::Transform> m_X_PJ;
     std::vector<SimTK::UnitVec3> m_axis;
     std::vector<SegmentShape> m_shapes;
 };
-
-/// A model::Transform as a SimTK::Transform.
-SimTK::Transform toSimTK(const model::Transform& X);
 
 }  // namespace graspsim::planning
