@@ -1,8 +1,10 @@
 #include "graspsim/capacity/squeeze_capacity.h"
 
 #include "graspsim/contact/compliant_contact_force.h"
+#include "graspsim/contact/compliant_contact_jacobian.h"
 #include "graspsim/contact/rigid_contact.h"
 #include "graspsim/error.h"
+#include "graspsim/integration/linearly_implicit_stepper.h"
 #include "graspsim/system/silenced_stdout.h"
 
 #include <cmath>
@@ -15,6 +17,10 @@ constexpr double kRadius = 0.01;     // m, spheres
 constexpr double kHalfWidth = 0.02;  // m, box half-width along x
 constexpr double kEStar = 1e6;       // Pa, effective Young's modulus (compliant)
 constexpr double kRigidStep = 1e-3;  // s, the rigid stepper's fixed step
+constexpr double kReferenceAccuracy = 1e-7;
+// A scenario's defaults (scenario::SimulationSpec), so the case checks what a run uses.
+constexpr double kImplicitAccuracy = 1e-3;
+constexpr double kImplicitStepCap = 5e-3;  // s
 
 class SqueezeRun : public LoadedRun {
 public:
@@ -33,6 +39,10 @@ public:
     }
 
     void advanceTo(double t) override {
+        if (implicit_) {
+            implicit_->stepTo(t);
+            return;
+        }
         if (!case_.rigid) {
             timeStepper_->stepTo(t);
             return;
@@ -49,7 +59,10 @@ public:
     }
 
 private:
-    const SimTK::State& getState() const { return case_.rigid ? rigid_->getState() : timeStepper_->getState(); }
+    const SimTK::State& getState() const {
+        if (implicit_) return implicit_->getState();
+        return case_.rigid ? rigid_->getState() : timeStepper_->getState();
+    }
 
     // A Slider translates along its frames' x axis: x is turned onto the wanted Ground axis.
     SimTK::MobilizedBody::Slider addSlider(SimTK::CoordinateAxis axis, double mass, double radius) {
@@ -84,8 +97,18 @@ private:
     void startCompliant() {
         contacts_ = contact::CompliantContactForce(forces_, makePairs());
         const double depth = std::pow(3 * case_.press / (4 * kEStar * std::sqrt(kRadius)), 2.0 / 3.0);
+        if (case_.integrator == SqueezeIntegrator::LinearlyImplicit) {
+            jacobian_ = std::make_unique<contact::CompliantContactJacobian>(matter_, contacts_);
+            integration::LinearlyImplicitOptions options;
+            options.stepSize = kImplicitStepCap;
+            options.accuracy = kImplicitAccuracy;
+            implicit_ = std::make_unique<integration::LinearlyImplicitStepper>(
+                system_, std::vector<const integration::ForceJacobianContributor*>{jacobian_.get()}, options);
+            implicit_->initialize(makeState(depth));
+            return;
+        }
         integrator_ = std::make_unique<SimTK::RungeKuttaMersonIntegrator>(system_);
-        integrator_->setAccuracy(1e-7);
+        integrator_->setAccuracy(kReferenceAccuracy);
         timeStepper_ = std::make_unique<SimTK::TimeStepper>(system_, *integrator_);
         timeStepper_->initialize(makeState(depth));
     }
@@ -107,6 +130,8 @@ private:
     std::unique_ptr<SimTK::RungeKuttaMersonIntegrator> integrator_;
     std::unique_ptr<SimTK::TimeStepper> timeStepper_;
     std::unique_ptr<SimTK::SemiExplicitEulerTimeStepper> rigid_;
+    std::unique_ptr<contact::CompliantContactJacobian> jacobian_;
+    std::unique_ptr<integration::LinearlyImplicitStepper> implicit_;
     double reference_ = 0;
 };
 

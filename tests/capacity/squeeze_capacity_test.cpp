@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 
 namespace {
 
@@ -12,6 +13,7 @@ using graspsim::capacity::RampProtocol;
 using graspsim::capacity::runBisection;
 using graspsim::capacity::runRamp;
 using graspsim::capacity::SqueezeCase;
+using graspsim::capacity::SqueezeIntegrator;
 
 // The grid: three mu and three N, mu = 0.5 and N = 10 (validation's case) not among them.
 const double kMus[] = {0.3, 0.6, 0.9};
@@ -43,13 +45,14 @@ double findCoulombOnset(const SqueezeCase& c, double rate, double d, bool creep)
     return c.findLimit() + rate * 0.5 * (lo + hi);
 }
 
-void expectRampOnset(bool rigid) {
+void expectRampOnset(bool rigid, SqueezeIntegrator integrator = SqueezeIntegrator::Reference) {
     for (double mu : kMus) {
         for (double press : kPresses) {
             SqueezeCase c;
             c.mu = mu;
             c.press = press;
             c.rigid = rigid;
+            c.integrator = integrator;
             const RampProtocol p = makeRamp(c);
             const auto trace = runRamp(makeSqueezeRuns(c), p);
             ASSERT_TRUE(trace.figures.slipped) << mu << " " << press;
@@ -68,16 +71,55 @@ TEST(SqueezeCapacity, RampFindsTheCoulombOnsetRigid) { expectRampOnset(true); }
 
 TEST(SqueezeCapacity, RampFindsTheCoulombOnsetCompliant) { expectRampOnset(false); }
 
+TEST(SqueezeCapacity, RampFindsTheCoulombOnsetOnTheLinearlyImplicitStepper) {
+    expectRampOnset(false, SqueezeIntegrator::LinearlyImplicit);
+}
+
+// A constant load F above 2 mu N from rest: once the slip speed passes the transition velocity
+// (about 0.2 ms here) friction is mu N on each side, so the box slides with Coulomb's
+// a = (F - 2 mu N) / m, a parabola whose second difference over equal intervals is a dt^2. F is
+// 1.2 x 2 mu N and the window 0.15 s, so the box travels at most 0.14 m of its 0.5 m half-length
+// and stays between the spheres.
+TEST(SqueezeCapacity, LinearlyImplicitStepperSlidesWithTheCoulombAcceleration) {
+    for (double mu : kMus) {
+        for (double press : {kPresses[0], kPresses[2]}) {
+            SqueezeCase c;
+            c.mu = mu;
+            c.press = press;
+            c.integrator = SqueezeIntegrator::LinearlyImplicit;
+            graspsim::simulation::LoadRampSpec load;
+            load.direction = SimTK::UnitVec3(0, 1, 0);
+            load.start = 0.01;
+            load.initial = 1.2 * c.findLimit();
+            const auto run = makeSqueezeRuns(c)(load);
+            run->advanceTo(load.start);
+            run->captureReference();
+            const double dt = 0.05;
+            double x[3];
+            for (int k = 0; k < 3; ++k) {
+                run->advanceTo(load.start + (k + 1) * dt);
+                x[k] = run->sampleNow().slip;
+            }
+            const double coulomb = (load.initial - c.findLimit()) / c.boxMass;
+            EXPECT_NEAR((x[2] - 2 * x[1] + x[0]) / (dt * dt) / coulomb, 1, 0.02) << "mu " << mu << ", N " << press;
+        }
+    }
+}
+
 // Constant loads held h = 0.5 s: above 2 mu N by e the box slides e h^2 / (2 m), which passes 2 mm
 // for e > 0.016 N (0.2 % of the smallest 2 mu N here); below it, it stays (rigid) or creeps less
 // than v_t h = 0.5 mm (compliant). So the bisection brackets 2 mu N itself, to its 1 % tolerance.
 TEST(SqueezeCapacity, BisectionFindsTwoMuN) {
-    for (bool rigid : {true, false}) {
+    const std::pair<bool, SqueezeIntegrator> kinds[] = {{true, SqueezeIntegrator::Reference},
+                                                        {false, SqueezeIntegrator::Reference},
+                                                        {false, SqueezeIntegrator::LinearlyImplicit}};
+    for (const auto& [rigid, integrator] : kinds) {
         for (double mu : {0.3, 0.9}) {
             SqueezeCase c;
             c.mu = mu;
             c.press = 12;
             c.rigid = rigid;
+            c.integrator = integrator;
             BisectionProtocol p;
             p.direction = SimTK::UnitVec3(0, 1, 0);
             p.start = 0.01;
@@ -85,7 +127,8 @@ TEST(SqueezeCapacity, BisectionFindsTwoMuN) {
             p.high = 1.5 * c.findLimit();
             p.sampleInterval = 0.005;
             const auto b = runBisection(makeSqueezeRuns(c), p);
-            EXPECT_NEAR(b.findEstimate() / c.findLimit(), 1, 0.02) << (rigid ? "rigid" : "compliant") << " mu " << mu;
+            EXPECT_NEAR(b.findEstimate() / c.findLimit(), 1, 0.02)
+                << (rigid ? "rigid" : "compliant") << " integrator " << static_cast<int>(integrator) << " mu " << mu;
             const double slideMargin = 2 * c.boxMass * p.criteria.slip / (p.hold * p.hold);  // e above, N
             EXPECT_LE(b.held, c.findLimit() + slideMargin * 1.01);
             EXPECT_GE(b.slipped, c.findLimit() * 0.99);

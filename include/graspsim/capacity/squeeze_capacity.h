@@ -12,6 +12,11 @@
 
 namespace graspsim::capacity {
 
+/// How compliant contact is integrated: Simbody's Runge-Kutta-Merson at 1e-7 (the reference), or
+/// graspsim's linearly implicit stepper (ROS2) at a scenario's defaults (accuracy 1e-3, steps up
+/// to 5 ms) with the contacts' analytic Jacobian, as `graspsim simulate --integrator implicit`.
+enum class SqueezeIntegrator { Reference, LinearlyImplicit };
+
 /// Parameters of the squeeze.
 struct SqueezeCase {
     double mu = 0.5;             ///< Coulomb coefficient, static = dynamic
@@ -19,6 +24,7 @@ struct SqueezeCase {
     double boxMass = 1;          ///< kg
     double transitionVelocity = 1e-3;  ///< m/s, compliant friction's transition speed
     bool rigid = false;          ///< rigid (Coulomb, PGS time stepper) or compliant (Hunt-Crossley) contact
+    SqueezeIntegrator integrator = SqueezeIntegrator::Reference;  ///< compliant contact only
     /// The Coulomb holding capacity, 2 mu N (N).
     double findLimit() const { return 2 * mu * press; }
 };
