@@ -31,6 +31,7 @@ struct CapacityCommand::Options {
     std::string constraint = "bushing";
     std::string attach = "merged";
     std::string releaseSlide;
+    std::string releasePenetration;
     std::string qMinimum;
     std::string limitsFriction = "dynamic";
     std::string limits = "thesis";
@@ -69,6 +70,8 @@ CapacityCommand::CapacityCommand(CLI::App& app) : options_(std::make_shared<Opti
     command_->add_option("--attach", o.attach, "approx: merged (default) or multi");
     command_->add_option("--release-slide", o.releaseSlide,
                          "approx: release when the object slid this far in the hand, m (default 0.005)");
+    command_->add_option("--release-penetration", o.releasePenetration,
+                         "approx: release when a fingertip sank this much deeper into the object, m (default 0.0005)");
     command_->add_option("--q-minimum", o.qMinimum, "approx: grasp quality Q_M (N) below which to release (default: 0.5 x Q_Th)");
     command_->add_option("--limits-friction", o.limitsFriction,
                          "approx: the friction coefficient of the constraint's limits, dynamic (default) or static");
@@ -127,7 +130,11 @@ CapacityCommand::Plan CapacityCommand::makePlan() const {
     plan.simulation.accuracy = parseAccuracy(o.accuracy);
     plan.simulation.approx.constraint = simulation::parseApproxConstraint(o.constraint, "--constraint");
     plan.simulation.approx.attach = simulation::parseApproxAttach(o.attach, "--attach");
-    plan.simulation.approx.releaseSlideDistance = parsePositive(o.releaseSlide, "--release-slide", "the release distance (m)", 0.005);
+    plan.simulation.approx.releaseSlideDistance = parsePositive(o.releaseSlide, "--release-slide", "the release distance (m)",
+                                                                simulation::ApproxOptions{}.releaseSlideDistance);
+    plan.simulation.approx.releasePenetration =
+        parsePositive(o.releasePenetration, "--release-penetration", "the release penetration (m)",
+                      simulation::ApproxOptions{}.releasePenetration);
     plan.simulation.approx.qMinimum = parsePositive(o.qMinimum, "--q-minimum", "the grasp quality (N)", 0);
     if (o.limitsFriction != "dynamic" && o.limitsFriction != "static") {
         throw InputError("--limits-friction: value '" + o.limitsFriction + "' is not accepted; use dynamic or static");

@@ -87,15 +87,15 @@ double EngagedGraspTracker::measurePenetration(const SimTK::State& state) {
         if (!pairs.isPairEnabled(state, k)) replaced.push_back(k);
     }
     context_->model.getSystem().realize(state, SimTK::Stage::Position);
-    double deepest = 0;
+    double deepest = 0, growthNow = 0;
     for (const contact::ContactDepth& c : pairs.findContactDepths(state, replaced)) {
         deepest = std::max(deepest, c.depth);
         const auto engaged = depthAtEngage_.find(c.pairIndex);
-        const double growth = c.depth - (engaged == depthAtEngage_.end() ? 0.0 : engaged->second);
-        penetration_.maxGrowth = std::max(penetration_.maxGrowth, growth);
+        growthNow = std::max(growthNow, c.depth - (engaged == depthAtEngage_.end() ? 0.0 : engaged->second));
     }
+    penetration_.maxGrowth = std::max(penetration_.maxGrowth, growthNow);
     penetration_.maxWhileEngaged = std::max(penetration_.maxWhileEngaged, deepest);
-    return deepest;
+    return growthNow;
 }
 
 }  // namespace graspsim::simulation

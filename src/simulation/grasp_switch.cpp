@@ -302,13 +302,16 @@ void GraspSwitch::checkRelease(SimTK::State& state) const {
     // Written back only when a maximum grew: writing the record (a discrete variable) at every
     // check made the engaged hold cost 1.8 times its floor instead of 1.2 (graspsim bench).
     EngagedGraspTracker tracker = getRecord(state).tracker;
-    tracker.measurePenetration(state);
+    const double growth = tracker.measurePenetration(state);
     const PenetrationStats& before = getRecord(state).tracker.getPenetration();
     const PenetrationStats& after = tracker.getPenetration();
     if (after.maxWhileEngaged != before.maxWhileEngaged || after.maxGrowth != before.maxGrowth) {
         updRecord(state).tracker = std::move(tracker);
     }
-    if (multi_) {
+    if (growth > options_.releasePenetration) {
+        q = calcEngagedQuality(state);
+        reason = format("a fingertip sank %.6g m deeper into the object (limit %.6g m)", growth, options_.releasePenetration);
+    } else if (multi_) {
         q = calcEngagedQuality(state);
         std::vector<GraspEvent> events = getRecord(state).events;
         reason = multi_->update(state, q, events);

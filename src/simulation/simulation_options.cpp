@@ -78,6 +78,7 @@ ApproxOptions resolveApproxOptions(const ApproxOptions& given, const scenario::A
         throw InputError("approx: the quality thresholds Q_Th and Q_M must be >= 0 (0 = automatic)");
     }
     if (!(options.releaseSlideDistance > 0)) throw InputError("approx: the release slide distance must be > 0 m");
+    if (!(options.releasePenetration > 0)) throw InputError("approx: the release penetration must be > 0 m");
     if (!(options.maxEngagedPenetration > 0)) throw InputError("approx: the engaged penetration bound must be > 0 m");
     if (options.qThreshold > 0 && options.qMinimum >= options.qThreshold) {
         char text[160];

@@ -293,6 +293,40 @@ INSTANTIATE_TEST_SUITE_P(BothExperiments, PerturbationVerdict,
                          ::testing::Values(std::make_pair("ball-clutch", "f1"), std::make_pair("ball-clutch", "f2"),
                                            std::make_pair("phone-pinch", "f1"), std::make_pair("phone-pinch", "f2")));
 
+// An overload release must hand back an object that full contact holds at that load (issue
+// "holding capacity"). The phone pulled down by 0.9 N from 1.5 s: full contact holds it (the
+// second method, the oracle), letting it pivot with the fingers; the engaged constraint reaches its
+// rotation limit first and slides, driving the phone into a locked fingertip. Released only after
+// the 5 mm slide, the deepened pad threw the phone out (lost with both constraints); released once
+// a pad has sunk releasePenetration deeper, full contact catches it.
+TEST(GraspSwitch, OverloadReleaseHandsBackAnObjectFullContactHolds) {
+    scenario::Scenario s = scenario::findBuiltinScenario("phone-pinch");
+    scenario::Perturbation pull;
+    pull.name = "pull";
+    pull.force = {0, -0.9, 0};
+    pull.start = 1.5;
+    pull.duration = 1.0;
+    s.perturbations.push_back(pull);
+    simulation::SimulationOptions options = makeOptions(simulation::SimulationMode::Full, pull.start + pull.duration);
+    options.perturbation = pull.name;
+    const auto full = simulation::runGraspSimulation(s, options);
+    ASSERT_TRUE(full.summary.complete) << full.summary.failure;
+    ASSERT_TRUE(full.summary.held) << "the oracle: full contact holds the phone under the pull";
+    for (const auto constraint : {simulation::ApproxConstraint::Bushing, simulation::ApproxConstraint::Weld}) {
+        SCOPED_TRACE(simulation::toString(constraint));
+        options.mode = simulation::SimulationMode::Approx;
+        options.approx.constraint = constraint;
+        const auto approx = simulation::runGraspSimulation(s, options);
+        ASSERT_TRUE(approx.summary.complete) << approx.summary.failure;
+        const auto overload = std::find_if(approx.events.begin(), approx.events.end(), [&](const simulation::GraspEvent& e) {
+            return e.kind == simulation::GraspEventKind::Release && e.time >= pull.start;
+        });
+        ASSERT_NE(overload, approx.events.end()) << "the pull overloads the engaged constraint";
+        EXPECT_TRUE(approx.summary.held) << "released at " << overload->time << " s: " << overload->reason;
+        EXPECT_LT(approx.summary.maxEngagedPenetrationGrowth, 2 * simulation::ApproxOptions{}.releasePenetration);
+    }
+}
+
 // Phone f1 overloads the pinch (2 N, mostly along the pinch axis, unloads one finger: the engaged
 // Q falls below Q_M). The release hands back to contact with the object's velocity unchanged:
 // the jump measured across the switch (before it, and in the state the integrator restarts

@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <string>
 
 using namespace graspsim;
@@ -63,6 +65,9 @@ TEST(ResolveApproxOptions, RejectsWhatTheSwitchCannotUse) {
     given = {};
     given.releaseSlideDistance = 0;
     EXPECT_NE(findMessage(given).find("slide distance must be > 0 m"), std::string::npos);
+    given = {};
+    given.releasePenetration = std::nan("");
+    EXPECT_NE(findMessage(given).find("release penetration must be > 0 m"), std::string::npos);
     given = {};
     given.maxEngagedPenetration = -1e-4;
     EXPECT_NE(findMessage(given).find("penetration bound must be > 0 m"), std::string::npos);

@@ -71,8 +71,9 @@ public:
     /// Stage::Acceleration with the weld (its reaction is a Lagrange multiplier), to
     /// Stage::Velocity with the bushing.
     double calcQuality(const SimTK::State& state) const;
-    /// Deepest contact (m) of the pairs switched off in `state`, evaluated as if on, and updates
-    /// getPenetration(). Used by both attachments. Realizes `state` to Stage::Velocity.
+    /// The largest growth (m) of a switched-off pair's depth beyond its depth at engagement, now,
+    /// evaluated as if the pairs were on, and updates getPenetration(). Used by both attachments.
+    /// Realizes `state` to Stage::Position.
     double measurePenetration(const SimTK::State& state);
     const PenetrationStats& getPenetration() const { return penetration_; }
 

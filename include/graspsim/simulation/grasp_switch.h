@@ -45,7 +45,9 @@
 ///    dynamics (engaged_grasp_tracker.h): their penetration is measured as if the pairs were on
 ///    (nothing applied, the state untouched), and Q is estimated from the constraint's reaction wrench
 ///    distributed over the contacts captured at engagement. RELEASE (constraint off, fingers
-///    unlocked, contacts on, "release" event) when the object's centre of mass has moved more
+///    unlocked, contacts on, "release" event) when a replaced contact's depth has grown more than
+///    releasePenetration beyond its depth at engagement (the constraint sliding the object into a
+///    locked finger), when the object's centre of mass has moved more
 ///    than releaseSlideDistance relative to the palm since engagement, when a fingertip is
 ///    farther than the scenario's held tolerance from its goal on the object, or when that Q <
 ///    Q_M. Nothing at the release changes a velocity (the constraint and the locks are switched

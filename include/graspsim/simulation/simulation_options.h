@@ -72,6 +72,10 @@ struct ApproxOptions {
     /// (m): about the radius of a fingertip pad, beyond which the fingers would have lost the
     /// spots they pressed into.
     double releaseSlideDistance = 0.005;
+    /// Release once a replaced contact's depth has grown more than this beyond its depth at
+    /// engagement (m). The locked fingers cannot give way as real contacts would, so an object
+    /// sliding against a pad sinks into it; handed back later, the pad would throw the object out.
+    double releasePenetration = 0.0005;
     /// Opt-in, for comparing capacities: the friction limits from the scenario's STATIC friction instead of the
     /// dynamic one (the compliant contact holds until the static coefficient; docs/capacity.md).
     bool staticFrictionLimits = false;
