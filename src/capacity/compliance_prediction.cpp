@@ -1,13 +1,15 @@
 #include "graspsim/capacity/compliance_prediction.h"
 
 #include "graspsim/error.h"
+#include "graspsim/model/model_description.h"
 #include "graspsim/integration/simbody_stepper.h"
 #include "graspsim/simulation/grasp_experiment.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <map>
+
+#include <Eigen/Dense>
 
 namespace graspsim::capacity {
 
@@ -15,21 +17,42 @@ namespace {
 
 Eigen::Vector3d toEigen(const SimTK::Vec3& v) { return {v[0], v[1], v[2]}; }
 
-// Each finger joint's stiffness K_q (N m/rad), by mobilizer: PD gain + passive spring, + the limit
-// stop's stiffness past a limit (the stop then pushes back at that rate).
-std::map<SimTK::MobilizedBodyIndex, double> findFingerJointStiffness(const simulation::GraspScene& scene,
-                                                                     const SimTK::State& state) {
-    const std::vector<SimTK::MobilizedBodyIndex>& fingers = scene.getFingerMobilizers();
+// Columns of the station Jacobian of `body`'s material point at p_G over the finger mobilizers
+// (3 x n, in G).
+Eigen::MatrixXd calcFingerJacobian(const simulation::GraspScene& scene, const SimTK::State& state,
+                                   const std::string& body, const SimTK::Vec3& p_G) {
     const SimTK::SimbodyMatterSubsystem& matter = scene.getModel().getMatter();
-    std::map<SimTK::MobilizedBodyIndex, double> stiffness;
-    for (const system::JointImpedance& j : scene.findJointImpedances()) {
-        if (std::find(fingers.begin(), fingers.end(), j.mobod) == fingers.end()) continue;
-        double k = j.stiffness;
-        if (!j.stop.isEmptyHandle()) {
-            const double q = matter.getMobilizedBody(j.mobod).getOneQ(state, 0);
-            if (q < j.stop.getLowerBound(state) || q > j.stop.getUpperBound(state)) k += j.stop.getStiffness(state);
-        }
-        stiffness[j.mobod] = k;
+    const SimTK::MobilizedBody& segment = scene.getModel().getMobilizedBody(body);
+    SimTK::Matrix J;
+    matter.calcStationJacobian(state, segment.getMobilizedBodyIndex(), segment.findStationAtGroundPoint(state, p_G), J);
+    const std::vector<SimTK::MobilizedBodyIndex>& fingers = scene.getFingerMobilizers();
+    Eigen::MatrixXd columns(3, fingers.size());
+    for (std::size_t k = 0; k < fingers.size(); ++k) {
+        const int u = int(matter.getMobilizedBody(fingers[k]).getFirstUIndex(state));
+        columns.col(Eigen::Index(k)) << J(0, u), J(1, u), J(2, u);
+    }
+    return columns;
+}
+
+// The PD gains' joint stiffness where the IK follows the finger in its null space: kp J_E^+ J_E
+// over each goal end-effector's chain (file comment).
+Eigen::MatrixXd calcFollowedPdStiffness(const simulation::GraspScene& scene, const SimTK::State& state,
+                                        const Eigen::VectorXd& kp) {
+    const model::ModelDescription& d = scene.getModel().getDescription();
+    Eigen::MatrixXd stiffness = Eigen::MatrixXd::Zero(kp.size(), kp.size());
+    Eigen::VectorXd covered = Eigen::VectorXd::Zero(kp.size());
+    for (const std::string& name : scene.getGoalEndEffectors()) {
+        const model::EndEffector& e = *d.findEndEffector(name);
+        const SimTK::MobilizedBody& body = scene.getModel().getMobilizedBody(e.body);
+        const SimTK::Vec3 p_G = body.findStationLocationInGround(state, SimTK::Vec3(e.p_BE[0], e.p_BE[1], e.p_BE[2]));
+        const Eigen::MatrixXd J = calcFingerJacobian(scene, state, e.body, p_G);
+        const Eigen::MatrixXd projector = J.completeOrthogonalDecomposition().pseudoInverse() * J;
+        const Eigen::VectorXd root = kp.cwiseSqrt();
+        stiffness += root.asDiagonal() * projector * root.asDiagonal();
+        for (Eigen::Index k = 0; k < J.cols(); ++k) covered[k] += J.col(k).norm() > 0 ? 1 : 0;
+    }
+    for (Eigen::Index k = 0; k < kp.size(); ++k) {
+        if (covered[k] == 0) stiffness(k, k) += kp[k];  // a finger without a goal: plain PD
     }
     return stiffness;
 }
@@ -59,27 +82,53 @@ std::string formatLoad(double value, const char* unit) {
     return text;
 }
 
+grasp::CompliantRamp runCreepRamp(const scenario::Scenario& scenario, LoadStartGrasp start, const GraspCapacityRequest& r,
+                                  const CompliancePredictionSettings& settings) {
+    for (grasp::CompliantContact& c : start.contacts) c.tangentialStiffness = settings.creepTangentialStiffnessRatio * c.normalStiffness;
+    grasp::CompliantRampOptions o;
+    o.rate = r.rate > 0 ? r.rate : findDefaultRate(scenario, r.torque);
+    o.slipDistance = settings.slipDistance;
+    o.maxLoad = o.rate * r.maxRampDuration;
+    return grasp::runCompliantRamp(start.contacts, start.p_GO, toLoadDirection(r), scenario.contact, o);
+}
+
 }  // namespace
 
-Eigen::Matrix3d calcFingerCompliance(const simulation::GraspScene& scene, const SimTK::State& state,
-                                     const std::string& body, const SimTK::Vec3& p_G) {
+Eigen::MatrixXd calcFingerJointStiffness(const simulation::GraspScene& scene, const SimTK::State& state,
+                                         const CompliancePredictionSettings& settings) {
     scene.getSystem().realize(state, SimTK::Stage::Position);
-    const SimTK::SimbodyMatterSubsystem& matter = scene.getModel().getMatter();
-    const SimTK::MobilizedBody& segment = scene.getModel().getMobilizedBody(body);
-    SimTK::Matrix J;
-    matter.calcStationJacobian(state, segment.getMobilizedBodyIndex(), segment.findStationAtGroundPoint(state, p_G), J);
-    Eigen::Matrix3d compliance = Eigen::Matrix3d::Zero();
-    for (const auto& [mobod, k] : findFingerJointStiffness(scene, state)) {
-        const int u = int(matter.getMobilizedBody(mobod).getFirstUIndex(state));
-        const Eigen::Vector3d column(J(0, u), J(1, u), J(2, u));
-        if (k > 0) compliance += column * column.transpose() / k;
+    const std::vector<SimTK::MobilizedBodyIndex>& fingers = scene.getFingerMobilizers();
+    const model::ModelDescription& d = scene.getModel().getDescription();
+    Eigen::VectorXd kp = Eigen::VectorXd::Zero(fingers.size()), passive = Eigen::VectorXd::Zero(fingers.size());
+    for (const system::JointImpedance& j : scene.findJointImpedances()) {
+        const auto it = std::find(fingers.begin(), fingers.end(), j.mobod);
+        if (it == fingers.end()) continue;
+        const std::size_t k = std::size_t(it - fingers.begin());
+        const SimTK::MobilizedBody& mobod = scene.getModel().getMatter().getMobilizedBody(j.mobod);
+        for (const model::Joint& joint : d.joints) {
+            if (scene.getModel().getMobilizedBody(joint.child).getMobilizedBodyIndex() == j.mobod) passive[Eigen::Index(k)] = joint.stiffness;
+        }
+        kp[Eigen::Index(k)] = j.stiffness - passive[Eigen::Index(k)];
+        const double q = mobod.getOneQ(state, 0);
+        if (!j.stop.isEmptyHandle() && (q < j.stop.getLowerBound(state) || q > j.stop.getUpperBound(state))) {
+            passive[Eigen::Index(k)] += j.stop.getStiffness(state);
+        }
     }
-    return compliance;
+    Eigen::MatrixXd pd = settings.ikFollowsNullSpace ? calcFollowedPdStiffness(scene, state, kp) : Eigen::MatrixXd(kp.asDiagonal());
+    return pd + Eigen::MatrixXd(passive.asDiagonal());
+}
+
+Eigen::Matrix3d calcFingerCompliance(const simulation::GraspScene& scene, const SimTK::State& state,
+                                     const Eigen::MatrixXd& jointStiffness, const std::string& body, const SimTK::Vec3& p_G) {
+    scene.getSystem().realize(state, SimTK::Stage::Position);
+    const Eigen::MatrixXd J = calcFingerJacobian(scene, state, body, p_G);
+    return J * jointStiffness.ldlt().solve(J.transpose());
 }
 
 std::vector<grasp::CompliantContact> findCompliantContacts(const simulation::GraspScene& scene, const SimTK::State& state,
                                                            const CompliancePredictionSettings& settings) {
     scene.getSystem().realize(state, SimTK::Stage::Velocity);
+    const Eigen::MatrixXd jointStiffness = calcFingerJointStiffness(scene, state, settings);
     std::vector<grasp::CompliantContact> contacts;
     for (const contact::ContactReport& r : scene.findContactReports(state)) {
         if (!(r.normalForce > 0) || !(r.depth > 0)) continue;
@@ -89,7 +138,7 @@ std::vector<grasp::CompliantContact> findCompliantContacts(const simulation::Gra
         c.force_G = r.normalForce * c.n_G + toEigen(r.frictionForce_G);
         c.normalStiffness = 1.5 * r.normalForce / r.depth;
         c.tangentialStiffness = settings.tangentialStiffnessRatio * c.normalStiffness;
-        c.fingerCompliance_G = calcFingerCompliance(scene, state, r.bodyA, r.p_G);
+        c.fingerCompliance_G = calcFingerCompliance(scene, state, jointStiffness, r.bodyA, r.p_G);
         contacts.push_back(c);
     }
     return contacts;
@@ -104,30 +153,31 @@ LoadStartGrasp findLoadStartGrasp(const scenario::Scenario& scenario, simulation
     integration::SimbodyCpodesStepper stepper(experiment.getScene().getSystem(), accuracy);
     const SimTK::State state = runToLoadStart(experiment, scenario, stepper);
     const simulation::GraspScene& scene = experiment.getScene();
-    LoadStartGrasp grasp;
-    grasp.contacts = findCompliantContacts(scene, state, settings);
+    LoadStartGrasp start;
+    start.contacts = findCompliantContacts(scene, state, settings);
     for (const contact::ContactReport& r : scene.findContactReports(state)) {
-        if (r.normalForce > 0 && r.depth > 0) grasp.bodies.push_back(r.bodyA);
+        if (r.normalForce > 0 && r.depth > 0) start.bodies.push_back(r.bodyA);
     }
-    if (grasp.contacts.empty()) throw NumericalError("compliance prediction: no contact at the load's start");
-    grasp.p_GO = toEigen(scene.getObject().getBodyOriginLocation(state));
-    return grasp;
+    if (start.contacts.empty()) throw NumericalError("compliance prediction: no contact at the load's start");
+    start.p_GO = toEigen(scene.getObject().getBodyOriginLocation(state));
+    return start;
 }
 
 std::vector<CompliancePrediction> predictGraspCapacities(const scenario::Scenario& scenario,
                                                          const simulation::SimulationOptions& options,
                                                          const std::vector<GraspCapacityRequest>& requests,
                                                          const CompliancePredictionSettings& settings) {
-    const LoadStartGrasp grasp = findLoadStartGrasp(scenario, options, settings);
+    const LoadStartGrasp start = findLoadStartGrasp(scenario, options, settings);
     std::vector<CompliancePrediction> predictions;
     for (const GraspCapacityRequest& r : requests) {
         grasp::CompliantCapacityOptions o;
         o.slipDistance = settings.slipDistance;
         CompliancePrediction p{r, {}, {}};
         o.mu = scenario.contact.dynamicFriction;
-        p.dynamicFriction = grasp::calcCompliantCapacity(grasp.contacts, grasp.p_GO, toLoadDirection(r), o);
+        p.dynamicFriction = grasp::calcCompliantCapacity(start.contacts, start.p_GO, toLoadDirection(r), o);
         o.mu = scenario.contact.staticFriction;
-        p.staticFriction = grasp::calcCompliantCapacity(grasp.contacts, grasp.p_GO, toLoadDirection(r), o);
+        p.staticFriction = grasp::calcCompliantCapacity(start.contacts, start.p_GO, toLoadDirection(r), o);
+        p.creep = runCreepRamp(scenario, start, r, settings);
         predictions.push_back(p);
     }
     return predictions;
@@ -152,7 +202,7 @@ std::string describePrediction(const CompliancePrediction& p) {
                events + ")";
     };
     return p.request.directionName + (p.request.torque ? " torque" : " force") + " (compliance model): mu_d: " +
-           describe(p.dynamicFriction) + "; mu_s: " + describe(p.staticFriction);
+           describe(p.dynamicFriction) + "; mu_s: " + describe(p.staticFriction) + "; creep ramp: " + describe(p.creep.capacity);
 }
 
 }  // namespace graspsim::capacity

@@ -111,6 +111,14 @@ std::vector<capacity::GraspCapacityRequest> makeRequests(const std::string& dire
     return requests;
 }
 
+// The request's rate as given, except a torque's with --direction all: scaled from the forces'.
+double findRate(const scenario::Scenario& scenario, bool torqueRateFromForceRate, const capacity::GraspCapacityRequest& r) {
+    if (r.torque && r.rate > 0 && torqueRateFromForceRate) {
+        return r.rate * capacity::findDefaultRate(scenario, true) / capacity::findDefaultRate(scenario, false);
+    }
+    return r.rate;
+}
+
 void prepareFolder(const std::string& folder) {
     std::error_code ec;
     std::filesystem::create_directories(folder, ec);
@@ -165,7 +173,9 @@ int CapacityCommand::run() const {
     for (const capacity::GraspCapacityRequest& r : plan.requests) capacity::checkLoadResistible(scenario, r);
     simulation::checkScenarioSetup(scenario, plan.simulation);  // before the folder exists
     if (plan.compliance) {
-        for (const capacity::CompliancePrediction& p : capacity::predictGraspCapacities(scenario, plan.simulation, plan.requests, {})) {
+        std::vector<capacity::GraspCapacityRequest> requests = plan.requests;
+        for (capacity::GraspCapacityRequest& r : requests) r.rate = findRate(scenario, plan.torqueRateFromForceRate, r);
+        for (const capacity::CompliancePrediction& p : capacity::predictGraspCapacities(scenario, plan.simulation, requests, {})) {
             std::cout << scenario.name << " " << capacity::describePrediction(p) << "\n";
         }
         return 0;
@@ -173,9 +183,7 @@ int CapacityCommand::run() const {
     if (!o.out.empty()) prepareFolder(o.out);
     std::vector<capacity::GraspCapacity> measurements;
     for (capacity::GraspCapacityRequest r : plan.requests) {
-        if (r.torque && r.rate > 0 && plan.torqueRateFromForceRate) {
-            r.rate *= capacity::findDefaultRate(scenario, true) / capacity::findDefaultRate(scenario, false);
-        }
+        r.rate = findRate(scenario, plan.torqueRateFromForceRate, r);
         if (plan.bisection) {
             const double rate = r.rate > 0 ? r.rate : capacity::findDefaultRate(scenario, r.torque);
             const double guess = plan.guess > 0 ? plan.guess : rate;

@@ -50,12 +50,6 @@ struct Progress {
     double load = 0;
 };
 
-Eigen::Matrix3d calcSlidingStiffness(const CompliantContact& c, const Eigen::Vector3d& tangent, double mu) {
-    const Eigen::Vector3d a = c.n_G + mu * tangent;
-    const double compliance = 1 / c.normalStiffness + c.n_G.dot(c.fingerCompliance_G * a);
-    return a * c.n_G.transpose() / std::max(compliance, 1e-12 / c.normalStiffness);
-}
-
 Eigen::Matrix3d findStiffness(const CompliantContact& c, const Progress& p, std::size_t i, double mu) {
     switch (p.states[i]) {
         case CompliantContactState::Sticking: return calcStickingStiffness(c);
@@ -176,6 +170,12 @@ double findNextEvent(const std::vector<CompliantContact>& contacts, const Progre
 }
 
 }  // namespace
+
+Eigen::Matrix3d calcSlidingStiffness(const CompliantContact& c, const Eigen::Vector3d& tangent, double mu) {
+    const Eigen::Vector3d a = c.n_G + mu * tangent;
+    const double compliance = 1 / c.normalStiffness + c.n_G.dot(c.fingerCompliance_G * a);
+    return a * c.n_G.transpose() / std::max(compliance, 1e-12 / c.normalStiffness);
+}
 
 Eigen::Matrix3d calcStickingStiffness(const CompliantContact& c) {
     checkContact(c, 0);

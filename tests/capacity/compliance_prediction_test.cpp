@@ -1,5 +1,6 @@
 #include "graspsim/capacity/compliance_prediction.h"
 
+#include "graspsim/model/model_description.h"
 #include "graspsim/scenario/scenario_file.h"
 #include "graspsim/simulation/grasp_experiment.h"
 
@@ -44,16 +45,45 @@ TEST(CompliancePrediction, FingerComplianceAgainstFiniteDifferences) {
     simulation::GraspExperiment experiment(pinch, simulation::SimulationOptions{});
     const simulation::GraspScene& scene = experiment.getScene();
     const SimTK::State state = experiment.makeInitialState();
+    CompliancePredictionSettings plain;
+    plain.ikFollowsNullSpace = false;
+    const Eigen::MatrixXd K = calcFingerJointStiffness(scene, state, plain);
+    ASSERT_TRUE(K.isDiagonal());
     for (const char* body : {"index_distal", "thumb_distal", "index_middle"}) {
         const SimTK::MobilizedBody& segment = scene.getModel().getMobilizedBody(body);
         const SimTK::Vec3 p_G = segment.findStationLocationInGround(state, SimTK::Vec3(0.003, 0.008, -0.002));
-        const Eigen::Matrix3d model = calcFingerCompliance(scene, state, body, p_G);
+        const Eigen::Matrix3d model = calcFingerCompliance(scene, state, K, body, p_G);
         const Eigen::Matrix3d reference = calcComplianceByDifferences(scene, state, body, p_G);
         EXPECT_GT(model.norm(), 1e-5) << body;
         EXPECT_LT((model - reference).norm(), 1e-6 * reference.norm()) << body;
     }
     const SimTK::Vec3 p_palm = scene.getPalm().getBodyOriginLocation(state);
-    EXPECT_EQ(calcFingerCompliance(scene, state, scene.getModel().getDescription().findPalm().name, p_palm).norm(), 0);
+    EXPECT_EQ(calcFingerCompliance(scene, state, K, scene.getModel().getDescription().findPalm().name, p_palm).norm(), 0);
+}
+
+// With the IK following the finger along its null space, the PD stiffness is kp J_E^+ J_E. At the
+// end-effector E itself the null space does not move the point, so its compliance is the plain
+// J_E J_E^T / (kp + k_s) of equal joint stiffnesses; elsewhere on the finger it can only be larger.
+TEST(CompliancePrediction, IkNullSpaceLeavesTheEndEffectorsComplianceAndSoftensTheRest) {
+    const scenario::Scenario pinch = scenario::findBuiltinScenario("phone-pinch");
+    simulation::GraspExperiment experiment(pinch, simulation::SimulationOptions{});
+    const simulation::GraspScene& scene = experiment.getScene();
+    const SimTK::State state = experiment.makeInitialState();
+    CompliancePredictionSettings plain;
+    plain.ikFollowsNullSpace = false;
+    const Eigen::MatrixXd Kplain = calcFingerJointStiffness(scene, state, plain);
+    const Eigen::MatrixXd Kik = calcFingerJointStiffness(scene, state, {});
+    const model::EndEffector& tip = *scene.getModel().getDescription().findEndEffector("index_tip");
+    const SimTK::MobilizedBody& distal = scene.getModel().getMobilizedBody(tip.body);
+    const SimTK::Vec3 p_tip = distal.findStationLocationInGround(state, SimTK::Vec3(tip.p_BE[0], tip.p_BE[1], tip.p_BE[2]));
+    const Eigen::Matrix3d atTipPlain = calcFingerCompliance(scene, state, Kplain, tip.body, p_tip);
+    const Eigen::Matrix3d atTipIk = calcFingerCompliance(scene, state, Kik, tip.body, p_tip);
+    EXPECT_LT((atTipIk - atTipPlain).norm(), 1e-6 * atTipPlain.norm());
+    const SimTK::Vec3 p_middle = scene.getModel().getMobilizedBody("index_middle").findStationLocationInGround(state, SimTK::Vec3(0.004, 0.01, 0));
+    const Eigen::Matrix3d extra = calcFingerCompliance(scene, state, Kik, "index_middle", p_middle) -
+                                  calcFingerCompliance(scene, state, Kplain, "index_middle", p_middle);
+    EXPECT_GT(Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(extra).eigenvalues().maxCoeff(), 1e-4);  // m/N, soft
+    EXPECT_GT(Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(extra).eigenvalues().minCoeff(), -1e-12);
 }
 
 // At the load's start the grasp is at rest: its contact forces carry the object's weight.

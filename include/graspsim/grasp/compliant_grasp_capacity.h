@@ -89,6 +89,10 @@ struct CompliantCapacity {
 /// @throws graspsim::InputError for a non-positive stiffness or a normal that is not unit.
 Eigen::Matrix3d calcStickingStiffness(const CompliantContact& contact);
 
+/// The sliding stiffness a n^T / (1 / k_n + n^T C_f a), a = n + mu t (N/m, in G), of a contact
+/// whose friction mu f_n acts along the unit tangent `tangent` (file comment).
+Eigen::Matrix3d calcSlidingStiffness(const CompliantContact& contact, const Eigen::Vector3d& tangent, double mu);
+
 /// Follows a load `direction_G` = [torque ; force] (Simbody's order, rotation first; exactly one
 /// of the two parts non-zero and unit), applied at or about `p_GO` (m, in G; the object's centre
 /// of mass), until the grasp gives way (file comment). The contacts' start forces already balance
