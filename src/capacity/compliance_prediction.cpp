@@ -172,7 +172,7 @@ std::vector<CompliancePrediction> predictGraspCapacities(const scenario::Scenari
     for (const GraspCapacityRequest& r : requests) {
         grasp::CompliantCapacityOptions o;
         o.slipDistance = settings.slipDistance;
-        CompliancePrediction p{r, {}, {}};
+        CompliancePrediction p{r, {}, {}, {}};
         o.mu = scenario.contact.dynamicFriction;
         p.dynamicFriction = grasp::calcCompliantCapacity(start.contacts, start.p_GO, toLoadDirection(r), o);
         o.mu = scenario.contact.staticFriction;

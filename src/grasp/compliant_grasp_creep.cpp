@@ -131,6 +131,47 @@ std::vector<Contact> makeContacts(const std::vector<CompliantContact>& contacts,
     return result;
 }
 
+// Contacts opening or breaking loose at `load`; false when the grasp gives way.
+bool updateContactStates(std::vector<Contact>& contacts, double load, const contact::ContactParameters& friction,
+                         Vector6& displacement, CompliantCapacity& capacity) {
+    for (std::size_t i = 0; i < contacts.size(); ++i) {
+        Contact& c = contacts[i];
+        if (c.state == CompliantContactState::Open) continue;
+        if (c.findNormalForce() <= 0) {
+            c.state = CompliantContactState::Open;
+            c.force.setZero();
+            capacity.events.push_back({load, int(i), c.state});
+        } else if (c.state == CompliantContactState::Sticking &&
+                   c.findTangentialForce().norm() >= friction.staticFriction * c.findNormalForce()) {
+            capacity.events.push_back({load, int(i), CompliantContactState::Sliding});
+            capacity.firstSlip = std::min(capacity.firstSlip, load);
+            if (!breakLoose(contacts, i, friction.dynamicFriction, displacement)) return false;
+        }
+    }
+    return true;
+}
+
+// One explicit step of the forces and the displacement under the load's rate `loadRate` (a wrench
+// per second, force first); false when the grasp gives way.
+bool stepRamp(std::vector<Contact>& contacts, const Vector6& loadRate, const contact::ContactParameters& friction,
+              double timeStep, Vector6& displacement) {
+    std::vector<Eigen::Matrix3d> stiffness;
+    const Matrix6 total = assemble(contacts, stiffness, friction.dynamicFriction);
+    Vector6 rhs = loadRate;
+    std::vector<Eigen::Vector3d> creep;
+    for (std::size_t i = 0; i < contacts.size(); ++i) {
+        creep.push_back(findCreepVelocity(contacts[i], friction));
+        rhs += contacts[i].map * (stiffness[i] * creep[i]);
+    }
+    Vector6 rate;
+    if (!solve(total, rhs, rate)) return false;
+    for (std::size_t i = 0; i < contacts.size(); ++i) {
+        contacts[i].force += timeStep * stiffness[i] * (creep[i] - contacts[i].map.transpose() * rate);
+    }
+    displacement += timeStep * rate;
+    return true;
+}
+
 }  // namespace
 
 CompliantRamp runCompliantRamp(const std::vector<CompliantContact>& input, const Eigen::Vector3d& p_GO,
@@ -138,51 +179,24 @@ CompliantRamp runCompliantRamp(const std::vector<CompliantContact>& input, const
                                const CompliantRampOptions& options) {
     checkInputs(direction_G, friction, options);
     std::vector<Contact> contacts = makeContacts(input, p_GO);
-    Vector6 direction;
-    direction << direction_G.tail<3>(), direction_G.head<3>();  // force first, as the wrench maps
-    const double mu_s = friction.staticFriction, mu_d = friction.dynamicFriction;
+    Vector6 loadRate;
+    loadRate << direction_G.tail<3>(), direction_G.head<3>();  // force first, as the wrench maps
+    loadRate *= options.rate;
     CompliantRamp ramp;
     ramp.capacity = CompliantCapacity{kInfinity, kInfinity, kInfinity, {}, {}};
     Vector6 displacement = Vector6::Zero();
-    std::vector<Eigen::Matrix3d> stiffness;
-    for (double load = 0; load < options.maxLoad;) {
-        for (std::size_t i = 0; i < contacts.size(); ++i) {
-            Contact& c = contacts[i];
-            if (c.state == CompliantContactState::Open) continue;
-            if (c.findNormalForce() <= 0) {
-                c.state = CompliantContactState::Open;
-                c.force.setZero();
-                ramp.capacity.events.push_back({load, int(i), c.state});
-            } else if (c.state == CompliantContactState::Sticking && c.findTangentialForce().norm() >= mu_s * c.findNormalForce()) {
-                ramp.capacity.events.push_back({load, int(i), CompliantContactState::Sliding});
-                ramp.capacity.firstSlip = std::min(ramp.capacity.firstSlip, load);
-                if (!breakLoose(contacts, i, mu_d, displacement)) {
-                    ramp.capacity.ultimate = load;
-                    break;
-                }
-            }
-        }
-        if (std::isfinite(ramp.capacity.ultimate)) break;
-        const double slip = findSlip(contacts, displacement);
-        ramp.samples.push_back({load, slip});
-        if (slip >= options.slipDistance && !std::isfinite(ramp.capacity.onset)) ramp.capacity.onset = load;
-        const Matrix6 total = assemble(contacts, stiffness, mu_d);
-        Vector6 rhs = options.rate * direction;
-        std::vector<Eigen::Vector3d> creep;
-        for (std::size_t i = 0; i < contacts.size(); ++i) {
-            creep.push_back(findCreepVelocity(contacts[i], friction));
-            rhs += contacts[i].map * (stiffness[i] * creep[i]);
-        }
-        Vector6 rate;
-        if (!solve(total, rhs, rate)) {
+    for (double load = 0; load < options.maxLoad; load += options.rate * options.timeStep) {
+        if (!updateContactStates(contacts, load, friction, displacement, ramp.capacity)) {
             ramp.capacity.ultimate = load;
             break;
         }
-        for (std::size_t i = 0; i < contacts.size(); ++i) {
-            contacts[i].force += options.timeStep * stiffness[i] * (creep[i] - contacts[i].map.transpose() * rate);
+        const double slip = findSlip(contacts, displacement);
+        ramp.samples.push_back({load, slip});
+        if (slip >= options.slipDistance && !std::isfinite(ramp.capacity.onset)) ramp.capacity.onset = load;
+        if (!stepRamp(contacts, loadRate, friction, options.timeStep, displacement)) {
+            ramp.capacity.ultimate = load;
+            break;
         }
-        displacement += options.timeStep * rate;
-        load += options.rate * options.timeStep;
     }
     if (std::isfinite(ramp.capacity.ultimate)) ramp.capacity.onset = std::min(ramp.capacity.onset, ramp.capacity.ultimate);
     for (const Contact& c : contacts) ramp.capacity.forces_G.push_back(c.force);
