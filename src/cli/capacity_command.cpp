@@ -4,6 +4,7 @@
 
 #include "graspsim/planning/planned_scenario.h"
 #include "graspsim/capacity/capacity_files.h"
+#include "graspsim/capacity/compliance_prediction.h"
 #include "graspsim/capacity/load_direction.h"
 #include "graspsim/error.h"
 #include "graspsim/scenario/scenario_file.h"
@@ -44,6 +45,7 @@ struct CapacityCommand::Plan {
     simulation::SimulationOptions simulation;
     std::vector<capacity::GraspCapacityRequest> requests;
     bool bisection = false;
+    bool compliance = false;  // predicted by the compliance model, not measured
     /// With --direction all, --rate is the forces' rate; the torques' is scaled from it by the
     /// default rates' ratio (a lever, m).
     bool torqueRateFromForceRate = false;
@@ -59,7 +61,7 @@ CapacityCommand::CapacityCommand(CLI::App& app) : options_(std::make_shared<Opti
     command_->add_flag("--torque", o.torque, "a torque about the object's centre of mass instead of a force");
     command_->add_option("--rate", o.rate, "ramp rate, N/s (N m/s with --torque), > 0 (default: 2 object weights per second; with --direction all "
                          "the forces' rate, the torques' scaled by the farthest goal's distance)");
-    command_->add_option("--method", o.method, "ramp (default) or bisection (constant loads, --hold s each)");
+    command_->add_option("--method", o.method, "ramp (default), bisection (constant loads, --hold s each) or compliance (predicted by the grasp's compliance model from full contact at the load's start; docs/capacity.md)");
     command_->add_option("--accuracy", o.accuracy, "integrator relative accuracy in (0, 1) (default: the scenario's)");
     command_->add_option("--max-duration", o.maxDuration, "ramp: longest ramp, s (default 4)");
     command_->add_option("--hold", o.hold, "bisection: how long each constant load is held, s (default 1)");
@@ -112,6 +114,14 @@ std::vector<capacity::GraspCapacityRequest> makeRequests(const std::string& dire
     return requests;
 }
 
+// The request's rate as given, except a torque's with --direction all: scaled from the forces'.
+double findRate(const scenario::Scenario& scenario, bool torqueRateFromForceRate, const capacity::GraspCapacityRequest& r) {
+    if (r.torque && r.rate > 0 && torqueRateFromForceRate) {
+        return r.rate * capacity::findDefaultRate(scenario, true) / capacity::findDefaultRate(scenario, false);
+    }
+    return r.rate;
+}
+
 void prepareFolder(const std::string& folder) {
     std::error_code ec;
     std::filesystem::create_directories(folder, ec);
@@ -141,10 +151,12 @@ CapacityCommand::Plan CapacityCommand::makePlan() const {
     }
     plan.simulation.approx.staticFrictionLimits = o.limitsFriction == "static";
     plan.simulation.approx.limitModel = grasp::parseFrictionLimitModel(o.limits, "--limits");
-    if (o.method != "ramp" && o.method != "bisection") {
-        throw InputError("--method: value '" + o.method + "' is not accepted; use ramp or bisection");
+    if (o.method != "ramp" && o.method != "bisection" && o.method != "compliance") {
+        throw InputError("--method: value '" + o.method + "' is not accepted; use ramp, bisection or compliance");
     }
     plan.bisection = o.method == "bisection";
+    plan.compliance = o.method == "compliance";
+    if (plan.compliance && !o.out.empty()) throw InputError("--out: --method compliance writes no files; leave --out out");
     const double rate = parsePositive(o.rate, "--rate", "the rate", 0);
     const double maxDuration = parsePositive(o.maxDuration, "--max-duration", "the ramp's duration (s)", 4);
     plan.hold = parsePositive(o.hold, "--hold", "the hold (s)", 1);
@@ -167,12 +179,18 @@ int CapacityCommand::run() const {
     simulation::checkApproxAttach(scenario, plan.simulation);
     for (const capacity::GraspCapacityRequest& r : plan.requests) capacity::checkLoadResistible(scenario, r);
     simulation::checkScenarioSetup(scenario, plan.simulation);  // before the folder exists
+    if (plan.compliance) {
+        std::vector<capacity::GraspCapacityRequest> requests = plan.requests;
+        for (capacity::GraspCapacityRequest& r : requests) r.rate = findRate(scenario, plan.torqueRateFromForceRate, r);
+        for (const capacity::CompliancePrediction& p : capacity::predictGraspCapacities(scenario, plan.simulation, requests, {})) {
+            std::cout << scenario.name << " " << capacity::describePrediction(p) << "\n";
+        }
+        return 0;
+    }
     if (!o.out.empty()) prepareFolder(o.out);
     std::vector<capacity::GraspCapacity> measurements;
     for (capacity::GraspCapacityRequest r : plan.requests) {
-        if (r.torque && r.rate > 0 && plan.torqueRateFromForceRate) {
-            r.rate *= capacity::findDefaultRate(scenario, true) / capacity::findDefaultRate(scenario, false);
-        }
+        r.rate = findRate(scenario, plan.torqueRateFromForceRate, r);
         if (plan.bisection) {
             const double rate = r.rate > 0 ? r.rate : capacity::findDefaultRate(scenario, r.torque);
             const double guess = plan.guess > 0 ? plan.guess : rate;

@@ -31,6 +31,7 @@ TEST_F(CapacityCommand, BadInputIsOneLineAndWritesNothing) {
     expectRejected("--rate=-3", "--rate");
     expectRejected("--rate inf", "--rate");
     expectRejected("--method guess", "--method");
+    expectRejected("--method compliance", "--out");  // it writes no files
     expectRejected("--mode half", "--mode");
     // About the line through the phone's two goals, R_GO (p_index - p_thumb) normalized (the
     // scenario's goals and orientation; grasp_capacity_test derives it in code): nothing resists.

@@ -1,0 +1,106 @@
+#pragma once
+/// @file
+/// A compliance model of a grasp's holding capacity: how a load on the object is shared by the
+/// contacts while they stick, and the load at which the grasp gives way (issue 17, research step).
+///
+/// Model (quasi-static, small displacements, the fingers' bases fixed to the palm). Each contact i
+/// (point C_i, inward unit normal n_i, force f_i on the object, all in G) is a chain of springs:
+/// the finger's Cartesian compliance at C_i, C_f,i = J_i K_q^-1 J_i^T (m/N, from its joint
+/// stiffnesses), in series with the contact's own compliance n n^T / k_n + (1 - n n^T) / k_t
+/// (k_n the normal stiffness linearized from Hertz at the present depth, k_t a tangential one).
+/// A small object displacement delta = [dp ; theta] (about O's origin; force rows first inside
+/// this file's solver) moves C_i's material point by u_i = dp + theta x r_i and changes
+///
+///     sticking:  df_i = -K_i u_i,   K_i = (C_f,i + n n^T / k_n + (1 - n n^T) / k_t)^-1
+///     sliding:   df_i = -a_i (n_i . u_i) / (1 / k_n + n_i^T C_f,i a_i),  a_i = n_i + mu t_i
+///                (friction at the cone's edge along the fixed unit tangent t_i; only the
+///                normal spring resists)
+///     open:      f_i = 0.
+///
+/// A load s d (d a unit force or a unit torque about O's origin) is balanced when
+/// sum_i D_i K_i D_i^T delta = d s (D_i = [I ; r_i^], the contact's wrench map). The solver
+/// follows the load piecewise linearly: in each piece it solves for d delta / ds, finds the next
+/// event (a sticking contact reaching its friction cone |f_t| = mu f_n: it slides from then on
+/// with its friction along the tangential force it had; or a contact's normal force reaching
+/// zero: it opens), and goes on with the new states. The grasp can carry no more when the load
+/// direction leaves the range of the stiffness matrix (the remaining contacts let the object move
+/// freely along it): that load is the ultimate capacity.
+///
+/// Limits of the model: the contacts' geometry is frozen (small displacements); a sliding contact
+/// never sticks again and keeps its friction direction; the regularized friction of full contact,
+/// which creeps under any tangential load, is replaced by a spring k_t; no inertia.
+
+#include "graspsim/grasp/grasp_contact.h"
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace graspsim::grasp {
+
+/// One contact of the compliance model, at the load's start.
+struct CompliantContact {
+    Eigen::Vector3d p_GC = Eigen::Vector3d::Zero();  ///< contact point from G's origin, in G (m)
+    Eigen::Vector3d n_G = Eigen::Vector3d::UnitZ();  ///< unit normal into the object, in G
+    /// Force of the finger on the object at the load's start, in G (N): normal and friction parts.
+    Eigen::Vector3d force_G = Eigen::Vector3d::Zero();
+    double normalStiffness = 0;      ///< k_n (N/m), > 0: the contact's own normal stiffness
+    /// k_t (N/m), > 0; +infinity for a contact that does not give tangentially.
+    double tangentialStiffness = 0;
+    /// The finger's Cartesian compliance at C (m/N), in G: symmetric positive semi-definite; zero
+    /// for a rigid finger (or a contact on the palm).
+    Eigen::Matrix3d fingerCompliance_G = Eigen::Matrix3d::Zero();
+};
+
+/// What the model does at each contact.
+enum class CompliantContactState { Sticking, Sliding, Open };
+
+/// A contact changing state, at a load.
+struct CompliantCapacityEvent {
+    double load = 0;  ///< N or N m
+    int contact = -1;  ///< index in the contact list
+    CompliantContactState state = CompliantContactState::Sticking;  ///< the new state
+};
+
+/// Options of calcCompliantCapacity.
+struct CompliantCapacityOptions {
+    double mu = 0.7;              ///< friction coefficient of every contact (>= 0)
+    double slipDistance = 2e-3;   ///< m: the displacement that counts as slip onset (the ramp's)
+    double maxLoad = 1e3;         ///< N or N m: the model is followed this far at most
+};
+
+/// The model's answer along one load direction. Loads in N (force) or N m (torque); +infinity
+/// where not reached up to maxLoad.
+struct CompliantCapacity {
+    /// The first contact reaches its friction cone.
+    double firstSlip = 0;
+    /// The largest displacement of a contact point's material point reaches slipDistance (the
+    /// figure comparable to the ramp's slip onset, which measures at the grasp goals).
+    double onset = 0;
+    /// The grasp can carry no more along the direction.
+    double ultimate = 0;
+    /// Every change of a contact's state, in load order.
+    std::vector<CompliantCapacityEvent> events;
+    /// The contact forces on the object at the ultimate load (or at maxLoad), in G (N).
+    std::vector<Eigen::Vector3d> forces_G;
+};
+
+/// The sticking stiffness K = (C_f + n n^T / k_n + (1 - n n^T) / k_t)^-1 of a contact (N/m, in G).
+/// @throws graspsim::InputError for a non-positive stiffness or a normal that is not unit.
+Eigen::Matrix3d calcStickingStiffness(const CompliantContact& contact);
+
+/// The sliding stiffness a n^T / (1 / k_n + n^T C_f a), a = n + mu t (N/m, in G), of a contact
+/// whose friction mu f_n acts along the unit tangent `tangent` (file comment).
+Eigen::Matrix3d calcSlidingStiffness(const CompliantContact& contact, const Eigen::Vector3d& tangent, double mu);
+
+/// Follows a load `direction_G` = [torque ; force] (Simbody's order, rotation first; exactly one
+/// of the two parts non-zero and unit), applied at or about `p_GO` (m, in G; the object's centre
+/// of mass), until the grasp gives way (file comment). The contacts' start forces already balance
+/// the loads present before (the object's weight).
+/// @throws graspsim::InputError for invalid contacts, a direction that is not one unit force or one
+///         unit torque, or negative options.
+CompliantCapacity calcCompliantCapacity(const std::vector<CompliantContact>& contacts, const Eigen::Vector3d& p_GO,
+                                        const Eigen::Matrix<double, 6, 1>& direction_G,
+                                        const CompliantCapacityOptions& options);
+
+}  // namespace graspsim::grasp

@@ -1,0 +1,163 @@
+#include "graspsim/grasp/compliant_grasp_capacity.h"
+
+#include "graspsim/error.h"
+#include "graspsim/grasp/friction_limits.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+namespace graspsim::grasp {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+using Vector6 = Eigen::Matrix<double, 6, 1>;
+
+CompliantContact makeContact(const Eigen::Vector3d& p, const Eigen::Vector3d& n, double normalForce, double kn,
+                             double fingerCompliance) {
+    CompliantContact c;
+    c.p_GC = p;
+    c.n_G = n.normalized();
+    c.force_G = normalForce * c.n_G;
+    c.normalStiffness = kn;
+    c.tangentialStiffness = 2.0 / 3.0 * kn;
+    c.fingerCompliance_G = fingerCompliance * Eigen::Matrix3d::Identity();
+    return c;
+}
+
+Vector6 force(const Eigen::Vector3d& f) {
+    Vector6 w = Vector6::Zero();
+    w.tail<3>() = f;
+    return w;
+}
+
+Vector6 torque(const Eigen::Vector3d& t) {
+    Vector6 w = Vector6::Zero();
+    w.head<3>() = t;
+    return w;
+}
+
+// Two fingers squeeze the object along x from (-d, 0, 0) and (d, 0, 0), each pressing with N.
+std::vector<CompliantContact> makePinch(double N, double kA, double kB, double cA, double cB) {
+    const double d = 0.02;
+    return {makeContact({-d, 0, 0}, {1, 0, 0}, N, kA, cA), makeContact({d, 0, 0}, {-1, 0, 0}, N, kB, cB)};
+}
+
+TEST(CompliantGraspCapacity, PinchCarriesTwiceMuNAcrossItsAxis) {
+    for (double mu : {0.3, 0.9}) {
+        for (double N : {2.0, 10.0}) {
+            CompliantCapacityOptions options;
+            options.mu = mu;
+            // Unequal fingers: still equal shares, since the moment about z of a force at the centre
+            // must vanish (two point contacts are statically determinate across the axis).
+            const auto pinch = makePinch(N, 3000, 5000, 2e-4, 5e-4);
+            for (const Eigen::Vector3d& e : {Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(0, 0, -1)}) {
+                const CompliantCapacity c = calcCompliantCapacity(pinch, Eigen::Vector3d::Zero(), force(e), options);
+                EXPECT_NEAR(c.ultimate, 2 * mu * N, 1e-9 * N) << "mu " << mu << " N " << N;
+                EXPECT_NEAR(c.firstSlip, c.ultimate, 1e-9 * N);
+            }
+        }
+    }
+}
+
+TEST(CompliantGraspCapacity, EqualPinchFingersSlideTogether) {
+    CompliantCapacityOptions options;
+    options.mu = 0.6;
+    const auto pinch = makePinch(5, 4000, 4000, 3e-4, 3e-4);
+    const CompliantCapacity c = calcCompliantCapacity(pinch, Eigen::Vector3d::Zero(), force({0, -1, 0}), options);
+    EXPECT_NEAR(c.firstSlip, 2 * 0.6 * 5, 1e-9);
+    EXPECT_NEAR(c.ultimate, 2 * 0.6 * 5, 1e-9);
+}
+
+// Along the pinch axis the load is taken by the two fingers' normal springs in series with their
+// arms: the finger it pulls away from unloads by k_A / (k_A + k_B) of the load and lets go at
+// N (k_A + k_B) / k_A; the object moves F / (k_A + k_B) until then.
+TEST(CompliantGraspCapacity, PinchAxisLoadUnloadsOneFinger) {
+    const double N = 5, knA = 3000, knB = 6000, cA = 2e-4, cB = 1e-4;
+    const double kA = 1 / (1 / knA + cA), kB = 1 / (1 / knB + cB);
+    CompliantCapacityOptions options;
+    options.mu = 0.7;
+    options.slipDistance = 0.5e-3;
+    const CompliantCapacity c =
+        calcCompliantCapacity(makePinch(N, knA, knB, cA, cB), Eigen::Vector3d::Zero(), force({1, 0, 0}), options);
+    ASSERT_FALSE(c.events.empty());
+    EXPECT_EQ(c.events.front().contact, 0);
+    EXPECT_EQ(c.events.front().state, CompliantContactState::Open);
+    EXPECT_NEAR(c.events.front().load, N * (kA + kB) / kA, 1e-9);
+    EXPECT_NEAR(c.onset, options.slipDistance * (kA + kB), 1e-9);
+    // After the separation finger B alone pushes back: no friction limit is reached along x.
+    EXPECT_TRUE(std::isinf(c.ultimate));
+}
+
+TEST(CompliantGraspCapacity, NoTorqueAboutThePinchAxis) {
+    CompliantCapacityOptions options;
+    const CompliantCapacity c =
+        calcCompliantCapacity(makePinch(5, 4000, 4000, 3e-4, 3e-4), Eigen::Vector3d::Zero(), torque({1, 0, 0}), options);
+    EXPECT_EQ(c.ultimate, 0);
+}
+
+// A ring of contacts in the xz-plane, pressing toward its centre, opposite contacts alike (so the
+// grasp is symmetric under the inversion r -> -r and a load at the centre only translates or turns
+// it). A load along the ring's axis y, or a torque about it, is tangent at every contact: the normal
+// forces cannot change and each contact ends sliding along the load, so the compliance model must
+// give friction_limits' per-axis limit exactly (mu sum N_i and mu R sum N_i), whatever the
+// stiffness; the first slip comes when the equal shares reach the weakest contact's mu N_min.
+TEST(CompliantGraspCapacity, RingAlongItsAxisAgreesWithFrictionLimits) {
+    const double R = 0.04, mu = 0.8;
+    const double forces[] = {2, 5, 3.5};
+    const double compliances[] = {0, 5e-4};  // rigid fingers and soft ones
+    for (double compliance : compliances) {
+        std::vector<CompliantContact> ring;
+        std::vector<GraspContact> plain;
+        for (int k = 0; k < 6; ++k) {
+            const double angle = 2 * kPi * k / 6;
+            const Eigen::Vector3d p(R * std::cos(angle), 0, R * std::sin(angle));
+            ring.push_back(makeContact(p, -p, forces[k % 3], 5000, compliance));
+            plain.push_back(GraspContact{p, -p.normalized(), forces[k % 3], Eigen::Vector3d::Zero()});
+        }
+        const auto limits = calcContactGeometryLimits(plain, mu, Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero());
+        CompliantCapacityOptions options;
+        options.mu = mu;
+        const CompliantCapacity along = calcCompliantCapacity(ring, Eigen::Vector3d::Zero(), force({0, 1, 0}), options);
+        EXPECT_NEAR(along.ultimate, limits[4], 1e-9);
+        EXPECT_NEAR(along.ultimate, mu * 2 * (2 + 5 + 3.5), 1e-9);
+        EXPECT_NEAR(along.firstSlip, 6 * mu * 2, 1e-9);
+        const CompliantCapacity about = calcCompliantCapacity(ring, Eigen::Vector3d::Zero(), torque({0, -1, 0}), options);
+        EXPECT_NEAR(about.ultimate, limits[1], 1e-9);
+        EXPECT_NEAR(about.ultimate, mu * R * 2 * (2 + 5 + 3.5), 1e-9);
+    }
+}
+
+// Closed form for a symmetric grasp with tangential give: the ring's translation along its axis is
+// F / (n k) with k = 1 / (c_f + 1 / k_t) per contact while all stick.
+TEST(CompliantGraspCapacity, RingOnsetFromSeriesStiffness) {
+    const double R = 0.04, N = 4, kn = 6000, cf = 4e-4;
+    std::vector<CompliantContact> ring;
+    for (int k = 0; k < 4; ++k) {
+        const double angle = 2 * kPi * k / 4;
+        const Eigen::Vector3d p(R * std::cos(angle), 0, R * std::sin(angle));
+        ring.push_back(makeContact(p, -p, N, kn, cf));
+    }
+    CompliantCapacityOptions options;
+    options.mu = 0.9;
+    options.slipDistance = 1e-3;
+    const double k = 1 / (cf + 1 / (2.0 / 3.0 * kn));
+    const CompliantCapacity c = calcCompliantCapacity(ring, Eigen::Vector3d::Zero(), force({0, -1, 0}), options);
+    EXPECT_NEAR(c.onset, 4 * k * options.slipDistance, 1e-9);  // 6.0 N, below 4 mu N = 14.4 N
+    EXPECT_NEAR(c.ultimate, 4 * 0.9 * N, 1e-9);
+}
+
+TEST(CompliantGraspCapacity, RejectsBadInput) {
+    auto pinch = makePinch(5, 4000, 4000, 0, 0);
+    CompliantCapacityOptions options;
+    EXPECT_THROW(calcCompliantCapacity(pinch, Eigen::Vector3d::Zero(), force({0, 2, 0}), options), InputError);
+    Vector6 both = force({0, 1, 0});
+    both[0] = 1;
+    EXPECT_THROW(calcCompliantCapacity(pinch, Eigen::Vector3d::Zero(), both, options), InputError);
+    pinch[1].normalStiffness = 0;
+    EXPECT_THROW(calcCompliantCapacity(pinch, Eigen::Vector3d::Zero(), force({0, 1, 0}), options), InputError);
+}
+
+}  // namespace
+}  // namespace graspsim::grasp
