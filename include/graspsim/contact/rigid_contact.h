@@ -97,6 +97,10 @@ public:
     /// The exact signed gap between the surfaces (m); negative when overlapping. Needs
     /// Stage::Position; valid whether or not the contact is enabled.
     SimTK::Real getPerr(const SimTK::State& state) const override;
+    /// Whether the gap is at most ptol (m), as getPerr() <= ptol. Pairs whose bounding spheres
+    /// (ContactShape::calcBoundingRadius()) are more than ptol apart are answered without the
+    /// exact gap search.
+    bool isProximal(const SimTK::State& state, SimTK::Real ptol) const override;
     /// Normal separation speed n . (v_B(P) - v_A(P)) (m/s); needs Stage::Velocity.
     SimTK::Real getVerr(const SimTK::State& state) const override;
     /// Normal relative acceleration (m/s^2) with the frozen-frame terms of
@@ -120,6 +124,7 @@ private:
     ContactParameters m_parameters;
     RigidContactOptions m_options;
     SimTK::Constraint::Custom m_constraint;
+    double m_boundingRadii = 0;  // sum of the two shapes' bounding radii (m)
 };
 
 }  // namespace graspsim::contact
