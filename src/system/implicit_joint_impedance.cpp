@@ -23,10 +23,12 @@ public:
 
     void realizeTopology(State& state) const override {
         stepSizeIndex_ = matter_.allocateDiscreteVariable(state, SimTK::Stage::Dynamics, new SimTK::Value<double>(0.0));
+        // Stage::Acceleration: updateConstraintForces() invalidates Stage::Dynamics itself unless
+        // it completes the state's Dynamics realization (see there).
         constraintForcesIndex_ =
-            matter_.allocateDiscreteVariable(state, SimTK::Stage::Dynamics, new SimTK::Value<Vector>(Vector()));
+            matter_.allocateDiscreteVariable(state, SimTK::Stage::Acceleration, new SimTK::Value<Vector>(Vector()));
         constraintForcesTimeIndex_ =
-            matter_.allocateDiscreteVariable(state, SimTK::Stage::Dynamics, new SimTK::Value<double>(SimTK::NaN));
+            matter_.allocateDiscreteVariable(state, SimTK::Stage::Acceleration, new SimTK::Value<double>(SimTK::NaN));
     }
 
     double getStepSize(const State& s) const {
@@ -62,6 +64,22 @@ public:
     bool dependsOnlyOnPositions() const override { return false; }
 
     Vector calcCorrection(const State& s) const {
+        if (getStepSize(s) == 0) return Vector(s.getNU(), 0.0);
+        return calcCorrection(s, calcGeneralizedForce(s));
+    }
+
+    // Adds the correction to the mobility forces of a state realized to Stage::Dynamics without
+    // this element (isStale()), with F read from that realization: no force element is
+    // evaluated again.
+    void addCorrectionToRealizedForces(const State& s) const {
+        const SimTK::MultibodySystem& system = SimTK::MultibodySystem::downcast(matter_.getSystem());
+        const Vector F = calcResidualForce(s, system.getMobilityForces(s, SimTK::Stage::Dynamics),
+                                           system.getRigidBodyForces(s, SimTK::Stage::Dynamics));
+        system.updMobilityForces(s, SimTK::Stage::Dynamics) += calcCorrection(s, F);
+    }
+
+    // X for the generalized force F of every other element (see the header).
+    Vector calcCorrection(const State& s, const Vector& F) const {
         const double h = getStepSize(s);
         const int nu = s.getNU();
         Vector X(nu, 0.0);
@@ -69,7 +87,7 @@ public:
         Vector K(nu, 0.0), C(nu, 0.0);
         addImpedance(s, K, C);
         // Right-hand side of (1): F - h K u, F including last step's constraint forces.
-        Vector rhs = calcGeneralizedForce(s);
+        Vector rhs = F;
         const Vector& fc = getConstraintForces(s);
         if (fc.size() == nu) rhs += fc;
         const Vector& u = s.getU();
@@ -125,6 +143,12 @@ private:
             addTo(bodies, elementBodies);
             addTo(mobility, elementMobility);
         }
+        return calcResidualForce(s, mobility, bodies);
+    }
+
+    // -(residual of M udot = f + J^T F_bodies at udot = 0): the applied generalized force minus
+    // the Coriolis and gyroscopic forces.
+    Vector calcResidualForce(const State& s, const Vector& mobility, const SimTK::Vector_<SimTK::SpatialVec>& bodies) const {
         Vector residual;
         matter_.calcResidualForceIgnoringConstraints(s, mobility, bodies, Vector(s.getNU(), 0.0), residual);
         residual *= -1;
@@ -182,13 +206,20 @@ void ImplicitJointImpedance::setStepSize(SimTK::State& state, double h) const {
 double ImplicitJointImpedance::getStepSize(const SimTK::State& state) const { return getImpl().getStepSize(state); }
 
 void ImplicitJointImpedance::updateConstraintForces(SimTK::State& state) const {
-    const SimTK::SimbodyMatterSubsystem& matter = getImpl().getMatter();
+    const Implementation& impedance = getImpl();
+    // The stepper's own end-of-step realization of Stage::Dynamics left this element out (a
+    // stale state) and is the next step's start: completing it with the correction spares the
+    // next step a second evaluation of every force element. Any other state is invalidated.
+    const bool complete = state.getSystemStage() >= SimTK::Stage::Dynamics && impedance.isStale(state) && impedance.getStepSize(state) != 0;
+    const SimTK::SimbodyMatterSubsystem& matter = impedance.getMatter();
     Vector GtLambda;
     if (state.getNMultipliers() > 0) matter.multiplyByGTranspose(state, state.updMultipliers(), GtLambda);
     else GtLambda.resize(state.getNU()), GtLambda = 0;
     GtLambda *= -1;
-    getImpl().updConstraintForces(state) = GtLambda;
-    getImpl().setConstraintForcesTime(state, state.getTime());
+    impedance.updConstraintForces(state) = GtLambda;
+    impedance.setConstraintForcesTime(state, state.getTime());
+    if (complete) impedance.addCorrectionToRealizedForces(state);
+    else state.invalidateAllCacheAtOrAbove(SimTK::Stage::Dynamics);
 }
 
 SimTK::Vector ImplicitJointImpedance::calcCorrection(const SimTK::State& state) const {
