@@ -29,6 +29,7 @@ public:
             matter_.allocateDiscreteVariable(state, SimTK::Stage::Acceleration, new SimTK::Value<Vector>(Vector()));
         constraintForcesTimeIndex_ =
             matter_.allocateDiscreteVariable(state, SimTK::Stage::Acceleration, new SimTK::Value<double>(SimTK::NaN));
+        operatorIndex_ = matter_.allocateLazyCacheEntry(state, SimTK::Stage::Position, new SimTK::Value<StepOperator>());
     }
 
     double getStepSize(const State& s) const {
@@ -84,30 +85,57 @@ public:
         const int nu = s.getNU();
         Vector X(nu, 0.0);
         if (h == 0) return X;
-        Vector K(nu, 0.0), C(nu, 0.0);
-        addImpedance(s, K, C);
+        const StepOperator& op = findStepOperator(s, h);
         // Right-hand side of (1): F - h K u, F including last step's constraint forces.
         Vector rhs = F;
         const Vector& fc = getConstraintForces(s);
         if (fc.size() == nu) rhs += fc;
         const Vector& u = s.getU();
-        SimTK::Matrix A;
-        matter_.calcM(s, A);
         for (int i = 0; i < nu; ++i) {
-            if (K[i] == 0 && C[i] == 0) continue;
-            rhs[i] -= h * K[i] * u[i];
-            A(i, i) += h * C[i] + h * h * K[i];
+            if (op.K[i] == 0 && op.C[i] == 0) continue;
+            rhs[i] -= h * op.K[i] * u[i];
         }
         Vector w;
-        SimTK::FactorLU(A).solve(rhs, w);
+        op.lu.solve(rhs, w);
         for (int i = 0; i < nu; ++i) {
-            if (K[i] == 0 && C[i] == 0) continue;
-            X[i] = -h * K[i] * u[i] - (h * C[i] + h * h * K[i]) * w[i];
+            if (op.K[i] == 0 && op.C[i] == 0) continue;
+            X[i] = -h * op.K[i] * u[i] - (h * op.C[i] + h * h * op.K[i]) * w[i];
         }
         return X;
     }
 
 private:
+    // M + h C + h^2 K, factored, and the K and C it holds: functions of q and h alone.
+    struct StepOperator {
+        double h = SimTK::NaN;
+        Vector K, C;
+        SimTK::FactorLU lu;
+    };
+
+    // A step may need the correction twice at one pose (completing the stepper's realization, then
+    // again after an impact or an IK update changed u or the targets); the mass matrix and its
+    // factorization are most of its cost.
+    const StepOperator& findStepOperator(const State& s, double h) const {
+        StepOperator& op = SimTK::Value<StepOperator>::updDowncast(matter_.updCacheEntry(s, operatorIndex_)).upd();
+        if (matter_.isCacheValueRealized(s, operatorIndex_) && op.h == h) return op;
+        const int nu = s.getNU();
+        op.h = h;
+        op.K.resize(nu);
+        op.K = 0;
+        op.C.resize(nu);
+        op.C = 0;
+        addImpedance(s, op.K, op.C);
+        SimTK::Matrix A;
+        matter_.calcM(s, A);
+        for (int i = 0; i < nu; ++i) {
+            if (op.K[i] == 0 && op.C[i] == 0) continue;
+            A(i, i) += h * op.C[i] + h * h * op.K[i];
+        }
+        op.lu.factor(A);
+        matter_.markCacheValueRealized(s, operatorIndex_);
+        return op;
+    }
+
     // Diagonal joint-space K and C: each joint's constant part plus its stop's linearization
     // (stop force -k x (1 + d u) for a violation x: -dtau/dq = k (1 + d u) ~ k, -dtau/du = k d x).
     void addImpedance(const State& s, Vector& K, Vector& C) const {
@@ -172,6 +200,7 @@ private:
     std::vector<JointImpedance> joints_;
     SimTK::ForceIndex self_;
     mutable SimTK::DiscreteVariableIndex stepSizeIndex_, constraintForcesIndex_, constraintForcesTimeIndex_;
+    mutable SimTK::CacheEntryIndex operatorIndex_;
 };
 
 namespace {
