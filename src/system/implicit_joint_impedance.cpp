@@ -16,7 +16,14 @@ class ImplicitJointImpedance::Implementation : public SimTK::Force::Custom::Impl
 public:
     Implementation(const SimTK::GeneralForceSubsystem& forces, const SimTK::SimbodyMatterSubsystem& matter,
                    std::vector<JointImpedance> joints)
-        : forces_(forces), matter_(matter), joints_(std::move(joints)) {}
+        : forces_(forces), matter_(matter), joints_(std::move(joints)) {
+        for (std::size_t k = 0; k < joints_.size(); ++k) {
+            if (joints_[k].stop.isEmptyHandle()) continue;
+            const std::size_t f = std::size_t(int(joints_[k].stop.getForceIndex()));
+            if (stopJoints_.size() <= f) stopJoints_.resize(f + 1, -1);
+            stopJoints_[f] = int(k);
+        }
+    }
 
     void setSelf(SimTK::ForceIndex self) { self_ = self; }
     const SimTK::SimbodyMatterSubsystem& getMatter() const { return matter_; }
@@ -165,13 +172,24 @@ private:
         SimTK::Vector_<SimTK::Vec3> elementParticles;
         Vector elementMobility;
         for (SimTK::ForceIndex f(0); f < forces_.getNumForces(); ++f) {
-            if (f == self_ || forces_.isForceDisabled(s, f)) continue;
+            if (f == self_ || forces_.isForceDisabled(s, f) || isIdleStop(s, f)) continue;
             // calcForceContribution() zeroes its arrays: sum element by element.
             forces_.getForce(f).calcForceContribution(s, elementBodies, elementParticles, elementMobility);
             addTo(bodies, elementBodies);
             addTo(mobility, elementMobility);
         }
         return calcResidualForce(s, mobility, bodies);
+    }
+
+    // A listed joint's stop between its bounds adds nothing (Force::MobilityLinearStop's own test),
+    // and leaving its zero arrays out of the sums changes no bit: they start at +0 and never
+    // become -0. A third of a hand's force elements are stops, mostly idle.
+    bool isIdleStop(const State& s, SimTK::ForceIndex f) const {
+        if (std::size_t(int(f)) >= stopJoints_.size() || stopJoints_[std::size_t(int(f))] < 0) return false;
+        const JointImpedance& j = joints_[std::size_t(stopJoints_[std::size_t(int(f))])];
+        if (j.stop.getStiffness(s) == 0) return true;
+        const double q = matter_.getMobilizedBody(j.mobod).getOneQ(s, 0);
+        return !(q > j.stop.getUpperBound(s)) && !(q < j.stop.getLowerBound(s));
     }
 
     // -(residual of M udot = f + J^T F_bodies at udot = 0): the applied generalized force minus
@@ -198,6 +216,7 @@ private:
     const SimTK::GeneralForceSubsystem& forces_;
     const SimTK::SimbodyMatterSubsystem& matter_;
     std::vector<JointImpedance> joints_;
+    std::vector<int> stopJoints_;  // by ForceIndex: the joint (index in joints_) whose stop it is, or -1
     SimTK::ForceIndex self_;
     mutable SimTK::DiscreteVariableIndex stepSizeIndex_, constraintForcesIndex_, constraintForcesTimeIndex_;
     mutable SimTK::CacheEntryIndex operatorIndex_;
