@@ -1,5 +1,6 @@
 #include "graspsim/contact/rigid_contact.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -14,6 +15,15 @@ namespace {
     std::ostringstream message;
     message << source << ": " << field << " (" << value << ") must be " << accepted;
     throw InputError(message.str());
+}
+
+// Distance (m) from point p_G to the solid box of half-lengths h centred on S's origin, posed
+// at X_GS; 0 inside.
+double findDistanceToBox(const SimTK::Transform& X_GS, const SimTK::Vec3& h, const SimTK::Vec3& p_G) {
+    const SimTK::Vec3 p_S = ~X_GS * p_G;
+    SimTK::Vec3 outside;
+    for (int i = 0; i < 3; ++i) outside[i] = std::max(0.0, std::abs(p_S[i]) - h[i]);
+    return outside.norm();
 }
 
 }  // namespace
@@ -95,6 +105,25 @@ SimTK::Real RigidContact::calcEffectiveCOR(const SimTK::State&, SimTK::Real defa
 
 SimTK::Real RigidContact::getPerr(const SimTK::State& state) const {
     return findGeometryInGround(state).separation;
+}
+
+// The stepper asks every pair at every step, and most are far apart: the bound costs a fraction
+// of the exact search. The slack keeps rounding in the bound from ever deciding a pair near ptol.
+bool RigidContact::isProximal(const SimTK::State& state, SimTK::Real ptol) const {
+    constexpr double kBoundSlack = 1e-6;  // m
+    if (findGapLowerBound(state) > ptol + kBoundSlack) return false;
+    return SimTK::UnilateralContact::isProximal(state, ptol);
+}
+
+// A box's rounded corners lie inside its half-lengths, and every shape inside its bounding sphere.
+double RigidContact::findGapLowerBound(const SimTK::State& state) const {
+    const SimTK::Transform X_GA = m_a.body.getBodyTransform(state) * m_a.X_BS;
+    const SimTK::Transform X_GB = m_b.body.getBodyTransform(state) * m_b.X_BS;
+    if (m_a.shape.type == ContactShape::Type::Box)
+        return findDistanceToBox(X_GA, m_a.shape.halfLengths, X_GB.p()) - m_b.shape.calcBoundingRadius();
+    if (m_b.shape.type == ContactShape::Type::Box)
+        return findDistanceToBox(X_GB, m_b.shape.halfLengths, X_GA.p()) - m_a.shape.calcBoundingRadius();
+    return (X_GB.p() - X_GA.p()).norm() - m_a.shape.calcBoundingRadius() - m_b.shape.calcBoundingRadius();
 }
 
 SimTK::Real RigidContact::getVerr(const SimTK::State& state) const {

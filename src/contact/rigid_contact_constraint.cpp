@@ -2,6 +2,7 @@
 
 #include "graspsim/error.h"
 
+#include <tuple>
 #include <utility>
 
 namespace graspsim::contact {
@@ -52,50 +53,80 @@ RigidContactGeometry RigidContactConstraint::findGeometry(const Transform& X_FA,
 }
 
 void RigidContactConstraint::realizeTopology(SimTK::State& state) const {
-    m_geometryIndex = getMatterSubsystem().allocateLazyCacheEntry(
-        state, SimTK::Stage::Position, new SimTK::Value<RigidContactGeometry>());
+    const SimTK::SimbodyMatterSubsystem& matter = getMatterSubsystem();
+    m_poseIndex = matter.allocateLazyCacheEntry(state, SimTK::Stage::Position, new SimTK::Value<PoseTerms>());
+    m_velocityIndex = matter.allocateLazyCacheEntry(state, SimTK::Stage::Velocity, new SimTK::Value<VelocityTerms>());
 }
 
-const RigidContactGeometry& RigidContactConstraint::findGeometryFromState(
-    const SimTK::State& state) const {
+// The stations re-expressed in A (R_AX p_X) are what Simbody's findStationVelocity(),
+// findStationAcceleration() and addInStationForce() compute first; keeping them, and their
+// expressions below, gives the same numbers.
+RigidContactConstraint::PoseTerms RigidContactConstraint::calcPoseTerms(const SimTK::State& state) const {
+    const Transform& X_AA = getBodyTransformFromState(state, m_bodyA);  // body A's frame in ancestor A
+    const Transform& X_AB = getBodyTransformFromState(state, m_bodyB);
+    PoseTerms pose;
+    pose.geometry = findGeometry(X_AA, X_AB);
+    std::tie(pose.tx, pose.ty) = findFrictionDirections(pose.geometry.n_F);
+    pose.r_A = X_AA.R() * (~X_AA * pose.geometry.p_F);
+    pose.r_B = X_AB.R() * (~X_AB * pose.geometry.p_F);
+    return pose;
+}
+
+RigidContactConstraint::VelocityTerms RigidContactConstraint::calcVelocityTerms(const SimTK::State& state) const {
+    const PoseTerms& pose = findPoseTerms(state);
+    const SpatialVec& V_A = getBodyVelocityFromState(state, m_bodyA);
+    const SpatialVec& V_B = getBodyVelocityFromState(state, m_bodyB);
+    const Vec3 v = (V_B[1] + (V_B[0] % pose.r_B)) - (V_A[1] + (V_A[0] % pose.r_A));
+    VelocityTerms terms;
+    terms.centripetal_A = V_A[0] % (V_A[0] % pose.r_A);  // % is not associative
+    terms.centripetal_B = V_B[0] % (V_B[0] % pose.r_B);
+    terms.coriolis = 2 * (V_A[0] % v);
+    return terms;
+}
+
+const RigidContactConstraint::PoseTerms& RigidContactConstraint::findPoseTerms(const SimTK::State& state) const {
     const SimTK::SimbodyMatterSubsystem& matter = getMatterSubsystem();
-    auto& cached = SimTK::Value<RigidContactGeometry>::updDowncast(matter.updCacheEntry(state, m_geometryIndex));
-    if (!matter.isCacheValueRealized(state, m_geometryIndex)) {
-        cached.upd() = findGeometry(getBodyTransformFromState(state, m_bodyA),
-                                    getBodyTransformFromState(state, m_bodyB));
-        matter.markCacheValueRealized(state, m_geometryIndex);
+    auto& cached = SimTK::Value<PoseTerms>::updDowncast(matter.updCacheEntry(state, m_poseIndex));
+    if (!matter.isCacheValueRealized(state, m_poseIndex)) {
+        cached.upd() = calcPoseTerms(state);
+        matter.markCacheValueRealized(state, m_poseIndex);
     }
     return cached.get();
 }
 
-Vec3 RigidContactConstraint::findSlipVelocity(const SimTK::State& state,
-                                              const Array_<SpatialVec, ConstrainedBodyIndex>& V_AB,
-                                              const Vec3& p) const {
-    const Vec3 p_A = ~getBodyTransformFromState(state, m_bodyA) * p;  // station on A at P
-    const Vec3 p_B = ~getBodyTransformFromState(state, m_bodyB) * p;  // station on B at P
-    return findStationVelocity(state, V_AB, m_bodyB, p_B) -
-           findStationVelocity(state, V_AB, m_bodyA, p_A);
+const RigidContactConstraint::VelocityTerms& RigidContactConstraint::findVelocityTerms(const SimTK::State& state) const {
+    const SimTK::SimbodyMatterSubsystem& matter = getMatterSubsystem();
+    auto& cached = SimTK::Value<VelocityTerms>::updDowncast(matter.updCacheEntry(state, m_velocityIndex));
+    if (!matter.isCacheValueRealized(state, m_velocityIndex)) {
+        cached.upd() = calcVelocityTerms(state);
+        matter.markCacheValueRealized(state, m_velocityIndex);
+    }
+    return cached.get();
 }
 
-Vec3 RigidContactConstraint::findRelativeAcceleration(
-    const SimTK::State& state, const Array_<SpatialVec, ConstrainedBodyIndex>& A_AB,
-    const Vec3& p) const {
-    const Vec3 p_A = ~getBodyTransformFromState(state, m_bodyA) * p;
-    const Vec3 p_B = ~getBodyTransformFromState(state, m_bodyB) * p;
-    const Vec3 v = findStationVelocityFromState(state, m_bodyB, p_B) -
-                   findStationVelocityFromState(state, m_bodyA, p_A);
-    const Vec3& w_A = getBodyAngularVelocityFromState(state, m_bodyA);
-    return findStationAcceleration(state, A_AB, m_bodyB, p_B) -
-           findStationAcceleration(state, A_AB, m_bodyA, p_A) - 2 * (w_A % v);
+Vec3 RigidContactConstraint::findSlipVelocity(const PoseTerms& pose,
+                                              const Array_<SpatialVec, ConstrainedBodyIndex>& V_AB) const {
+    const SpatialVec& V_A = V_AB[m_bodyA];
+    const SpatialVec& V_B = V_AB[m_bodyB];
+    return (V_B[1] + (V_B[0] % pose.r_B)) - (V_A[1] + (V_A[0] % pose.r_A));
 }
 
-void RigidContactConstraint::addInContactForce(
-    const SimTK::State& state, const Vec3& p, const Vec3& f,
-    Array_<SpatialVec, ConstrainedBodyIndex>& bodyForcesInA) const {
-    const Vec3 p_A = ~getBodyTransformFromState(state, m_bodyA) * p;
-    const Vec3 p_B = ~getBodyTransformFromState(state, m_bodyB) * p;
-    addInStationForce(state, m_bodyB, p_B, f, bodyForcesInA);
-    addInStationForce(state, m_bodyA, p_A, -f, bodyForcesInA);
+Vec3 RigidContactConstraint::findRelativeAcceleration(const SimTK::State& state,
+                                                      const Array_<SpatialVec, ConstrainedBodyIndex>& A_AB) const {
+    const PoseTerms& pose = findPoseTerms(state);
+    const VelocityTerms& terms = findVelocityTerms(state);
+    const SpatialVec& A_A = A_AB[m_bodyA];
+    const SpatialVec& A_B = A_AB[m_bodyB];
+    const Vec3 a_B = A_B[1] + (A_B[0] % pose.r_B) + terms.centripetal_B;
+    const Vec3 a_A = A_A[1] + (A_A[0] % pose.r_A) + terms.centripetal_A;
+    return a_B - a_A - terms.coriolis;
+}
+
+void RigidContactConstraint::addInContactForce(const PoseTerms& pose, const Vec3& f,
+                                               Array_<SpatialVec, ConstrainedBodyIndex>& bodyForcesInA) const {
+    const Vec3 minusF = -f;
+    bodyForcesInA[m_bodyB] += SpatialVec(pose.r_B % f, f);
+    bodyForcesInA[m_bodyA] += SpatialVec(pose.r_A % minusF, minusF);
 }
 
 void RigidContactConstraint::calcPositionErrors(
@@ -107,52 +138,48 @@ void RigidContactConstraint::calcPositionErrors(
 void RigidContactConstraint::calcPositionDotErrors(
     const SimTK::State& state, const Array_<SpatialVec, ConstrainedBodyIndex>& V_AB,
     const Array_<SimTK::Real, SimTK::ConstrainedQIndex>&, Array_<SimTK::Real>& pverr) const {
-    const RigidContactGeometry& g = findGeometryFromState(state);
-    pverr[0] = ~g.n_F * findSlipVelocity(state, V_AB, g.p_F);
+    const PoseTerms& pose = findPoseTerms(state);
+    pverr[0] = ~pose.geometry.n_F * findSlipVelocity(pose, V_AB);
 }
 
 void RigidContactConstraint::calcPositionDotDotErrors(
     const SimTK::State& state, const Array_<SpatialVec, ConstrainedBodyIndex>& A_AB,
     const Array_<SimTK::Real, SimTK::ConstrainedQIndex>&, Array_<SimTK::Real>& paerr) const {
-    const RigidContactGeometry& g = findGeometryFromState(state);
-    paerr[0] = ~g.n_F * findRelativeAcceleration(state, A_AB, g.p_F);
+    paerr[0] = ~findPoseTerms(state).geometry.n_F * findRelativeAcceleration(state, A_AB);
 }
 
 void RigidContactConstraint::addInPositionConstraintForces(
     const SimTK::State& state, const Array_<SimTK::Real>& multipliers,
     Array_<SpatialVec, ConstrainedBodyIndex>& bodyForcesInA,
     Array_<SimTK::Real, SimTK::ConstrainedQIndex>&) const {
-    const RigidContactGeometry& g = findGeometryFromState(state);
-    addInContactForce(state, g.p_F, multipliers[0] * Vec3(g.n_F), bodyForcesInA);
+    const PoseTerms& pose = findPoseTerms(state);
+    addInContactForce(pose, multipliers[0] * Vec3(pose.geometry.n_F), bodyForcesInA);
 }
 
 void RigidContactConstraint::calcVelocityErrors(
     const SimTK::State& state, const Array_<SpatialVec, ConstrainedBodyIndex>& V_AB,
     const Array_<SimTK::Real, SimTK::ConstrainedUIndex>&, Array_<SimTK::Real>& verr) const {
-    const RigidContactGeometry& g = findGeometryFromState(state);
-    const auto [tx, ty] = findFrictionDirections(g.n_F);
-    const Vec3 v = findSlipVelocity(state, V_AB, g.p_F);
-    verr[0] = ~tx * v;
-    verr[1] = ~ty * v;
+    const PoseTerms& pose = findPoseTerms(state);
+    const Vec3 v = findSlipVelocity(pose, V_AB);
+    verr[0] = ~pose.tx * v;
+    verr[1] = ~pose.ty * v;
 }
 
 void RigidContactConstraint::calcVelocityDotErrors(
     const SimTK::State& state, const Array_<SpatialVec, ConstrainedBodyIndex>& A_AB,
     const Array_<SimTK::Real, SimTK::ConstrainedUIndex>&, Array_<SimTK::Real>& vaerr) const {
-    const RigidContactGeometry& g = findGeometryFromState(state);
-    const auto [tx, ty] = findFrictionDirections(g.n_F);
-    const Vec3 a = findRelativeAcceleration(state, A_AB, g.p_F);
-    vaerr[0] = ~tx * a;
-    vaerr[1] = ~ty * a;
+    const PoseTerms& pose = findPoseTerms(state);
+    const Vec3 a = findRelativeAcceleration(state, A_AB);
+    vaerr[0] = ~pose.tx * a;
+    vaerr[1] = ~pose.ty * a;
 }
 
 void RigidContactConstraint::addInVelocityConstraintForces(
     const SimTK::State& state, const Array_<SimTK::Real>& multipliers,
     Array_<SpatialVec, ConstrainedBodyIndex>& bodyForcesInA,
     Array_<SimTK::Real, SimTK::ConstrainedUIndex>&) const {
-    const RigidContactGeometry& g = findGeometryFromState(state);
-    const auto [tx, ty] = findFrictionDirections(g.n_F);
-    addInContactForce(state, g.p_F, multipliers[0] * tx + multipliers[1] * ty, bodyForcesInA);
+    const PoseTerms& pose = findPoseTerms(state);
+    addInContactForce(pose, multipliers[0] * pose.tx + multipliers[1] * pose.ty, bodyForcesInA);
 }
 
 }  // namespace graspsim::contact

@@ -75,6 +75,9 @@ public:
         targetsIndex_ = matter_.allocateDiscreteVariable(state, SimTK::Stage::Dynamics, new SimTK::Value<Vector>(initial));
         // Report: a ramp starts at the targets' present value, so it changes nothing computed at its start.
         rampIndex_ = matter_.allocateDiscreteVariable(state, SimTK::Stage::Report, new SimTK::Value<TargetRamp>());
+        // A function of q alone, yet every force evaluation (several per step for the rigid
+        // stepper and the implicit joint impedance) would recompute it.
+        holdingIndex_ = matter_.allocateLazyCacheEntry(state, SimTK::Stage::Position, new SimTK::Value<Vector>());
     }
 
     Vector getTargets(const State& s) const {
@@ -103,7 +106,7 @@ public:
     void calcForce(const State& s, SimTK::Vector_<SimTK::SpatialVec>&, SimTK::Vector_<SimTK::Vec3>&,
                    Vector& mobilityForces) const override {
         const Vector target = getTargets(s);
-        const Vector holding = calcGravityHoldingForces(s);
+        const Vector& holding = findGravityHoldingForces(s);
         for (std::size_t k = 0; k < jointBodies_.size(); ++k) {
             const SimTK::MobilizedBody& mobod = matter_.getMobilizedBody(jointBodies_[k]);
             const double q = mobod.getOneQ(s, 0), u = mobod.getOneU(s, 0);
@@ -116,6 +119,15 @@ public:
     SimTK::Real calcPotentialEnergy(const State&) const override { return 0; }
 
 private:
+    const Vector& findGravityHoldingForces(const State& s) const {
+        auto& cached = SimTK::Value<Vector>::updDowncast(matter_.updCacheEntry(s, holdingIndex_));
+        if (!matter_.isCacheValueRealized(s, holdingIndex_)) {
+            cached.upd() = calcGravityHoldingForces(s);
+            matter_.markCacheValueRealized(s, holdingIndex_);
+        }
+        return cached.get();
+    }
+
     // Generalized forces that cancel gravity on the weighed bodies: -J^T F_gravity.
     Vector calcGravityHoldingForces(const State& s) const {
         SimTK::Vector_<SimTK::SpatialVec> weights(matter_.getNumBodies(), SimTK::SpatialVec(SimTK::Vec3(0), SimTK::Vec3(0)));
@@ -138,6 +150,7 @@ private:
     std::vector<PdGains> gains_;
     std::vector<MobilizedBodyIndex> weighedBodies_;
     mutable SimTK::DiscreteVariableIndex targetsIndex_, rampIndex_;
+    mutable SimTK::CacheEntryIndex holdingIndex_;
 };
 
 JointPdController::JointPdController(system::MultibodyModel& model, const std::vector<ControlledJoint>& joints,

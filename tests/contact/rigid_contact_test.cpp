@@ -118,6 +118,21 @@ struct SqueezeScene {
     }
 };
 
+// isProximal() skips the exact gap search for pairs whose bounding spheres are apart (the box's
+// bounding radius is 0.5 m here); its answer must stay that of the exact gap at every distance.
+TEST(RigidContact, IsProximalAgreesWithTheExactGap) {
+    SqueezeScene scene(0);
+    SimTK::State state = scene.makeTouchingState();
+    const RigidContact& contact = scene.contact(scene.rightContact);
+    const double tolerance = 1e-5;  // m
+    for (double gap : {3.0, 0.6, 0.45, 0.01, 2e-5, 1e-5, 5e-6, 0.0, -1e-4}) {
+        scene.right.setOneQ(state, 0, SqueezeScene::kHalfX + SqueezeScene::kRadius + gap);
+        scene.system.realize(state, SimTK::Stage::Position);
+        EXPECT_NEAR(contact.getPerr(state), gap, 1e-12) << gap;
+        EXPECT_EQ(contact.isProximal(state, tolerance), contact.getPerr(state) <= tolerance) << gap;
+    }
+}
+
 struct SqueezeResult {
     double y = 0, vy = 0;                    // box centre height (m) and speed (m/s) at the end
     double maxOffAxis = 0;                   // largest |x|, |z| of the box centre (m)

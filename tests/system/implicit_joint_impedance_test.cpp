@@ -122,5 +122,35 @@ TEST(ImplicitJointImpedance, EnergyNeverRises) {
     }
 }
 
+// updateConstraintForces() on the stepper's end-of-step state adds the correction to that
+// realization instead of discarding it. Oracle: a fresh realization of the same state.
+TEST(ImplicitJointImpedance, CompletesTheStepperRealizationAsAFreshOneWould) {
+    ArmScene scene;
+    const SimTK::MultibodySystem& system = scene.model.getSystem();
+    SimTK::State initial = system.getDefaultState();
+    initial.updQ() = 0.2;
+    initial.updU() = 1.0;
+    scene.impedance.setStepSize(initial, 1e-3);
+    SimTK::SemiExplicitEulerTimeStepper stepper(system);
+    stepper.setImpulseSolverType(SimTK::SemiExplicitEulerTimeStepper::PGS);
+    stepper.initialize(initial);
+    SilencedStdout quiet;
+    stepper.stepTo(1e-3);
+    scene.impedance.updateConstraintForces(stepper.updState());
+    stepper.stepTo(2e-3);
+    SimTK::State& state = stepper.updState();
+    const SimTK::Vector without = system.getMobilityForces(state, SimTK::Stage::Dynamics);
+    scene.impedance.updateConstraintForces(state);
+    ASSERT_GE(state.getSystemStage(), SimTK::Stage::Dynamics);  // nothing left to realize
+    const SimTK::Vector completed = system.getMobilityForces(state, SimTK::Stage::Dynamics);
+    SimTK::State fresh = state;
+    fresh.invalidateAllCacheAtOrAbove(SimTK::Stage::Dynamics);
+    system.realize(fresh, SimTK::Stage::Dynamics);
+    const SimTK::Vector& expected = system.getMobilityForces(fresh, SimTK::Stage::Dynamics);
+    const double scale = SimTK::max(SimTK::abs(expected));
+    EXPECT_GT(maxDifference(completed, without), 1e-3 * scale);  // the correction is there
+    EXPECT_LE(maxDifference(completed, expected), 1e-12 * scale);
+}
+
 }  // namespace
 }  // namespace graspsim::system

@@ -97,6 +97,9 @@ public:
     /// The exact signed gap between the surfaces (m); negative when overlapping. Needs
     /// Stage::Position; valid whether or not the contact is enabled.
     SimTK::Real getPerr(const SimTK::State& state) const override;
+    /// Whether the gap is at most ptol (m), as getPerr() <= ptol. Pairs that a cheap lower bound
+    /// of the gap puts more than ptol apart are answered without the exact gap search.
+    bool isProximal(const SimTK::State& state, SimTK::Real ptol) const override;
     /// Normal separation speed n . (v_B(P) - v_A(P)) (m/s); needs Stage::Velocity.
     SimTK::Real getVerr(const SimTK::State& state) const override;
     /// Normal relative acceleration (m/s^2) with the frozen-frame terms of
@@ -112,6 +115,9 @@ public:
                                       SimTK::MultiplierIndex& ix_y) const override;
 
 private:
+    /// A lower bound of the gap (m): the distance from a box to the other shape's bounding sphere
+    /// (ContactShape::calcBoundingRadius()), else the distance between the bounding spheres.
+    double findGapLowerBound(const SimTK::State& state) const;
     /// v_B(P) - v_A(P) in Ground (Stage::Velocity), and the geometry it was taken at.
     SimTK::Vec3 findSlipVelocityInGround(const SimTK::State& state,
                                          RigidContactGeometry& geometry) const;

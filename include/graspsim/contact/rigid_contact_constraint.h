@@ -47,7 +47,7 @@ public:
     RigidContactGeometry findGeometry(const SimTK::Transform& X_FA,
                                       const SimTK::Transform& X_FB) const;
 
-    /// Allocates the lazy Position-stage cache entry of findGeometryFromState().
+    /// Allocates the lazy cache entries of the pose (Stage::Position) and velocity terms.
     void realizeTopology(SimTK::State& state) const override;
 
     void calcPositionErrors(
@@ -85,29 +85,41 @@ public:
         SimTK::Array_<SimTK::Real, SimTK::ConstrainedUIndex>& mobilityForces) const override;
 
 private:
-    /// Geometry at the pose in `state` (Stage::Position), in the ancestor frame. Computed once per
-    /// pose: the stepper's impulse solver asks for it once per constraint row and call.
-    const RigidContactGeometry& findGeometryFromState(const SimTK::State& state) const;
+    /// What every equation needs at one pose, in the ancestor frame A.
+    struct PoseTerms {
+        RigidContactGeometry geometry;
+        SimTK::Vec3 tx, ty;  ///< friction directions (tx = n.perp(), ty = n x tx)
+        SimTK::Vec3 r_A, r_B;  ///< P's station on bodies A and B from their origins, expressed in A (m)
+    };
+    /// The velocity terms of a_B(P) - a_A(P) - 2 w_A x (v_B(P) - v_A(P)), in A.
+    struct VelocityTerms {
+        SimTK::Vec3 centripetal_A, centripetal_B;  ///< w_X x (w_X x r_X) (m/s^2)
+        SimTK::Vec3 coriolis;                      ///< 2 w_A x (v_B(P) - v_A(P)) (m/s^2)
+    };
+
+    /// PoseTerms at the pose in `state` (Stage::Position). Computed once per pose: the stepper's
+    /// impulse solver evaluates every equation once per constraint row and call.
+    const PoseTerms& findPoseTerms(const SimTK::State& state) const;
+    /// VelocityTerms at the velocities in `state` (Stage::Velocity), once per velocity update.
+    const VelocityTerms& findVelocityTerms(const SimTK::State& state) const;
+    PoseTerms calcPoseTerms(const SimTK::State& state) const;
+    VelocityTerms calcVelocityTerms(const SimTK::State& state) const;
     /// Relative velocity v_B(P) - v_A(P) of the two material points at P (ancestor frame).
-    SimTK::Vec3 findSlipVelocity(
-        const SimTK::State& state,
-        const SimTK::Array_<SimTK::SpatialVec, SimTK::ConstrainedBodyIndex>& V_AB,
-        const SimTK::Vec3& p) const;
+    SimTK::Vec3 findSlipVelocity(const PoseTerms& pose,
+                                 const SimTK::Array_<SimTK::SpatialVec, SimTK::ConstrainedBodyIndex>& V_AB) const;
     /// a_B(P) - a_A(P) - 2 w_A x (v_B(P) - v_A(P)) (ancestor frame), see the file comment.
     SimTK::Vec3 findRelativeAcceleration(
         const SimTK::State& state,
-        const SimTK::Array_<SimTK::SpatialVec, SimTK::ConstrainedBodyIndex>& A_AB,
-        const SimTK::Vec3& p) const;
+        const SimTK::Array_<SimTK::SpatialVec, SimTK::ConstrainedBodyIndex>& A_AB) const;
     /// Adds force f_A at P on B and -f_A on A (f_A in the ancestor frame).
-    void addInContactForce(
-        const SimTK::State& state, const SimTK::Vec3& p, const SimTK::Vec3& f,
-        SimTK::Array_<SimTK::SpatialVec, SimTK::ConstrainedBodyIndex>& bodyForcesInA) const;
+    void addInContactForce(const PoseTerms& pose, const SimTK::Vec3& f,
+                           SimTK::Array_<SimTK::SpatialVec, SimTK::ConstrainedBodyIndex>& bodyForcesInA) const;
 
     SimTK::ConstrainedBodyIndex m_bodyA, m_bodyB;
     ContactShape m_shapeA, m_shapeB;
     SimTK::Transform m_X_BS_A, m_X_BS_B;
     double m_searchMargin;
-    mutable SimTK::CacheEntryIndex m_geometryIndex;  // allocated in realizeTopology()
+    mutable SimTK::CacheEntryIndex m_poseIndex, m_velocityIndex;  // allocated in realizeTopology()
 };
 
 }  // namespace graspsim::contact

@@ -35,8 +35,8 @@
 /// With step size 0 (the default; continuous integrators) the element applies no force at
 /// all: the model's physics is unchanged.
 ///
-/// Stages: the correction is computed at Stage::Dynamics (needs Velocity); the step size and
-/// the constraint forces are Stage::Dynamics discrete variables.
+/// Stages: the correction is computed at Stage::Dynamics (needs Velocity); the step size is a
+/// Stage::Dynamics discrete variable, the constraint forces are set by updateConstraintForces().
 #include "graspsim/simbody.h"
 
 #include <vector>
@@ -74,9 +74,13 @@ public:
     /// Stores the generalized constraint forces -G^T lambda of the step just taken, for the next
     /// step's F (see the file comment). Call it after each SemiExplicitEulerTimeStepper::stepTo()
     /// on the stepper's state, which then holds the step's multipliers lambda (N, N m) at
-    /// Stage::Dynamics. Invalidates Stage::Dynamics. The forces belong to the step that starts at
-    /// the state's time: once this has been called, the element applies nothing in a state at any
-    /// other time (such as the stepper's own end-of-step realization, which this call discards).
+    /// Stage::Dynamics. The forces belong to the step that starts at the state's time: once this
+    /// has been called, the element applies nothing in a state at any other time. The stepper's
+    /// own end-of-step realization is such a state; if `state` is one (realized to Stage::Dynamics
+    /// at a time other than the previous call's), this call completes it: it adds the correction
+    /// to its mobility forces, with F taken from that realization (the same sum in another order
+    /// than calcCorrection()'s, equal to rounding), so the next step evaluates no force element
+    /// again. Otherwise it invalidates Stage::Dynamics.
     void updateConstraintForces(SimTK::State& state) const;
 
     /// The correction X (generalized forces, N m or N; one entry per mobility) at `state`
