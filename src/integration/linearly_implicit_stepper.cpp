@@ -1,5 +1,6 @@
 #include "graspsim/integration/linearly_implicit_stepper.h"
 
+#include "n_matrix.h"
 #include "scheduled_times.h"
 #include "step_matrix.h"
 
@@ -47,7 +48,7 @@ bool isCrossing(const SimTK::EventTriggerInfo& info, double before, double after
 LinearlyImplicitStepper::LinearlyImplicitStepper(const SimTK::MultibodySystem& system,
                                                  std::vector<const ForceJacobianContributor*> contributors,
                                                  const LinearlyImplicitOptions& options)
-    : system_(system), contributors_(std::move(contributors)), options_(options) {
+    : system_(system), contributors_(std::move(contributors)), options_(options), n0_(std::make_unique<NMatrix>()) {
     checkOptions(options_);
 }
 
@@ -240,6 +241,7 @@ double LinearlyImplicitStepper::takeRosenbrockStep(double h) {
     const std::vector<double> a1 = addScaled(u0, g, b1);
     SimTK::Vector qdot1, qdot2;
     matter.multiplyByN(state_, false, toSimTK(a1), qdot1);  // N(q0) a1
+    n0_->capture(matter, state_);                           // N(q0) for a2, after stage 2 moved the State
     setState(t0 + h, q0 + h * qdot1, toSimTK(addScaled(u0, h, b1)), z0 + h * zdot0);
     system_.realize(state_, SimTK::Stage::Acceleration);
     ++evaluations_;
@@ -248,9 +250,7 @@ double LinearlyImplicitStepper::takeRosenbrockStep(double h) {
     std::vector<double> b2 = addScaled(A.multiplyByM(addScaled(toStd(state_.getUDot()), -2, b1)), 1, A.multiplyByGK(r1, g));
     solve(A, b2);
     const std::vector<double> a2 = addScaled(r1, g, b2);
-    state_.updQ() = q0;  // N(q0) for the final combination
-    system_.realize(state_, SimTK::Stage::Position);
-    matter.multiplyByN(state_, false, toSimTK(a2), qdot2);
+    n0_->multiply(a2, qdot2);
     const SimTK::Vector uNext = toSimTK(addScaled(addScaled(u0, 1.5 * h, b1), 0.5 * h, b2));
     setState(t0 + h, q0 + (1.5 * h) * qdot1 + (0.5 * h) * qdot2, uNext, z0 + (0.5 * h) * (zdot0 + zdot2));
     return options_.accuracy > 0 ? calcErrorNorm(A, h, a1, a2, b1, b2, u0) : 0.0;

@@ -59,6 +59,7 @@ struct LinearlyImplicitOptions {
 /// The linearly implicit stepper (see the file comment). The System and the
 /// contributors must outlive it.
 class StepMatrix;  // src/integration/step_matrix.h
+class NMatrix;     // src/integration/n_matrix.h
 
 class LinearlyImplicitStepper : public Stepper {
 public:
@@ -114,6 +115,7 @@ private:
     static constexpr double kMatrixAge = 0.01;       // s
     static constexpr double kMatrixStepRatio = 1.1;  // g / g_built within (1/1.1, 1.1)
     std::unique_ptr<StepMatrix> matrix_;
+    std::unique_ptr<NMatrix> n0_;  // N(q0) of the step under way
     double matrixTime_ = -SimTK::Infinity;
     std::vector<int> matrixActiveSet_, activeSet_;
     bool matrixStale_ = true;
