@@ -2,6 +2,7 @@
 
 #include "n_matrix.h"
 #include "scheduled_times.h"
+#include "step_interpolation.h"
 #include "step_matrix.h"
 
 #include "graspsim/error.h"
@@ -48,8 +49,10 @@ bool isCrossing(const SimTK::EventTriggerInfo& info, double before, double after
 LinearlyImplicitStepper::LinearlyImplicitStepper(const SimTK::MultibodySystem& system,
                                                  std::vector<const ForceJacobianContributor*> contributors,
                                                  const LinearlyImplicitOptions& options)
-    : system_(system), contributors_(std::move(contributors)), options_(options), n0_(std::make_unique<NMatrix>()) {
+    : system_(system), contributors_(std::move(contributors)), options_(options), n0_(std::make_unique<NMatrix>()),
+      stepStart_(std::make_unique<StepInterpolation>()) {
     checkOptions(options_);
+    std::sort(options_.landingTimes.begin(), options_.landingTimes.end());
 }
 
 LinearlyImplicitStepper::~LinearlyImplicitStepper() = default;
@@ -59,6 +62,8 @@ LinearlyImplicitStepper::~LinearlyImplicitStepper() = default;
 void LinearlyImplicitStepper::initialize(const SimTK::State& initial) {
     state_ = initial;
     terminated_ = false;
+    outputInterpolated_ = false;
+    landOnEvents_ = true;
     lastEventTime_ = lastReportTime_ = -SimTK::Infinity;
     try {
         system_.realizeModel(state_);
@@ -76,6 +81,7 @@ void LinearlyImplicitStepper::initialize(const SimTK::State& initial) {
     ++evaluations_;
     system_.calcEventTriggerInfo(state_, triggerInfo_);
     triggers_ = state_.getEventTriggers();
+    reportVariables_ = findReportVariables(state_);
     stepsAtInitialize_ = steps_;
     massMatrixTime_ = -SimTK::Infinity;
     matrixStale_ = true;
@@ -86,6 +92,10 @@ void LinearlyImplicitStepper::initialize(const SimTK::State& initial) {
 // does, so the state returned at `time` is the one the steps reached.
 void LinearlyImplicitStepper::stepTo(double time) {
     if (!initialized_) throw Error("LinearlyImplicitStepper::stepTo(" + std::to_string(time) + ") before initialize()");
+    if (interpolates()) {
+        stepToInterpolating(time);
+        return;
+    }
     while (!terminated_ && state_.getTime() < time) {
         if (handleDueScheduledEvents()) continue;
         const ScheduledTimes next = findScheduledTimes(system_, state_, false, false);
@@ -93,15 +103,83 @@ void LinearlyImplicitStepper::stepTo(double time) {
     }
 }
 
+// Dense output: the steps go on past reports and scheduled events (not past a landing time), and
+// each is served on the state interpolated at its time, the next one first. A step that ends
+// short of the next one becomes the output itself.
+void LinearlyImplicitStepper::stepToInterpolating(double time) {
+    while (!terminated_ && getState().getTime() < time) {
+        if (handleDueScheduledEvents()) continue;
+        const ScheduledTimes next = findScheduledTimes(system_, getState(), false, false);
+        const double target = std::min({time, next.event, next.report});
+        if (state_.getTime() < target) {
+            eventHorizon_ = target;
+            const double landing = findNextLanding(state_.getTime());
+            const bool triggered = takeControlledStep(landOnEvents_ ? std::min(next.event, landing) : landing);
+            eventHorizon_ = SimTK::Infinity;
+            if (triggered || state_.getTime() < target) {
+                outputInterpolated_ = false;
+                continue;
+            }
+        }
+        showAt(target);
+    }
+}
+
+// The output at t, at or before the integrator's time: the integrator's state, or the one
+// interpolated in its last step (with the step's discrete variables), on the constraints and
+// realized through Acceleration as after a step.
+void LinearlyImplicitStepper::showAt(double t) {
+    if (t >= state_.getTime()) {
+        outputInterpolated_ = false;
+        return;
+    }
+    interpolated_ = state_;
+    interpolated_.updTime() = t;
+    stepStart_->interpolate(state_, t, interpolated_.updY());
+    project(interpolated_);
+    system_.realize(interpolated_, SimTK::Stage::Acceleration);
+    ++evaluations_;
+    outputInterpolated_ = true;
+}
+
+double LinearlyImplicitStepper::findNextLanding(double t) const {
+    const auto next = std::upper_bound(options_.landingTimes.begin(), options_.landingTimes.end(), t);
+    return next == options_.landingTimes.end() ? SimTK::Infinity : *next;
+}
+
 // Handles the scheduled events and reports due now; true if any was.
 bool LinearlyImplicitStepper::handleDueScheduledEvents() {
     SimTK::HandleEventsResults results;
+    SimTK::State& now = outputInterpolated_ ? interpolated_ : state_;
+    // Realized through Report, a change of a Report-stage variable shows in the results (Simbody
+    // compares the versions of the stages realized before the handlers).
+    if (interpolates()) system_.realize(now, SimTK::Stage::Report);
     const DueScheduled done =
-        handleDueScheduled(system_, state_, options_.constraintTolerance, lastEventTime_, lastReportTime_, results);
+        handleDueScheduled(system_, now, options_.constraintTolerance, lastEventTime_, lastReportTime_, results);
     if (done != DueScheduled::Handled) return done == DueScheduled::Reported;
     ++scheduledEvents_;
+    // The steps land on the next scheduled event unless this one changed nothing (see landOnEvents_).
+    landOnEvents_ = results.getLowestModifiedStage() != SimTK::Stage::Infinity;
+    if (outputInterpolated_ && handleInterpolatedEvents(results)) return true;
     handleResults(results);
     return true;
+}
+
+// After handlers at an interpolated instant: a change above Stage::Report (none) or of Report-stage
+// variables only leaves everything the integrator computed valid, so the variables go on to its
+// state ahead (true); a lower change makes the handled state the integrator's own, the rest of
+// the step dropped (a one-step method keeps no history), and handleResults() goes on (false).
+bool LinearlyImplicitStepper::handleInterpolatedEvents(const SimTK::HandleEventsResults& results) {
+    const SimTK::Stage lowest = results.getLowestModifiedStage();
+    const bool failed = results.getExitStatus() != SimTK::HandleEventsResults::Succeeded;
+    if (!failed && lowest >= SimTK::Stage::Report) {
+        if (lowest == SimTK::Stage::Report) copyReportVariables(reportVariables_, interpolated_, state_);
+        return true;
+    }
+    state_ = interpolated_;
+    outputInterpolated_ = false;
+    matrixStale_ = true;
+    return false;
 }
 
 // Up to tStop, or up to the first step whose end triggers an event: equal steps no longer than
@@ -123,32 +201,52 @@ void LinearlyImplicitStepper::advance(double tStop) {
 
 // A step whose error estimate exceeds the accuracy is taken again from its start, shorter; the
 // next step grows by the usual second-order rule, 0.9 error^(-1/2), by 5x at most (not at all
-// right after a rejection), up to h. A
-// stop closer than 1.5 steps is reached in one or two equal steps, so no sliver step is left.
+// right after a rejection), up to h. A stop closer than 1.5 steps is reached in one or two equal
+// steps, so no sliver step is left.
 void LinearlyImplicitStepper::advanceControlled(double tStop) {
     while (!terminated_ && state_.getTime() < tStop) {
+        if (takeControlledStep(tStop)) return;
+    }
+}
+
+// One accepted step toward tStop (rejected ones taken again); true if its end triggered an event.
+// A step past eventHorizon_ whose end triggers one is taken again, ending on the horizon.
+bool LinearlyImplicitStepper::takeControlledStep(double tStop) {
+    for (;;) {
         const double t = state_.getTime(), remaining = tStop - t;
         double h = std::min(nextStepSize_, options_.stepSize);
         if (remaining < 1.5 * h) h = remaining <= h ? remaining : remaining / 2;
         const SimTK::Vector q = state_.getQ(), u = state_.getU(), z = state_.getZ();
+        if (interpolates()) stepStart_->captureStart(state_);
         double error = 0;
-        if (takeStep(h, error)) return;
+        if (takeStep(h, error)) return true;
+        if (redo_) {
+            redo_ = false;
+            tStop = eventHorizon_;
+            restoreStepStart(t, q, u, z);
+            continue;
+        }
         const double factor = std::clamp(0.9 / std::sqrt(std::max(error, 1e-10)), 0.2, 5.0);
         if (error <= 1 || h <= kMinStepSize) {
             // No growth right after a rejection (Hairer and Wanner's rule): the step that just
             // passed is near the limit, and growing it again mostly buys another rejection.
             nextStepSize_ = h * (justRejected_ ? std::min(factor, 1.0) : factor);
             justRejected_ = false;
-            continue;
+            return false;
         }
         nextStepSize_ = h * factor;
         justRejected_ = true;
         matrixStale_ = true;
         ++rejectedSteps_;
-        setState(t, q, u, z);
-        system_.realize(state_, SimTK::Stage::Acceleration);
-        ++evaluations_;
+        restoreStepStart(t, q, u, z);
     }
+}
+
+void LinearlyImplicitStepper::restoreStepStart(double t, const SimTK::Vector& q, const SimTK::Vector& u,
+                                               const SimTK::Vector& z) {
+    setState(t, q, u, z);
+    system_.realize(state_, SimTK::Stage::Acceleration);
+    ++evaluations_;
 }
 
 namespace {
@@ -183,13 +281,17 @@ std::vector<double> addScaled(const std::vector<double>& a, double s, const std:
 // step about to be rejected (error > 1 under error control) is not looked at for events.
 bool LinearlyImplicitStepper::takeStep(double h, double& error) {
     error = options_.order == 2 ? takeRosenbrockStep(h) : (takeEulerStep(h), 0.0);
-    projectStep();
+    project(state_);
     system_.realize(state_, SimTK::Stage::Acceleration);
     ++evaluations_;
     if (options_.accuracy > 0 && error > 1 && h > kMinStepSize) return false;
+    const SimTK::Array_<SimTK::EventId> triggered = findTriggeredEvents();
+    if (!triggered.empty() && state_.getTime() > eventHorizon_) {
+        redo_ = true;
+        return false;
+    }
     ++steps_;
     state_.autoUpdateDiscreteVariables();
-    const SimTK::Array_<SimTK::EventId> triggered = findTriggeredEvents();
     if (triggered.empty()) {
         triggers_ = state_.getEventTriggers();
         return false;
@@ -315,17 +417,17 @@ double LinearlyImplicitStepper::calcErrorNorm(const StepMatrix& A, double h, con
 
 // Onto the constraints, or with none only the quaternions normalized (System::project would
 // realize and check the velocity level too: about 8 % of a step).
-void LinearlyImplicitStepper::projectStep() {
+void LinearlyImplicitStepper::project(SimTK::State& state) {
     const SimTK::SimbodyMatterSubsystem& matter = system_.getMatterSubsystem();
     if (matter.getNumConstraints() == 0) {
-        system_.realize(state_, SimTK::Stage::Time);
-        matter.normalizeQuaternions(state_);
+        system_.realize(state, SimTK::Stage::Time);
+        matter.normalizeQuaternions(state);
         return;
     }
     try {
-        system_.project(state_, options_.constraintTolerance);
+        system_.project(state, options_.constraintTolerance);
     } catch (const std::exception& e) {
-        throw NumericalError("linearly implicit stepper at " + timeText(state_) + ": cannot project onto the constraints: " + e.what());
+        throw NumericalError("linearly implicit stepper at " + timeText(state) + ": cannot project onto the constraints: " + e.what());
     }
     ++projections_;
 }
