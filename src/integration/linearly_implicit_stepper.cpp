@@ -278,7 +278,8 @@ std::vector<double> addScaled(const std::vector<double>& a, double s, const std:
 
 // One step of size h (see the header); `error` receives its error estimate (weighted RMS
 // against the accuracy; 0 for Euler). True if the step's end triggered an event (handled); a
-// step about to be rejected (error > 1 under error control) is not looked at for events.
+// step about to be rejected (error > 1 under error control) is not looked at for events, and one
+// that ends past eventHorizon_ and triggers sets redo_ instead (the caller takes it again).
 bool LinearlyImplicitStepper::takeStep(double h, double& error) {
     error = options_.order == 2 ? takeRosenbrockStep(h) : (takeEulerStep(h), 0.0);
     project(state_);

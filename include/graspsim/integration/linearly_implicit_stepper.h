@@ -25,12 +25,18 @@
 /// methods need microsecond steps; forces left out of D and K are treated explicitly.
 /// Measurements and why: docs/performance.md.
 ///
-/// Events: scheduled events and reports land exactly on their times (fixed steps: the interval up
-/// to each is cut into equal steps no longer than h); event triggers (witness functions) are checked at
-/// the end of every step and a sign change in a direction the event asks for is handled there,
-/// at the step's end (localized to within one step, not to a root tolerance). A handler's change
-/// needs no restart (a one-step method keeps no history): the next step starts from the changed
-/// state. Auto-update discrete variables are updated after every step.
+/// Events: at fixed steps, scheduled events, reports and stepTo() times land exactly on their
+/// times (the interval up to each is cut into equal steps no longer than h). With error control
+/// (LinearlyImplicitOptions::interpolate) the steps go on past stepTo() times and reports, and the
+/// state there is interpolated (cubic Hermite from both ends of the step), as CPodes does; they
+/// land on scheduled events whose handlers changed the state last time (the IK's new targets),
+/// while events that changed nothing (an engaged grasp switch's check) are handled on the
+/// interpolated state too, and on LinearlyImplicitOptions::landingTimes. Event triggers (witness
+/// functions) are checked at the end of every step and a sign change in a direction the event
+/// asks for is handled there, at the step's end (localized to within one step, not to a root
+/// tolerance); a step that passes an output time and triggers is taken again, ending there. A
+/// handler's change needs no restart (a one-step method keeps no history): the next step starts
+/// from the changed state. Auto-update discrete variables are updated after every step.
 
 #include "graspsim/integration/force_jacobian.h"
 #include "graspsim/integration/stepper.h"
