@@ -64,6 +64,8 @@ void LinearlyImplicitStepper::initialize(const SimTK::State& initial) {
     terminated_ = false;
     outputInterpolated_ = false;
     landOnEvents_ = true;
+    eventHorizon_ = SimTK::Infinity;
+    redo_ = false;
     lastEventTime_ = lastReportTime_ = -SimTK::Infinity;
     try {
         system_.realizeModel(state_);
