@@ -84,6 +84,8 @@ void LinearlyImplicitStepper::initialize(const SimTK::State& initial) {
     system_.calcEventTriggerInfo(state_, triggerInfo_);
     triggers_ = state_.getEventTriggers();
     reportVariables_ = findReportVariables(state_);
+    hasAutoUpdate_ = hasAutoUpdateVariables(state_);
+    interpolatedInSync_ = false;
     stepsAtInitialize_ = steps_;
     massMatrixTime_ = -SimTK::Infinity;
     matrixStale_ = true;
@@ -115,8 +117,7 @@ void LinearlyImplicitStepper::stepToInterpolating(double time) {
         const double target = std::min({time, next.event, next.report});
         if (state_.getTime() < target) {
             eventHorizon_ = target;
-            const double landing = findNextLanding(state_.getTime());
-            const bool triggered = takeControlledStep(landOnEvents_ ? std::min(next.event, landing) : landing);
+            const bool triggered = takeControlledStep(findStop(target, next.event));
             eventHorizon_ = SimTK::Infinity;
             if (triggered || state_.getTime() < target) {
                 outputInterpolated_ = false;
@@ -135,13 +136,27 @@ void LinearlyImplicitStepper::showAt(double t) {
         outputInterpolated_ = false;
         return;
     }
-    interpolated_ = state_;
+    // A State copy costs about two evaluations (Simbody copies every cache entry): it is made only
+    // when the integrator's state changed otherwise than in time, q, u and z since the last one.
+    if (!interpolatedInSync_) interpolated_ = state_;
+    interpolatedInSync_ = !hasAutoUpdate_;
     interpolated_.updTime() = t;
     stepStart_->interpolate(state_, t, interpolated_.updY());
     project(interpolated_);
     system_.realize(interpolated_, SimTK::Stage::Acceleration);
     ++evaluations_;
     outputInterpolated_ = true;
+}
+
+// Where the next step must end at the latest: a landing time, a scheduled event to land on (see
+// landOnEvents_), or `target` (the next output) when it is at least half a step away. Interpolating
+// costs an evaluation, about half a step; landing on an output half a step or more away costs less.
+double LinearlyImplicitStepper::findStop(double target, double nextEvent) const {
+    const double t = state_.getTime();
+    double stop = findNextLanding(t);
+    if (landOnEvents_) stop = std::min(stop, nextEvent);
+    if (target - t >= 0.5 * std::min(nextStepSize_, options_.stepSize)) stop = std::min(stop, target);
+    return stop;
 }
 
 double LinearlyImplicitStepper::findNextLanding(double t) const {
@@ -456,6 +471,7 @@ SimTK::Array_<SimTK::EventId> LinearlyImplicitStepper::findTriggeredEvents() con
 // After any handler: realize the (possibly changed) state again and take its triggers as the
 // reference for the next step's crossings (an Instance-stage change may change their number).
 void LinearlyImplicitStepper::handleResults(const SimTK::HandleEventsResults& results) {
+    interpolatedInSync_ = false;  // handlers worked on state_
     if (results.getExitStatus() == SimTK::HandleEventsResults::Failed) {
         throw NumericalError("event handler failed at " + timeText(state_) + ": " + results.getMessage());
     }

@@ -29,6 +29,15 @@ DiscreteVariableKeys findReportVariables(const SimTK::State& state) {
     return keys;
 }
 
+bool hasAutoUpdateVariables(const SimTK::State& state) {
+    for (SimTK::SubsystemIndex s(0); s < state.getNumSubsystems(); ++s) {
+        for (SimTK::DiscreteVariableIndex d(0); state.hasDiscreteVar({s, d}); ++d) {
+            if (state.getDiscreteVarUpdateIndex(s, d).isValid()) return true;
+        }
+    }
+    return false;
+}
+
 void copyReportVariables(const DiscreteVariableKeys& keys, const SimTK::State& source, SimTK::State& target) {
     for (const auto& [s, d] : keys) target.updDiscreteVariable(s, d) = source.getDiscreteVariable(s, d);
 }

@@ -27,6 +27,9 @@ private:
 // instant can hand them on to the integrator's state ahead of it without a restart.
 using DiscreteVariableKeys = std::vector<std::pair<SimTK::SubsystemIndex, SimTK::DiscreteVariableIndex>>;
 DiscreteVariableKeys findReportVariables(const SimTK::State& state);
+// Whether any discrete variable is an auto-update one (updated after every step, so that a state
+// copied earlier no longer has the integrator's values).
+bool hasAutoUpdateVariables(const SimTK::State& state);
 // Copies those variables from `source` to `target` (invalidating only Report in `target`).
 void copyReportVariables(const DiscreteVariableKeys& keys, const SimTK::State& source, SimTK::State& target);
 

@@ -103,6 +103,7 @@ private:
     void showAt(double t);
     bool handleInterpolatedEvents(const SimTK::HandleEventsResults& results);
     double findNextLanding(double t) const;
+    double findStop(double target, double nextEvent) const;
     bool interpolates() const { return options_.accuracy > 0 && options_.interpolate; }
     bool takeStep(double h, double& error);
     void project(SimTK::State& state);
@@ -146,6 +147,9 @@ private:
     std::unique_ptr<StepInterpolation> stepStart_;
     SimTK::State interpolated_;
     bool outputInterpolated_ = false;
+    // Whether interpolated_ differs from state_ only in time, q, u and z (then showAt() need not
+    // copy the whole State again), and whether auto-update variables rule that out.
+    bool interpolatedInSync_ = false, hasAutoUpdate_ = false;
     std::vector<std::pair<SimTK::SubsystemIndex, SimTK::DiscreteVariableIndex>> reportVariables_;
     double eventHorizon_ = SimTK::Infinity;
     bool redo_ = false;
