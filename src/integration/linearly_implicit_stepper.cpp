@@ -96,10 +96,7 @@ void LinearlyImplicitStepper::initialize(const SimTK::State& initial) {
 // does, so the state returned at `time` is the one the steps reached.
 void LinearlyImplicitStepper::stepTo(double time) {
     if (!initialized_) throw Error("LinearlyImplicitStepper::stepTo(" + std::to_string(time) + ") before initialize()");
-    if (interpolates()) {
-        stepToInterpolating(time);
-        return;
-    }
+    if (interpolates()) return stepToInterpolating(time);
     while (!terminated_ && state_.getTime() < time) {
         if (handleDueScheduledEvents()) continue;
         const ScheduledTimes next = findScheduledTimes(system_, state_, false, false);
@@ -119,10 +116,8 @@ void LinearlyImplicitStepper::stepToInterpolating(double time) {
             eventHorizon_ = target;
             const bool triggered = takeControlledStep(findStop(target, next.event));
             eventHorizon_ = SimTK::Infinity;
-            if (triggered || state_.getTime() < target) {
-                outputInterpolated_ = false;
-                continue;
-            }
+            outputInterpolated_ = false;  // the integrator's state, until showAt() says otherwise
+            if (triggered || state_.getTime() < target) continue;
         }
         showAt(target);
     }
