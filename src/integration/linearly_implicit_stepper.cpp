@@ -1,6 +1,8 @@
 #include "graspsim/integration/linearly_implicit_stepper.h"
 
+#include "n_matrix.h"
 #include "scheduled_times.h"
+#include "step_interpolation.h"
 #include "step_matrix.h"
 
 #include "graspsim/error.h"
@@ -47,8 +49,10 @@ bool isCrossing(const SimTK::EventTriggerInfo& info, double before, double after
 LinearlyImplicitStepper::LinearlyImplicitStepper(const SimTK::MultibodySystem& system,
                                                  std::vector<const ForceJacobianContributor*> contributors,
                                                  const LinearlyImplicitOptions& options)
-    : system_(system), contributors_(std::move(contributors)), options_(options) {
+    : system_(system), contributors_(std::move(contributors)), options_(options), n0_(std::make_unique<NMatrix>()),
+      stepStart_(std::make_unique<StepInterpolation>()) {
     checkOptions(options_);
+    std::sort(options_.landingTimes.begin(), options_.landingTimes.end());
 }
 
 LinearlyImplicitStepper::~LinearlyImplicitStepper() = default;
@@ -58,6 +62,10 @@ LinearlyImplicitStepper::~LinearlyImplicitStepper() = default;
 void LinearlyImplicitStepper::initialize(const SimTK::State& initial) {
     state_ = initial;
     terminated_ = false;
+    outputInterpolated_ = false;
+    landOnEvents_ = true;
+    eventHorizon_ = SimTK::Infinity;
+    redo_ = false;
     lastEventTime_ = lastReportTime_ = -SimTK::Infinity;
     try {
         system_.realizeModel(state_);
@@ -75,6 +83,9 @@ void LinearlyImplicitStepper::initialize(const SimTK::State& initial) {
     ++evaluations_;
     system_.calcEventTriggerInfo(state_, triggerInfo_);
     triggers_ = state_.getEventTriggers();
+    reportVariables_ = findReportVariables(state_);
+    hasAutoUpdate_ = hasAutoUpdateVariables(state_);
+    interpolatedInSync_ = false;
     stepsAtInitialize_ = steps_;
     massMatrixTime_ = -SimTK::Infinity;
     matrixStale_ = true;
@@ -85,6 +96,7 @@ void LinearlyImplicitStepper::initialize(const SimTK::State& initial) {
 // does, so the state returned at `time` is the one the steps reached.
 void LinearlyImplicitStepper::stepTo(double time) {
     if (!initialized_) throw Error("LinearlyImplicitStepper::stepTo(" + std::to_string(time) + ") before initialize()");
+    if (interpolates()) return stepToInterpolating(time);
     while (!terminated_ && state_.getTime() < time) {
         if (handleDueScheduledEvents()) continue;
         const ScheduledTimes next = findScheduledTimes(system_, state_, false, false);
@@ -92,15 +104,94 @@ void LinearlyImplicitStepper::stepTo(double time) {
     }
 }
 
+// Dense output: the steps go on past reports and scheduled events (not past a landing time), and
+// each is served on the state interpolated at its time, the next one first. A step that ends
+// short of the next one becomes the output itself.
+void LinearlyImplicitStepper::stepToInterpolating(double time) {
+    while (!terminated_ && getState().getTime() < time) {
+        if (handleDueScheduledEvents()) continue;
+        const ScheduledTimes next = findScheduledTimes(system_, getState(), false, false);
+        const double target = std::min({time, next.event, next.report});
+        if (state_.getTime() < target) {
+            eventHorizon_ = target;
+            const bool triggered = takeControlledStep(findStop(target, next.event));
+            eventHorizon_ = SimTK::Infinity;
+            outputInterpolated_ = false;  // the integrator's state, until showAt() says otherwise
+            if (triggered || state_.getTime() < target) continue;
+        }
+        showAt(target);
+    }
+}
+
+// The output at t, at or before the integrator's time: the integrator's state, or the one
+// interpolated in its last step (with the step's discrete variables), on the constraints and
+// realized through Acceleration as after a step.
+void LinearlyImplicitStepper::showAt(double t) {
+    if (t >= state_.getTime()) {
+        outputInterpolated_ = false;
+        return;
+    }
+    // A State copy costs about two evaluations (Simbody copies every cache entry): it is made only
+    // when the integrator's state changed otherwise than in time, q, u and z since the last one.
+    if (!interpolatedInSync_) interpolated_ = state_;
+    interpolatedInSync_ = !hasAutoUpdate_;
+    interpolated_.updTime() = t;
+    stepStart_->interpolate(state_, t, interpolated_.updY());
+    project(interpolated_);
+    system_.realize(interpolated_, SimTK::Stage::Acceleration);
+    ++evaluations_;
+    outputInterpolated_ = true;
+}
+
+// Where the next step must end at the latest: a landing time, a scheduled event to land on (see
+// landOnEvents_), or `target` (the next output) when it is at least half a step away. Interpolating
+// costs an evaluation, about half a step; landing on an output half a step or more away costs less.
+double LinearlyImplicitStepper::findStop(double target, double nextEvent) const {
+    const double t = state_.getTime();
+    double stop = findNextLanding(t);
+    if (landOnEvents_) stop = std::min(stop, nextEvent);
+    if (target - t >= 0.5 * std::min(nextStepSize_, options_.stepSize)) stop = std::min(stop, target);
+    return stop;
+}
+
+double LinearlyImplicitStepper::findNextLanding(double t) const {
+    const auto next = std::upper_bound(options_.landingTimes.begin(), options_.landingTimes.end(), t);
+    return next == options_.landingTimes.end() ? SimTK::Infinity : *next;
+}
+
 // Handles the scheduled events and reports due now; true if any was.
 bool LinearlyImplicitStepper::handleDueScheduledEvents() {
     SimTK::HandleEventsResults results;
+    SimTK::State& now = outputInterpolated_ ? interpolated_ : state_;
+    // Realized through Report, a change of a Report-stage variable shows in the results (Simbody
+    // compares the versions of the stages realized before the handlers).
+    if (interpolates()) system_.realize(now, SimTK::Stage::Report);
     const DueScheduled done =
-        handleDueScheduled(system_, state_, options_.constraintTolerance, lastEventTime_, lastReportTime_, results);
+        handleDueScheduled(system_, now, options_.constraintTolerance, lastEventTime_, lastReportTime_, results);
     if (done != DueScheduled::Handled) return done == DueScheduled::Reported;
     ++scheduledEvents_;
+    // The steps land on the next scheduled event unless this one changed nothing (see landOnEvents_).
+    landOnEvents_ = results.getLowestModifiedStage() != SimTK::Stage::Infinity;
+    if (outputInterpolated_ && handleInterpolatedEvents(results)) return true;
     handleResults(results);
     return true;
+}
+
+// After handlers at an interpolated instant: a change above Stage::Report (none) or of Report-stage
+// variables only leaves everything the integrator computed valid, so the variables go on to its
+// state ahead (true); a lower change makes the handled state the integrator's own, the rest of
+// the step dropped (a one-step method keeps no history), and handleResults() goes on (false).
+bool LinearlyImplicitStepper::handleInterpolatedEvents(const SimTK::HandleEventsResults& results) {
+    const SimTK::Stage lowest = results.getLowestModifiedStage();
+    const bool failed = results.getExitStatus() != SimTK::HandleEventsResults::Succeeded;
+    if (!failed && lowest >= SimTK::Stage::Report) {
+        if (lowest == SimTK::Stage::Report) copyReportVariables(reportVariables_, interpolated_, state_);
+        return true;
+    }
+    state_ = interpolated_;
+    outputInterpolated_ = false;
+    matrixStale_ = true;
+    return false;
 }
 
 // Up to tStop, or up to the first step whose end triggers an event: equal steps no longer than
@@ -122,32 +213,52 @@ void LinearlyImplicitStepper::advance(double tStop) {
 
 // A step whose error estimate exceeds the accuracy is taken again from its start, shorter; the
 // next step grows by the usual second-order rule, 0.9 error^(-1/2), by 5x at most (not at all
-// right after a rejection), up to h. A
-// stop closer than 1.5 steps is reached in one or two equal steps, so no sliver step is left.
+// right after a rejection), up to h. A stop closer than 1.5 steps is reached in one or two equal
+// steps, so no sliver step is left.
 void LinearlyImplicitStepper::advanceControlled(double tStop) {
     while (!terminated_ && state_.getTime() < tStop) {
+        if (takeControlledStep(tStop)) return;
+    }
+}
+
+// One accepted step toward tStop (rejected ones taken again); true if its end triggered an event.
+// A step past eventHorizon_ whose end triggers one is taken again, ending on the horizon.
+bool LinearlyImplicitStepper::takeControlledStep(double tStop) {
+    for (;;) {
         const double t = state_.getTime(), remaining = tStop - t;
         double h = std::min(nextStepSize_, options_.stepSize);
         if (remaining < 1.5 * h) h = remaining <= h ? remaining : remaining / 2;
         const SimTK::Vector q = state_.getQ(), u = state_.getU(), z = state_.getZ();
+        if (interpolates()) stepStart_->captureStart(state_);
         double error = 0;
-        if (takeStep(h, error)) return;
+        if (takeStep(h, error)) return true;
+        if (redo_) {
+            redo_ = false;
+            tStop = eventHorizon_;
+            restoreStepStart(t, q, u, z);
+            continue;
+        }
         const double factor = std::clamp(0.9 / std::sqrt(std::max(error, 1e-10)), 0.2, 5.0);
         if (error <= 1 || h <= kMinStepSize) {
             // No growth right after a rejection (Hairer and Wanner's rule): the step that just
             // passed is near the limit, and growing it again mostly buys another rejection.
             nextStepSize_ = h * (justRejected_ ? std::min(factor, 1.0) : factor);
             justRejected_ = false;
-            continue;
+            return false;
         }
         nextStepSize_ = h * factor;
         justRejected_ = true;
         matrixStale_ = true;
         ++rejectedSteps_;
-        setState(t, q, u, z);
-        system_.realize(state_, SimTK::Stage::Acceleration);
-        ++evaluations_;
+        restoreStepStart(t, q, u, z);
     }
+}
+
+void LinearlyImplicitStepper::restoreStepStart(double t, const SimTK::Vector& q, const SimTK::Vector& u,
+                                               const SimTK::Vector& z) {
+    setState(t, q, u, z);
+    system_.realize(state_, SimTK::Stage::Acceleration);
+    ++evaluations_;
 }
 
 namespace {
@@ -179,16 +290,21 @@ std::vector<double> addScaled(const std::vector<double>& a, double s, const std:
 
 // One step of size h (see the header); `error` receives its error estimate (weighted RMS
 // against the accuracy; 0 for Euler). True if the step's end triggered an event (handled); a
-// step about to be rejected (error > 1 under error control) is not looked at for events.
+// step about to be rejected (error > 1 under error control) is not looked at for events, and one
+// that ends past eventHorizon_ and triggers sets redo_ instead (the caller takes it again).
 bool LinearlyImplicitStepper::takeStep(double h, double& error) {
     error = options_.order == 2 ? takeRosenbrockStep(h) : (takeEulerStep(h), 0.0);
-    projectStep();
+    project(state_);
     system_.realize(state_, SimTK::Stage::Acceleration);
     ++evaluations_;
     if (options_.accuracy > 0 && error > 1 && h > kMinStepSize) return false;
+    const SimTK::Array_<SimTK::EventId> triggered = findTriggeredEvents();
+    if (!triggered.empty() && state_.getTime() > eventHorizon_) {
+        redo_ = true;
+        return false;
+    }
     ++steps_;
     state_.autoUpdateDiscreteVariables();
-    const SimTK::Array_<SimTK::EventId> triggered = findTriggeredEvents();
     if (triggered.empty()) {
         triggers_ = state_.getEventTriggers();
         return false;
@@ -240,6 +356,7 @@ double LinearlyImplicitStepper::takeRosenbrockStep(double h) {
     const std::vector<double> a1 = addScaled(u0, g, b1);
     SimTK::Vector qdot1, qdot2;
     matter.multiplyByN(state_, false, toSimTK(a1), qdot1);  // N(q0) a1
+    n0_->capture(matter, state_);                           // N(q0) for a2, after stage 2 moved the State
     setState(t0 + h, q0 + h * qdot1, toSimTK(addScaled(u0, h, b1)), z0 + h * zdot0);
     system_.realize(state_, SimTK::Stage::Acceleration);
     ++evaluations_;
@@ -248,9 +365,7 @@ double LinearlyImplicitStepper::takeRosenbrockStep(double h) {
     std::vector<double> b2 = addScaled(A.multiplyByM(addScaled(toStd(state_.getUDot()), -2, b1)), 1, A.multiplyByGK(r1, g));
     solve(A, b2);
     const std::vector<double> a2 = addScaled(r1, g, b2);
-    state_.updQ() = q0;  // N(q0) for the final combination
-    system_.realize(state_, SimTK::Stage::Position);
-    matter.multiplyByN(state_, false, toSimTK(a2), qdot2);
+    n0_->multiply(a2, qdot2);
     const SimTK::Vector uNext = toSimTK(addScaled(addScaled(u0, 1.5 * h, b1), 0.5 * h, b2));
     setState(t0 + h, q0 + (1.5 * h) * qdot1 + (0.5 * h) * qdot2, uNext, z0 + (0.5 * h) * (zdot0 + zdot2));
     return options_.accuracy > 0 ? calcErrorNorm(A, h, a1, a2, b1, b2, u0) : 0.0;
@@ -315,17 +430,17 @@ double LinearlyImplicitStepper::calcErrorNorm(const StepMatrix& A, double h, con
 
 // Onto the constraints, or with none only the quaternions normalized (System::project would
 // realize and check the velocity level too: about 8 % of a step).
-void LinearlyImplicitStepper::projectStep() {
+void LinearlyImplicitStepper::project(SimTK::State& state) {
     const SimTK::SimbodyMatterSubsystem& matter = system_.getMatterSubsystem();
     if (matter.getNumConstraints() == 0) {
-        system_.realize(state_, SimTK::Stage::Time);
-        matter.normalizeQuaternions(state_);
+        system_.realize(state, SimTK::Stage::Time);
+        matter.normalizeQuaternions(state);
         return;
     }
     try {
-        system_.project(state_, options_.constraintTolerance);
+        system_.project(state, options_.constraintTolerance);
     } catch (const std::exception& e) {
-        throw NumericalError("linearly implicit stepper at " + timeText(state_) + ": cannot project onto the constraints: " + e.what());
+        throw NumericalError("linearly implicit stepper at " + timeText(state) + ": cannot project onto the constraints: " + e.what());
     }
     ++projections_;
 }
@@ -351,6 +466,7 @@ SimTK::Array_<SimTK::EventId> LinearlyImplicitStepper::findTriggeredEvents() con
 // After any handler: realize the (possibly changed) state again and take its triggers as the
 // reference for the next step's crossings (an Instance-stage change may change their number).
 void LinearlyImplicitStepper::handleResults(const SimTK::HandleEventsResults& results) {
+    interpolatedInSync_ = false;  // handlers worked on state_
     if (results.getExitStatus() == SimTK::HandleEventsResults::Failed) {
         throw NumericalError("event handler failed at " + timeText(state_) + ": " + results.getMessage());
     }

@@ -220,6 +220,8 @@ SceneStepper makeLinearlyImplicitStepper(const GraspExperiment& experiment, doub
     integration::LinearlyImplicitOptions implicit;
     implicit.stepSize = stepSize;
     implicit.accuracy = accuracy;
+    // Its steps go on past output samples (dense output), but not past the load's jumps.
+    if (const PerturbationForce* p = experiment.getLoads().getPerturbation()) implicit.landingTimes = {p->getStartTime(), p->getEndTime()};
     made.stepper = std::make_unique<integration::LinearlyImplicitStepper>(scene.getSystem(), contributors, implicit);
     return made;
 }

@@ -194,6 +194,88 @@ TEST(LinearlyImplicitStepper, ReportsLandOnTheirTimesBetweenSteps) {
     EXPECT_EQ(stepper.getStatistics().rhsEvaluations, 5);  // one per step and one at initialize
 }
 
+// Dense output: under error control the steps go on past the times asked for and the state there
+// is interpolated (cubic Hermite). Oracle: the analytic solution at every output time (0.7 ms
+// apart, not on the step ends), and the steps of a run asked for one time only (outputs must
+// not cut the steps). Landing on each output instead (interpolate = false) costs steps.
+TEST(LinearlyImplicitStepper, ErrorControlledOutputsAreInterpolated) {
+    const double T = 0.3, every = 0.7e-3;
+    const auto run = [&](bool interpolate, double outputEvery, double& last) {
+        StiffDamper damper;
+        SimTK::State state = damper.scene.system.realizeTopology();
+        damper.scene.body.setOneQ(state, 0, StiffDamper::kStart);
+        LinearlyImplicitOptions options;
+        options.stepSize = 2e-3;
+        options.accuracy = 1e-4;
+        options.interpolate = interpolate;
+        LinearlyImplicitStepper stepper(damper.scene.system, {&damper.jacobian}, options);
+        stepper.initialize(state);
+        double worst = 0;
+        for (double t = outputEvery; t < T; t += outputEvery) {
+            stepper.stepTo(t);
+            EXPECT_EQ(stepper.getState().getTime(), t);
+            worst = std::max(worst, std::abs(damper.scene.body.getOneQ(stepper.getState(), 0) - StiffDamper::calcExact(t)));
+        }
+        stepper.stepTo(T);
+        last = damper.scene.body.getOneQ(stepper.getState(), 0);
+        // The step ends are controlled to 1e-4 (absolute on x, |x| << 1) and measured within 1e-6;
+        // between them, the cubic across the fast 0.1 ms mode's decay is within 2e-6 (measured).
+        EXPECT_LT(worst, 1e-3 * StiffDamper::kStart) << "interpolate " << interpolate;
+        return stepper.getStatistics().steps;
+    };
+    double once = 0, sampled = 0, landed = 0;
+    const long stepsOnce = run(true, T, once);
+    const long stepsSampled = run(true, every, sampled), stepsLanded = run(false, every, landed);
+    RecordProperty("steps_once_sampled_landed", std::to_string(stepsOnce) + " " + std::to_string(stepsSampled) + " " +
+                                                    std::to_string(stepsLanded));
+    // Outputs half a step or more ahead are landed on (cheaper than an interpolation): a few while
+    // the steps are short, none once they have grown past twice the output interval.
+    EXPECT_LE(stepsSampled, stepsOnce + stepsOnce / 10);
+    EXPECT_GT(stepsLanded, stepsOnce + static_cast<long>(T / every) / 2);
+    for (double x : {once, sampled, landed}) EXPECT_NEAR(x, StiffDamper::calcExact(T), 1e-4 * StiffDamper::kStart);
+}
+
+// A periodic check that changes nothing is served on interpolated states (the steps are those of a
+// run without it); one that changes the state is landed on, every time.
+class PeriodicCheck : public SimTK::PeriodicEventHandler {
+public:
+    PeriodicCheck(double interval, bool touch) : SimTK::PeriodicEventHandler(interval), touch_(touch) {}
+    void handleEvent(SimTK::State& state, SimTK::Real, bool& terminate) const override {
+        terminate = false;
+        ++calls;
+        if (touch_) state.updU() *= 1.0;  // same values, but Stage::Velocity invalidated: a change
+    }
+    mutable int calls = 0;
+
+private:
+    bool touch_;
+};
+
+long countControlledSteps(int check, int& calls) {  // check: 0 none, 1 changes nothing, 2 changes the state
+    StiffDamper damper;
+    auto* handler = check > 0 ? new PeriodicCheck(1e-3, check == 2) : nullptr;
+    if (handler) damper.scene.system.addEventHandler(handler);  // the System owns it
+    SimTK::State state = damper.scene.system.realizeTopology();
+    damper.scene.body.setOneQ(state, 0, StiffDamper::kStart);
+    LinearlyImplicitOptions options;
+    options.stepSize = 2e-3;
+    options.accuracy = 1e-4;
+    LinearlyImplicitStepper stepper(damper.scene.system, {&damper.jacobian}, options);
+    stepper.initialize(state);
+    stepper.stepTo(0.3);
+    calls = handler ? handler->calls : 0;
+    return stepper.getStatistics().steps;
+}
+
+TEST(LinearlyImplicitStepper, ScheduledEventsLandOnlyWhenTheyChangeTheState) {
+    int calls = 0;
+    const long plain = countControlledSteps(0, calls);
+    EXPECT_EQ(countControlledSteps(1, calls), plain);
+    EXPECT_EQ(calls, 300);
+    EXPECT_GE(countControlledSteps(2, calls), std::max(plain, 300L));
+    EXPECT_EQ(calls, 300);
+}
+
 TEST(LinearlyImplicitStepper, RejectsBadOptions) {
     SliderScene scene(0.1, kG);
     LinearlyImplicitOptions options;

@@ -25,12 +25,18 @@
 /// methods need microsecond steps; forces left out of D and K are treated explicitly.
 /// Measurements and why: docs/performance.md.
 ///
-/// Events: scheduled events and reports land exactly on their times (fixed steps: the interval up
-/// to each is cut into equal steps no longer than h); event triggers (witness functions) are checked at
-/// the end of every step and a sign change in a direction the event asks for is handled there,
-/// at the step's end (localized to within one step, not to a root tolerance). A handler's change
-/// needs no restart (a one-step method keeps no history): the next step starts from the changed
-/// state. Auto-update discrete variables are updated after every step.
+/// Events: at fixed steps, scheduled events, reports and stepTo() times land exactly on their
+/// times (the interval up to each is cut into equal steps no longer than h). With error control
+/// (LinearlyImplicitOptions::interpolate) the steps go on past stepTo() times and reports, and the
+/// state there is interpolated (cubic Hermite from both ends of the step), as CPodes does; they
+/// land on scheduled events whose handlers changed the state last time (the IK's new targets),
+/// while events that changed nothing (an engaged grasp switch's check) are handled on the
+/// interpolated state too, and on LinearlyImplicitOptions::landingTimes. Event triggers (witness
+/// functions) are checked at the end of every step and a sign change in a direction the event
+/// asks for is handled there, at the step's end (localized to within one step, not to a root
+/// tolerance); a step that passes an output time and triggers is taken again, ending there. A
+/// handler's change needs no restart (a one-step method keeps no history): the next step starts
+/// from the changed state. Auto-update discrete variables are updated after every step.
 
 #include "graspsim/integration/force_jacobian.h"
 #include "graspsim/integration/stepper.h"
@@ -39,6 +45,7 @@
 
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace graspsim::integration {
@@ -54,11 +61,20 @@ struct LinearlyImplicitOptions {
     /// the error estimate (the difference from the embedded first-order solution, weighted RMS,
     /// Simbody's convention: accuracy (1 + |y|) per entry) stays below it; 0: fixed steps.
     double accuracy = 0;
+    /// With error control: reports and scheduled events that fall inside a step are served on the
+    /// state interpolated there (dense output) instead of ending a step on each; false: steps end
+    /// on them, as at fixed steps.
+    bool interpolate = true;
+    /// Times (s) the steps end on exactly, with interpolation too: where the inputs jump (a
+    /// perturbation force switched on or off), so that no step straddles a discontinuity.
+    std::vector<double> landingTimes;
 };
 
 /// The linearly implicit stepper (see the file comment). The System and the
 /// contributors must outlive it.
 class StepMatrix;  // src/integration/step_matrix.h
+class NMatrix;     // src/integration/n_matrix.h
+class StepInterpolation;  // src/integration/step_interpolation.h
 
 class LinearlyImplicitStepper : public Stepper {
 public:
@@ -70,7 +86,8 @@ public:
 
     void initialize(const SimTK::State& initial) override;
     void stepTo(double time) override;
-    const SimTK::State& getState() const override { return state_; }
+    /// The state at the last stepTo() time: the integrator's own, or interpolated inside its last step.
+    const SimTK::State& getState() const override { return outputInterpolated_ ? interpolated_ : state_; }
     long getNumStepsTaken() const override { return steps_ - stepsAtInitialize_; }
     IntegrationStatistics getStatistics() const override;
     std::string getMethodName() const override { return "linearly-implicit-euler"; }
@@ -80,8 +97,16 @@ private:
     bool handleDueScheduledEvents();
     void advance(double tStop);
     void advanceControlled(double tStop);
+    void stepToInterpolating(double time);
+    bool takeControlledStep(double tStop);
+    void restoreStepStart(double t, const SimTK::Vector& q, const SimTK::Vector& u, const SimTK::Vector& z);
+    void showAt(double t);
+    bool handleInterpolatedEvents(const SimTK::HandleEventsResults& results);
+    double findNextLanding(double t) const;
+    double findStop(double target, double nextEvent) const;
+    bool interpolates() const { return options_.accuracy > 0 && options_.interpolate; }
     bool takeStep(double h, double& error);
-    void projectStep();
+    void project(SimTK::State& state);
     void takeEulerStep(double h);
     double takeRosenbrockStep(double h);
     const StepMatrix& findStepMatrix(double g);
@@ -114,6 +139,28 @@ private:
     static constexpr double kMatrixAge = 0.01;       // s
     static constexpr double kMatrixStepRatio = 1.1;  // g / g_built within (1/1.1, 1.1)
     std::unique_ptr<StepMatrix> matrix_;
+    std::unique_ptr<NMatrix> n0_;  // N(q0) of the step under way
+    // Dense output (interpolates()): the last step's start, the state interpolated in it, whether
+    // getState() is that one, the Report-stage variables a scheduled event may hand on to state_,
+    // and the latest time a triggered event may be handled at (an output time inside the step
+    // must see the state before that event: such a step is taken again, ending there).
+    std::unique_ptr<StepInterpolation> stepStart_;
+    SimTK::State interpolated_;
+    bool outputInterpolated_ = false;
+    // Whether interpolated_ differs from state_ only in time, q, u and z (then showAt() need not
+    // copy the whole State again), and whether auto-update variables rule that out.
+    bool interpolatedInSync_ = false, hasAutoUpdate_ = false;
+    std::vector<std::pair<SimTK::SubsystemIndex, SimTK::DiscreteVariableIndex>> reportVariables_;
+    double eventHorizon_ = SimTK::Infinity;
+    bool redo_ = false;
+    // Whether the steps end on the next scheduled event. An event whose handlers change the state
+    // (the fingertip IK's new PD targets, every 10 ms in full contact) is one the steps land on, as
+    // at fixed steps: handled at an interpolated instant, its change would reach the dynamics only
+    // from the next step on. One whose handlers changed nothing last time (the grasp switch's
+    // check while engaged, the IK paused) is expected to change nothing again and is served on an
+    // interpolated state; if it does change something, handleInterpolatedEvents() carries a
+    // Report-stage change on or restarts from the interpolated state, and the next one lands.
+    bool landOnEvents_ = true;
     double matrixTime_ = -SimTK::Infinity;
     std::vector<int> matrixActiveSet_, activeSet_;
     bool matrixStale_ = true;
