@@ -54,6 +54,15 @@ TEST(LinearlyImplicitStepper, FreeFallIsExactWithRosenbrock) {
     EXPECT_NEAR(fallTo(1e-2, 0.5, unused, 2), -0.5 * kG * 0.25, 1e-12);  // second order: exact on a parabola
 }
 
+TEST(LinearlyImplicitStepper, NamesItsMethodByOrder) {
+    SliderScene scene(0.1, kG);
+    LinearlyImplicitOptions options;
+    options.order = 1;
+    EXPECT_EQ(LinearlyImplicitStepper(scene.system, {}, options).getMethodName(), "linearly-implicit-euler");
+    options.order = 2;
+    EXPECT_EQ(LinearlyImplicitStepper(scene.system, {}, options).getMethodName(), "rosenbrock-ros2");
+}
+
 TEST(LinearlyImplicitStepper, FreeFallIsSymplecticEulerAndFirstOrder) {
     const double T = 0.5;
     double previousError = 0;

@@ -90,7 +90,8 @@ public:
     const SimTK::State& getState() const override { return outputInterpolated_ ? interpolated_ : state_; }
     long getNumStepsTaken() const override { return steps_ - stepsAtInitialize_; }
     IntegrationStatistics getStatistics() const override;
-    std::string getMethodName() const override { return "linearly-implicit-euler"; }
+    /// "linearly-implicit-euler" (order 1) or "rosenbrock-ros2" (order 2).
+    std::string getMethodName() const override { return options_.order == 1 ? "linearly-implicit-euler" : "rosenbrock-ros2"; }
     const LinearlyImplicitOptions& getOptions() const { return options_; }
 
 private:
