@@ -159,7 +159,7 @@ LoadStartGrasp findLoadStartGrasp(const scenario::Scenario& scenario, simulation
         if (r.normalForce > 0 && r.depth > 0) start.bodies.push_back(r.bodyA);
     }
     if (start.contacts.empty()) throw NumericalError("compliance prediction: no contact at the load's start");
-    start.p_GO = toEigen(scene.getObject().getBodyOriginLocation(state));
+    start.p_GO = toEigen(scene.getObject().findMassCenterLocationInGround(state));
     return start;
 }
 

@@ -183,6 +183,11 @@ Eigen::Matrix3d calcStickingStiffness(const CompliantContact& c) {
     const double tangential = std::isinf(c.tangentialStiffness) ? 0.0 : 1 / c.tangentialStiffness;
     const Eigen::Matrix3d compliance =
         c.fingerCompliance_G + nn / c.normalStiffness + (Eigen::Matrix3d::Identity() - nn) * tangential;
+    // A rigid finger with a rigid tangential spring leaves only the normal's compliance: singular.
+    if (!(std::abs(compliance.determinant()) > 0)) {
+        throw InputError("compliant grasp: a contact with a rigid finger and an infinite tangential stiffness has no "
+                         "sticking stiffness; give the finger a compliance or the tangent a finite stiffness");
+    }
     return compliance.inverse();
 }
 

@@ -185,7 +185,10 @@ CompliantRamp runCompliantRamp(const std::vector<CompliantContact>& input, const
     CompliantRamp ramp;
     ramp.capacity = CompliantCapacity{kInfinity, kInfinity, kInfinity, {}, {}};
     Vector6 displacement = Vector6::Zero();
-    for (double load = 0; load < options.maxLoad; load += options.rate * options.timeStep) {
+    // The load from the step count, not summed, so that no rounding accumulates over the ramp.
+    for (long k = 0;; ++k) {
+        const double load = static_cast<double>(k) * options.rate * options.timeStep;
+        if (!(load < options.maxLoad)) break;
         if (!updateContactStates(contacts, load, friction, displacement, ramp.capacity)) {
             ramp.capacity.ultimate = load;
             break;

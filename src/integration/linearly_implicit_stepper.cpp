@@ -29,6 +29,9 @@ void checkOptions(const LinearlyImplicitOptions& o) {
         throw InputError("LinearlyImplicitOptions.accuracy: value " + std::to_string(o.accuracy) +
                          " is not accepted; use 0 (fixed steps) or, with order 2, a finite number > 0");
     }
+    for (double t : o.landingTimes) {
+        if (!std::isfinite(t)) throw InputError("LinearlyImplicitOptions.landingTimes: a time is not finite");
+    }
     if (!positive(o.constraintTolerance)) {
         throw InputError("LinearlyImplicitOptions.constraintTolerance: value " + std::to_string(o.constraintTolerance) +
                          " is not accepted; use a finite number > 0");

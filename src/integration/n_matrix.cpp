@@ -5,6 +5,8 @@
 namespace graspsim::integration {
 
 void NMatrix::capture(const SimTK::SimbodyMatterSubsystem& matter, const SimTK::State& state) {
+    // The blocks follow the mobilizers' q and u counts, which are Model-stage (quaternions or angles).
+    if (state.getNQ() != nq_ || state.getNU() != unit_.size()) blocks_.clear();
     nq_ = state.getNQ();
     if (blocks_.empty()) {
         for (SimTK::MobilizedBodyIndex b(1); b < matter.getNumBodies(); ++b) {

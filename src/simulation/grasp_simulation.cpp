@@ -220,8 +220,12 @@ SceneStepper makeLinearlyImplicitStepper(const GraspExperiment& experiment, doub
     integration::LinearlyImplicitOptions implicit;
     implicit.stepSize = stepSize;
     implicit.accuracy = accuracy;
-    // Its steps go on past output samples (dense output), but not past the load's jumps.
+    // Its steps go on past output samples (dense output), but not past the loads' jumps.
     if (const PerturbationForce* p = experiment.getLoads().getPerturbation()) implicit.landingTimes = {p->getStartTime(), p->getEndTime()};
+    if (const RampLoad* r = experiment.getLoads().getLoadRamp()) implicit.landingTimes.push_back(r->getSpec().start);
+    // Events handled at an interpolated instant hand Report-stage changes (the PD ramp, which starts
+    // one IK interval after its update) on to the step's end; that needs steps shorter than it.
+    implicit.interpolate = stepSize <= scene.getScenario().controller.ikInterval;
     made.stepper = std::make_unique<integration::LinearlyImplicitStepper>(scene.getSystem(), contributors, implicit);
     return made;
 }

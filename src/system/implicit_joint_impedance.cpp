@@ -55,8 +55,9 @@ public:
         SimTK::Value<double>::updDowncast(matter_.updDiscreteVariable(s, constraintForcesTimeIndex_)).upd() = t;
     }
     // SemiExplicitEulerTimeStepper realizes Stage::Dynamics once more at the end of its step, with
-    // the step's old constraint forces; updateConstraintForces() then invalidates that
-    // realization, so nobody reads it. Skipping the correction there halves its cost.
+    // the step's old constraint forces; this element adds nothing there, and
+    // updateConstraintForces() completes that realization with the correction
+    // (addCorrectionToRealizedForces) instead of evaluating every force element again.
     bool isStale(const State& s) const {
         const double t = SimTK::Value<double>::downcast(matter_.getDiscreteVariable(s, constraintForcesTimeIndex_)).get();
         return !std::isnan(t) && s.getTime() != t;
@@ -78,7 +79,8 @@ public:
 
     // Adds the correction to the mobility forces of a state realized to Stage::Dynamics without
     // this element (isStale()), with F read from that realization: no force element is
-    // evaluated again.
+    // evaluated again. F is the whole system's, which is what calcGeneralizedForce() sums while
+    // the element's force subsystem is the system's only one (multibody_model.h builds one).
     void addCorrectionToRealizedForces(const State& s) const {
         const SimTK::MultibodySystem& system = SimTK::MultibodySystem::downcast(matter_.getSystem());
         const Vector F = calcResidualForce(s, system.getMobilityForces(s, SimTK::Stage::Dynamics),

@@ -157,6 +157,10 @@ TEST(CompliantGraspCapacity, RejectsBadInput) {
     EXPECT_THROW(calcCompliantCapacity(pinch, Eigen::Vector3d::Zero(), both, options), InputError);
     pinch[1].normalStiffness = 0;
     EXPECT_THROW(calcCompliantCapacity(pinch, Eigen::Vector3d::Zero(), force({0, 1, 0}), options), InputError);
+    // A rigid finger with a rigid tangent has no sticking stiffness (singular compliance).
+    CompliantContact rigid = makeContact({0, 0, 0}, {1, 0, 0}, 5, 4000, 0);
+    rigid.tangentialStiffness = std::numeric_limits<double>::infinity();
+    EXPECT_THROW(calcStickingStiffness(rigid), InputError);
 }
 
 }  // namespace

@@ -293,6 +293,9 @@ TEST(LinearlyImplicitStepper, RejectsBadOptions) {
     options.order = 1;
     options.accuracy = 1e-3;  // error control needs ROS2's estimate
     EXPECT_THROW(LinearlyImplicitStepper(scene.system, {}, options), InputError);
+    options = {};
+    options.landingTimes = {0.1, std::nan("")};
+    EXPECT_THROW(LinearlyImplicitStepper(scene.system, {}, options), InputError);
 }
 
 TEST(LinearlyImplicitStepper, RejectsBadStepSize) {

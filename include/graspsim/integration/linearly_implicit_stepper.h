@@ -65,8 +65,9 @@ struct LinearlyImplicitOptions {
     /// state interpolated there (dense output) instead of ending a step on each; false: steps end
     /// on them, as at fixed steps.
     bool interpolate = true;
-    /// Times (s) the steps end on exactly, with interpolation too: where the inputs jump (a
-    /// perturbation force switched on or off), so that no step straddles a discontinuity.
+    /// Times (s, finite) the steps end on exactly when they interpolate: where the inputs jump (a
+    /// perturbation force switched on or off), so that no step straddles a discontinuity. Without
+    /// interpolation the steps end on every stepTo() time, which the callers put at these times.
     std::vector<double> landingTimes;
 };
 
