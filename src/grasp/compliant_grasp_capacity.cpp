@@ -1,6 +1,7 @@
 #include "graspsim/grasp/compliant_grasp_capacity.h"
 
 #include "graspsim/error.h"
+#include "graspsim/grasp/grasp_matrix.h"
 
 #include <Eigen/Dense>
 
@@ -31,14 +32,6 @@ void checkContact(const CompliantContact& c, std::size_t i) {
     if (!(c.tangentialStiffness > 0)) {
         throw InputError(where + "tangential stiffness (" + std::to_string(c.tangentialStiffness) + " N/m) must be > 0");
     }
-}
-
-// The wrench map D = [I ; r^] (force first) of a force at r from O's origin.
-Map63 calcWrenchMap(const Eigen::Vector3d& r) {
-    Map63 d;
-    d.topRows<3>().setIdentity();
-    d.bottomRows<3>() << 0, -r.z(), r.y(), r.z(), 0, -r.x(), -r.y(), r.x(), 0;
-    return d;
 }
 
 // The solver's running state: per contact its force, mode and (sliding) friction direction.
@@ -198,7 +191,7 @@ CompliantCapacity calcCompliantCapacity(const std::vector<CompliantContact>& con
     std::vector<Map63> maps;
     for (std::size_t i = 0; i < contacts.size(); ++i) {
         checkContact(contacts[i], i);
-        maps.push_back(calcWrenchMap(contacts[i].p_GC - p_GO));
+        maps.push_back(calcContactWrenchMap(contacts[i].p_GC - p_GO, 1.0));  // force first, moment in N m
     }
     const Vector6 direction = reorderToForceFirst(direction_G);
     const double mu = options.mu;
