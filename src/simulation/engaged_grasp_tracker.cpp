@@ -36,7 +36,7 @@ void EngagedGraspTracker::capture(const SimTK::State& state, const std::vector<c
         penetration_.atEngage = std::max(penetration_.atEngage, c.depth);
         if (!(c.normalForce > 0)) continue;
         const SimTK::Vec3 f_G = c.normalForce * SimTK::Vec3(c.n_G) + c.frictionForce_G;
-        tracked_.push_back({~X_GH * c.p_G, ~X_GO.R() * f_G});
+        tracked_.push_back({~X_GH * c.p_G, ~X_GO.R() * f_G, ~X_GO.R() * SimTK::Vec3(c.n_G)});
     }
     penetration_.maxWhileEngaged = std::max(penetration_.maxWhileEngaged, penetration_.atEngage);
 }
@@ -56,16 +56,17 @@ double EngagedGraspTracker::calcQuality(const SimTK::State& state) const {
     const SimTK::SpatialVec W = findConstraintWrench(state);
     const SimTK::Transform& X_GH = context_->palm.getBodyTransform(state);
     const SimTK::Transform& X_GO = context_->object.getBodyTransform(state);
-    const scenario::ObjectSpec& object = context_->objectShape;
     std::vector<grasp::GraspContact> contacts;
     std::vector<Eigen::Vector3d> reference;
     for (const TrackedContact& t : tracked_) {
         grasp::GraspContact c;
-        const SimTK::Vec3 p_GC = X_GH * t.p_HC;
-        const SimTK::Vec3 p_OC = ~X_GO * p_GC;
-        const model::Vec3 n_O = object.findOutwardNormal({p_OC[0], p_OC[1], p_OC[2]});
-        c.p_GC = toEigen(p_GC);
-        c.n_G = -toEigen(X_GO.R() * SimTK::Vec3(n_O[0], n_O[1], n_O[2])).normalized();
+        // The normal as the contact had it, turned with the object: the face it pressed. Taken
+        // again from the shape at the palm-fixed point, a pad near an edge of a box that had
+        // pivoted in the hand got the neighbouring face's normal, its captured force pointed out
+        // of the object, and Q fell to 0 on the first check (the engage/release chatter of a
+        // loaded pinch, docs/capacity.md).
+        c.p_GC = toEigen(X_GH * t.p_HC);
+        c.n_G = toEigen(X_GO.R() * t.n_O).normalized();
         contacts.push_back(c);
         reference.push_back(toEigen(X_GO.R() * t.f_O));
     }

@@ -47,7 +47,6 @@ ApproximationContext makeContext(const GraspScene& scene, const grasp::GraspAtta
                                 scene.getFingerMobilizers(),
                                 scene.getCompliantContacts(),
                                 scene.getContactParameters(),
-                                s.object,
                                 toSimTKVec3(s.world.gravity),
                                 scene.getFingertipGoals(),
                                 scene.getObjectHold(),

@@ -323,6 +323,10 @@ TEST(GraspSwitch, OverloadReleaseHandsBackAnObjectFullContactHolds) {
         });
         ASSERT_NE(overload, approx.events.end()) << "the pull overloads the engaged constraint";
         EXPECT_TRUE(approx.summary.held) << "released at " << overload->time << " s: " << overload->reason;
+        // Once full contact has the pivoted phone steady, the switch engages again and stays: with
+        // the tracked normals taken again from the box at palm-fixed points it engaged and
+        // released every 20 ms (about 70 switches in the second after the pull).
+        EXPECT_LE(approx.events.size(), 6u);
         EXPECT_LT(approx.summary.maxEngagedPenetrationGrowth, 2 * simulation::ApproxOptions{}.releasePenetration);
     }
 }

@@ -31,7 +31,6 @@ struct ApproximationContext {
     std::vector<SimTK::MobilizedBodyIndex> fingerMobilizers;  ///< locked to merge the hand
     const contact::CompliantContactForce& contacts;  ///< the finger-object contact pairs
     contact::ContactParameters contactParameters;    ///< the pairs' friction and sticking speed
-    const scenario::ObjectSpec& objectShape;     ///< the object's surface (outward normals)
     SimTK::Vec3 gravity_G;                       ///< the scenario's gravity, in Ground (m/s^2)
     const FingertipGoals& goals;                 ///< goal end-effectors and their surface points
     ObjectHold hold;                             ///< the object's hold until its release

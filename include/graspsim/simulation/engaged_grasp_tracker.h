@@ -7,9 +7,9 @@
 ///
 /// TRACKED CONTACTS. At engagement every finger-object contact carrying force is captured: its
 /// point as a station of the palm H (the fingers are locked to it while engaged, so the point
-/// moves with the hand) and its force on the object, expressed in O. While engaged, contact i is
-/// at p_GC_i = X_GH p_HC_i, with the object's inward surface normal there (ObjectSpec::
-/// findOutwardNormal of the point in O, negated).
+/// moves with the hand), its force on the object and its normal into the object, both expressed
+/// in O. While engaged, contact i is at p_GC_i = X_GH p_HC_i with normal R_GO n_O_i: the face it
+/// pressed at engagement, even where the palm-fixed point now lies nearer another face.
 ///
 /// QUALITY WHILE ENGAGED (calcQuality). The contact pairs are off, so there are no contact forces
 /// to build Q from. Instead the constraint's wrench on the object (LimitedWeld::findWrench or
@@ -81,6 +81,7 @@ private:
     struct TrackedContact {
         SimTK::Vec3 p_HC;  // contact point on the palm (m)
         SimTK::Vec3 f_O;   // contact force on the object at engagement, in O (N)
+        SimTK::Vec3 n_O;   // the contact's normal at engagement, into the object, in O
     };
     SimTK::SpatialVec findConstraintWrench(const SimTK::State& state) const;
 
