@@ -69,6 +69,27 @@ void checkApproxAttach(const scenario::Scenario& scenario, const SimulationOptio
     }
 }
 
+void checkFixedStepStability(const scenario::Scenario& scenario, const SimulationOptions& options) {
+    if (options.contact != ContactModel::Compliant || options.integrator != IntegratorChoice::LinearlyImplicitFixed ||
+        scenario.friction.model != contact::FrictionModel::Anchor) {
+        return;
+    }
+    const double step = options.stepSize > 0 ? options.stepSize : scenario.simulation.stepSize;
+    const double tau = scenario.friction.anchor.relaxationTime;
+    // The linearly implicit stepper leaves the anchors' rates out of its Jacobian: they are
+    // integrated explicitly, and ROS2's explicit part (a two-stage Runge-Kutta method) is stable for
+    // a decay rate 1 / tau only while step / tau <= 2.
+    if (step <= kAnchorStabilityLimit * tau) return;
+    const std::string field = options.stepSize > 0 ? "--step-size" : scenario.source + ": simulation.step_size";
+    char text[400];
+    std::snprintf(text, sizeof text,
+                  "%s: %g s is not accepted with --integrator implicit-fixed and friction_model anchor: the anchors' "
+                  "relaxation (contact.anchor_relaxation_time %g s) is integrated explicitly and is unstable for steps "
+                  "above %g x that, %g s; use a step <= %g s, a longer anchor_relaxation_time, or --integrator implicit",
+                  field.c_str(), step, tau, kAnchorStabilityLimit, kAnchorStabilityLimit * tau, kAnchorStabilityLimit * tau);
+    throw InputError(text);
+}
+
 ApproxOptions resolveApproxOptions(const ApproxOptions& given, const scenario::ApproximationSpec& scenario) {
     ApproxOptions options = given;
     if (options.qThreshold == 0) options.qThreshold = scenario.qThreshold;
