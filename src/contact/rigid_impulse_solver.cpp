@@ -127,9 +127,9 @@ SweepError sweepContacts(const Operands& op, const Array_<MultiplierIndex>& part
     }
     for (IS::UniContactRT& rt : contacts) {
         if (rt.m_type == IS::Observing || !rt.hasFriction()) continue;
-        double sums[3];
-        const unsigned k = std::min<unsigned>(rt.m_Fk.size(), 3);
         if (rt.m_Fk.size() > 3) throw Error("RigidImpulseSolver: a contact with more than 3 friction rows");
+        const unsigned k = rt.m_Fk.size();
+        double sums[3];
         for (unsigned i = 0; i < k; ++i) sums[i] = rowTimesPi(op, rt.m_Fk[i], participating, pi);
         double er2 = 0;
         for (unsigned i = 0; i < k; ++i) er2 += relaxRow(op, rt.m_Fk[i], rhs[rt.m_Fk[i]], sums[i], sor, pi);
