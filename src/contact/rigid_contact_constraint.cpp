@@ -54,6 +54,7 @@ RigidContactGeometry RigidContactConstraint::findGeometry(const Transform& X_FA,
 
 void RigidContactConstraint::realizeTopology(SimTK::State& state) const {
     const SimTK::SimbodyMatterSubsystem& matter = getMatterSubsystem();
+    m_matter = &matter;
     m_poseIndex = matter.allocateLazyCacheEntry(state, SimTK::Stage::Position, new SimTK::Value<PoseTerms>());
     m_velocityIndex = matter.allocateLazyCacheEntry(state, SimTK::Stage::Velocity, new SimTK::Value<VelocityTerms>());
 }
@@ -85,21 +86,25 @@ RigidContactConstraint::VelocityTerms RigidContactConstraint::calcVelocityTerms(
 }
 
 const RigidContactConstraint::PoseTerms& RigidContactConstraint::findPoseTerms(const SimTK::State& state) const {
-    const SimTK::SimbodyMatterSubsystem& matter = getMatterSubsystem();
-    auto& cached = SimTK::Value<PoseTerms>::updDowncast(matter.updCacheEntry(state, m_poseIndex));
-    if (!matter.isCacheValueRealized(state, m_poseIndex)) {
+    // The entry is ours (realizeTopology()): a static cast, and the subsystem kept from there,
+    // spare the dynamic casts of Value::updDowncast() and getMatterSubsystem(), which cost more
+    // than the lookup itself at one call per constraint row and G M^-1 G^T column.
+    auto& cached = static_cast<SimTK::Value<PoseTerms>&>(m_matter->updCacheEntry(state, m_poseIndex));
+    if (!m_matter->isCacheValueRealized(state, m_poseIndex)) {
         cached.upd() = calcPoseTerms(state);
-        matter.markCacheValueRealized(state, m_poseIndex);
+        m_matter->markCacheValueRealized(state, m_poseIndex);
     }
     return cached.get();
 }
 
 const RigidContactConstraint::VelocityTerms& RigidContactConstraint::findVelocityTerms(const SimTK::State& state) const {
-    const SimTK::SimbodyMatterSubsystem& matter = getMatterSubsystem();
-    auto& cached = SimTK::Value<VelocityTerms>::updDowncast(matter.updCacheEntry(state, m_velocityIndex));
-    if (!matter.isCacheValueRealized(state, m_velocityIndex)) {
+    // The entry is ours (realizeTopology()): a static cast, and the subsystem kept from there,
+    // spare the dynamic casts of Value::updDowncast() and getMatterSubsystem(), which cost more
+    // than the lookup itself at one call per constraint row and G M^-1 G^T column.
+    auto& cached = static_cast<SimTK::Value<VelocityTerms>&>(m_matter->updCacheEntry(state, m_velocityIndex));
+    if (!m_matter->isCacheValueRealized(state, m_velocityIndex)) {
         cached.upd() = calcVelocityTerms(state);
-        matter.markCacheValueRealized(state, m_velocityIndex);
+        m_matter->markCacheValueRealized(state, m_velocityIndex);
     }
     return cached.get();
 }
@@ -111,9 +116,8 @@ Vec3 RigidContactConstraint::findSlipVelocity(const PoseTerms& pose,
     return (V_B[1] + (V_B[0] % pose.r_B)) - (V_A[1] + (V_A[0] % pose.r_A));
 }
 
-Vec3 RigidContactConstraint::findRelativeAcceleration(const SimTK::State& state,
+Vec3 RigidContactConstraint::findRelativeAcceleration(const SimTK::State& state, const PoseTerms& pose,
                                                       const Array_<SpatialVec, ConstrainedBodyIndex>& A_AB) const {
-    const PoseTerms& pose = findPoseTerms(state);
     const VelocityTerms& terms = findVelocityTerms(state);
     const SpatialVec& A_A = A_AB[m_bodyA];
     const SpatialVec& A_B = A_AB[m_bodyB];
@@ -145,7 +149,8 @@ void RigidContactConstraint::calcPositionDotErrors(
 void RigidContactConstraint::calcPositionDotDotErrors(
     const SimTK::State& state, const Array_<SpatialVec, ConstrainedBodyIndex>& A_AB,
     const Array_<SimTK::Real, SimTK::ConstrainedQIndex>&, Array_<SimTK::Real>& paerr) const {
-    paerr[0] = ~findPoseTerms(state).geometry.n_F * findRelativeAcceleration(state, A_AB);
+    const PoseTerms& pose = findPoseTerms(state);
+    paerr[0] = ~pose.geometry.n_F * findRelativeAcceleration(state, pose, A_AB);
 }
 
 void RigidContactConstraint::addInPositionConstraintForces(
@@ -169,7 +174,7 @@ void RigidContactConstraint::calcVelocityDotErrors(
     const SimTK::State& state, const Array_<SpatialVec, ConstrainedBodyIndex>& A_AB,
     const Array_<SimTK::Real, SimTK::ConstrainedUIndex>&, Array_<SimTK::Real>& vaerr) const {
     const PoseTerms& pose = findPoseTerms(state);
-    const Vec3 a = findRelativeAcceleration(state, A_AB);
+    const Vec3 a = findRelativeAcceleration(state, pose, A_AB);
     vaerr[0] = ~pose.tx * a;
     vaerr[1] = ~pose.ty * a;
 }

@@ -1,5 +1,6 @@
 #include "graspsim/simulation/rigid_stepping.h"
 
+#include "graspsim/contact/rigid_impulse_solver.h"
 #include "graspsim/error.h"
 #include "graspsim/system/silenced_stdout.h"
 
@@ -20,8 +21,10 @@ RigidStepper::RigidStepper(const GraspScene& scene, double stepSize)
     : scene_(scene), stepper_(scene.getSystem()), stepSize_(stepSize) {
     if (scene.getContactModel() != ContactModel::Rigid) throw InputError("rigid stepping: the scene was built for compliant contact");
     if (!(std::isfinite(stepSize) && stepSize > 0)) throw InputError("rigid stepping: step size (" + std::to_string(stepSize) + " s) must be > 0");
-    // Simbody 3.7's default PLUS solver sticks at any pull (rigid_contact.h).
+    // Simbody 3.7's default PLUS solver sticks at any pull (rigid_contact.h). PGS it is, as
+    // Simbody's PGSImpulseSolver computes it but without Debian's debug work (rigid_impulse_solver.h).
     stepper_.setImpulseSolverType(SimTK::SemiExplicitEulerTimeStepper::PGS);
+    stepper_.setImpulseSolver(new contact::RigidImpulseSolver());
     stepper_.setConstraintTolerance(kRigidContactTolerance);
 }
 

@@ -19,7 +19,9 @@
 /// friction multipliers inside the Coulomb cone |lambda_t| <= mu |lambda_n|, with mu from
 /// calcEffectiveCOF() at the slip speed at the start of the step.
 ///
-/// Use the PGS impulse solver (SemiExplicitEulerTimeStepper::setImpulseSolverType(PGS)).
+/// Use the PGS impulse solver (SemiExplicitEulerTimeStepper::setImpulseSolverType(PGS)), or
+/// RigidImpulseSolver (rigid_impulse_solver.h: the same impulses without Debian's debug work),
+/// which simulation::RigidStepper installs.
 /// Simbody 3.7's default PLUS solver, in a box squeezed between two spheres, keeps the box stuck
 /// at any pull, with friction impulses beyond the Coulomb cone; Simbody's own PointPlaneContact
 /// does exactly the same in that scene, so this is the solver's, not this class's. PGS stops at

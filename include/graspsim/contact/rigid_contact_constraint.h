@@ -109,7 +109,7 @@ private:
                                  const SimTK::Array_<SimTK::SpatialVec, SimTK::ConstrainedBodyIndex>& V_AB) const;
     /// a_B(P) - a_A(P) - 2 w_A x (v_B(P) - v_A(P)) (ancestor frame), see the file comment.
     SimTK::Vec3 findRelativeAcceleration(
-        const SimTK::State& state,
+        const SimTK::State& state, const PoseTerms& pose,
         const SimTK::Array_<SimTK::SpatialVec, SimTK::ConstrainedBodyIndex>& A_AB) const;
     /// Adds force f_A at P on B and -f_A on A (f_A in the ancestor frame).
     void addInContactForce(const PoseTerms& pose, const SimTK::Vec3& f,
@@ -120,6 +120,7 @@ private:
     SimTK::Transform m_X_BS_A, m_X_BS_B;
     double m_searchMargin;
     mutable SimTK::CacheEntryIndex m_poseIndex, m_velocityIndex;  // allocated in realizeTopology()
+    mutable const SimTK::SimbodyMatterSubsystem* m_matter = nullptr;  // set in realizeTopology()
 };
 
 }  // namespace graspsim::contact

@@ -1,7 +1,8 @@
 #pragma once
 /// @file
 /// Stepping a grasp scene with rigid contact: Simbody's SemiExplicitEulerTimeStepper (PGS
-/// impulse solver) at a fixed step, with everything that stepper does not do itself.
+/// impulses, by contact::RigidImpulseSolver) at a fixed step, with everything that stepper does
+/// not do itself.
 ///
 /// The stepper takes exactly one step per stepTo() and has no event handling, so this loop
 ///  - takes steps of the fixed size h, shortened to land exactly on every time where an input
