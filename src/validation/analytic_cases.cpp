@@ -2,6 +2,7 @@
 
 #include "graspsim/contact/compliant_contact_force.h"
 #include "graspsim/contact/rigid_contact.h"
+#include "graspsim/contact/rigid_impulse_solver.h"
 #include "graspsim/system/silenced_stdout.h"
 
 #include <simbody/Simbody.h>
@@ -86,6 +87,7 @@ SqueezeOutcome runRigidSqueeze(double pull, double duration) {
     for (const contact::ContactPair& p : scene.makePairs(makeParameters())) contact::RigidContact::add(scene.matter, p);
     SimTK::SemiExplicitEulerTimeStepper stepper(scene.system);
     stepper.setImpulseSolverType(SimTK::SemiExplicitEulerTimeStepper::PGS);
+    stepper.setImpulseSolver(new contact::RigidImpulseSolver());  // the same PGS, without Debian's debug work
     stepper.initialize(scene.makeState(0));
     const system::SilencedStdout quiet;  // Debian's Simbody traces every rigid step on stdout
     constexpr double h = 1e-3;
