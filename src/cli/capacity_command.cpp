@@ -4,6 +4,7 @@
 
 #include "graspsim/planning/planned_scenario.h"
 #include "graspsim/capacity/capacity_files.h"
+#include "graspsim/capacity/capacity_plot.h"
 #include "graspsim/capacity/compliance_prediction.h"
 #include "graspsim/capacity/load_direction.h"
 #include "graspsim/error.h"
@@ -202,6 +203,10 @@ int CapacityCommand::run() const {
                   << measurements.back().wallTime << " s wall]\n";
     }
     if (!o.out.empty()) capacity::writeCapacityFiles(o.out, scenario.name, measurements);
+    if (!o.out.empty() && o.direction == "all") {
+        const capacity::CapacityPlot plot = capacity::drawCapacityPlot(o.out);
+        std::cout << (plot.skipped.empty() ? "plot: " + plot.file : plot.skipped) << "\n";
+    }
     const capacity::GraspCapacity& first = measurements.front();
     std::string last = "capacity of " + scenario.name + " (" + simulation::toString(first.contact) + ", " + simulation::toString(first.mode) +
                        (first.realization.empty() ? "" : ", " + first.realization) + "): ";
