@@ -5,8 +5,8 @@ Usage: /usr/bin/python3 analysis/plot_capacity.py OUT.png DIR [DIR ...]
 Reads DIR/capacity.json (format in include/graspsim/capacity/capacity_files.h) from each folder
 (e.g. one full-contact run and one approx run) and draws, per folder, the slip-onset force of the
 six axis directions on three polar panels (the x-y, y-z and z-x planes of G: each axis direction
-at its angle in the plane, its load as the radius), and the three torques as bars. Nothing here
-computes a pass/fail.
+at its angle in the plane, its load as the radius; a direction that did not slip within its ramp
+is left out), and the three torques as bars. Nothing here computes a pass/fail.
 """
 
 import json
@@ -44,7 +44,8 @@ def main(argv):
         for label, forces, _ in runs:
             names = [a, b, "-" + a, "-" + b, a]
             angles = [0, math.pi / 2, math.pi, 3 * math.pi / 2, 2 * math.pi]
-            radii = [forces.get(n) or 0 for n in names]
+            # A direction that did not slip within the ramp has no onset: a gap, not a zero.
+            radii = [math.nan if forces.get(n) is None else forces[n] for n in names]
             ax.plot(angles, radii, marker="o", label=label)
         ax.set_xticks([0, math.pi / 2, math.pi, 3 * math.pi / 2])
         ax.set_xticklabels([a, b, "-" + a, "-" + b])
@@ -52,7 +53,8 @@ def main(argv):
     ax = fig.add_subplot(1, 4, 4)
     width = 0.8 / max(1, len(runs))
     for i, (label, _, torques) in enumerate(runs):
-        ax.bar([j + i * width for j in range(3)], [torques.get(n) or 0 for n in ("x", "y", "z")], width, label=label)
+        ax.bar([j + i * width for j in range(3)], [math.nan if torques.get(n) is None else torques[n] for n in ("x", "y", "z")],
+               width, label=label)
     ax.set_xticks([j + 0.4 - width / 2 for j in range(3)])
     ax.set_xticklabels(["torque x", "torque y", "torque z"])
     ax.set_ylabel("slip onset (N m)")
