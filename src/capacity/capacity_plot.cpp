@@ -13,16 +13,8 @@ CapacityPlot drawCapacityPlot(const std::string& folder) {
     const io::ScriptRun run = io::runPythonScript(
         folder + "/plot_capacity.py", std::string(io::findEmbeddedFile(kEmbeddedFiles, kEmbeddedFileCount, "plot_capacity.py")),
         {png, folder}, true);
-    const std::string python = io::findPythonInterpreter();
-    if (!run.started) {
-        plot.skipped = "plot skipped: no Python interpreter at " + python +
-                       " (install python3-matplotlib or set GRASPSIM_PYTHON); capacity.json and capacity.csv are complete";
-    } else if (run.exitStatus != 0) {
-        plot.skipped = "plot skipped: " + python + " plot_capacity.py failed (" + (run.lines.empty() ? "no output" : run.lines.back()) +
-                       "; it needs python3-matplotlib); capacity.json and capacity.csv are complete";
-    } else {
-        plot.file = png;
-    }
+    plot.skipped = io::explainSkippedPlots(run, "plot_capacity.py", "capacity.json and capacity.csv are complete");
+    if (plot.skipped.empty()) plot.file = png;
     return plot;
 }
 

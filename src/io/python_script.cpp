@@ -43,4 +43,14 @@ ScriptRun runPythonScript(const std::string& scriptPath, const std::string& text
     return run;
 }
 
+std::string explainSkippedPlots(const ScriptRun& run, const std::string& script, const std::string& complete) {
+    const std::string python = findPythonInterpreter();
+    if (!run.started) {
+        return "plots skipped: no Python interpreter at " + python + " (install python3-matplotlib or set GRASPSIM_PYTHON); " + complete;
+    }
+    if (run.exitStatus == 0) return {};
+    return "plots skipped: " + python + " " + script + " failed (" + (run.lines.empty() ? "no output" : run.lines.back()) +
+           "; it needs python3-matplotlib); " + complete;
+}
+
 }  // namespace graspsim::io
