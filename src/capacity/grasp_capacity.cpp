@@ -1,12 +1,11 @@
 #include "graspsim/capacity/grasp_capacity.h"
 
 #include "graspsim/error.h"
-#include "graspsim/integration/simbody_stepper.h"
-#include "graspsim/integration/cvode_integrator.h"
 #include "graspsim/simulation/grasp_experiment.h"
 #include "graspsim/simulation/grasp_scene.h"
 #include "graspsim/simulation/grasp_switch.h"
 #include "graspsim/simulation/rigid_stepping.h"
+#include "graspsim/simulation/scene_stepper.h"
 
 #include <algorithm>
 #include <chrono>
@@ -20,7 +19,8 @@ namespace {
 
 constexpr double kGravity = 9.81;  // m/s^2, for the default rate only
 
-// The scene and its stepper: CPodes or CVODE for compliant contact, the rigid stepper for rigid.
+// The scene and its stepper: the options' integrator for compliant contact (scene_stepper.h), the
+// rigid stepper for rigid.
 class GraspRun : public LoadedRun {
 public:
     GraspRun(const scenario::Scenario& scenario, simulation::SimulationOptions options)
@@ -30,14 +30,8 @@ public:
             rigid_->initialize(experiment_.makeInitialState());
             return;
         }
-        const double accuracy = options.accuracy > 0 ? options.accuracy : scenario.simulation.accuracy;
-        if (options.integrator == simulation::IntegratorChoice::Cvode) {
-            integration::CvodeOptions cvode;
-            cvode.relativeTolerance = accuracy;
-            stepper_ = std::make_unique<integration::CvodeIntegrator>(scene_.getSystem(), cvode);
-        } else {
-            stepper_ = std::make_unique<integration::SimbodyCpodesStepper>(scene_.getSystem(), accuracy);
-        }
+        made_ = simulation::makeSceneStepper(experiment_, options);
+        stepper_ = made_.stepper.get();
         stepper_->initialize(experiment_.makeInitialState());
     }
 
@@ -124,7 +118,8 @@ private:
 
     simulation::GraspExperiment experiment_;
     const simulation::GraspScene& scene_;
-    std::unique_ptr<integration::Stepper> stepper_;
+    simulation::SceneStepper made_;
+    integration::Stepper* stepper_ = nullptr;  // made_.stepper
     std::unique_ptr<simulation::RigidStepper> rigid_;
     std::vector<SimTK::Vec3> reference_;
     SimTK::Vec4 q_HO_reference_{1, 0, 0, 0};  // R_HO at the reference, as a quaternion

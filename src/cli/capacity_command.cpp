@@ -38,6 +38,8 @@ struct CapacityCommand::Options {
     std::string limitsFriction = "dynamic";
     std::string limits = "thesis";
     std::string accuracy;
+    std::string integrator = "simbody";
+    std::string stepSize;
     std::string out;
 };
 
@@ -64,6 +66,11 @@ CapacityCommand::CapacityCommand(CLI::App& app) : options_(std::make_shared<Opti
                          "the forces' rate, the torques' scaled by the farthest goal's distance)");
     command_->add_option("--method", o.method, "ramp (default), bisection (constant loads, --hold s each) or compliance (predicted by the grasp's compliance model from full contact at the load's start; docs/capacity.md)");
     command_->add_option("--accuracy", o.accuracy, "integrator relative accuracy in (0, 1) (default: the scenario's)");
+    command_->add_option("--integrator", o.integrator,
+                         "compliant contact: simbody (default, CPodes BDF), cvode, implicit (linearly implicit, error-"
+                         "controlled steps up to --step-size) or implicit-fixed");
+    command_->add_option("--step-size", o.stepSize,
+                         "implicit: longest step, implicit-fixed: the step, in s, > 0 (default: the scenario's simulation.step_size)");
     command_->add_option("--max-duration", o.maxDuration, "ramp: longest ramp, s (default 4)");
     command_->add_option("--hold", o.hold, "bisection: how long each constant load is held, s (default 1)");
     command_->add_option("--guess", o.guess, "bisection: first load to try, N or N m (default: rate x 1 s)");
@@ -139,6 +146,8 @@ CapacityCommand::Plan CapacityCommand::makePlan() const {
     plan.simulation.contact = simulation::parseContactModel(o.contact, "--contact");
     plan.simulation.mode = simulation::parseSimulationMode(o.mode, "--mode");
     plan.simulation.accuracy = parseAccuracy(o.accuracy);
+    plan.simulation.integrator = simulation::parseIntegratorChoice(o.integrator, "--integrator");
+    plan.simulation.stepSize = parseStepSize(o.stepSize);
     plan.simulation.approx.constraint = simulation::parseApproxConstraint(o.constraint, "--constraint");
     plan.simulation.approx.attach = simulation::parseApproxAttach(o.attach, "--attach");
     plan.simulation.approx.releaseSlideDistance = parsePositive(o.releaseSlide, "--release-slide", "the release distance (m)",

@@ -2,14 +2,10 @@
 
 
 #include "graspsim/error.h"
-#include "graspsim/contact/compliant_contact_jacobian.h"
-#include "graspsim/integration/cvode_integrator.h"
-#include "graspsim/integration/joint_impedance_jacobian.h"
-#include "graspsim/integration/linearly_implicit_stepper.h"
-#include "graspsim/integration/simbody_stepper.h"
 #include "graspsim/simulation/contact_grasp_quality.h"
 #include "graspsim/simulation/grasp_experiment.h"
 #include "graspsim/simulation/rigid_stepping.h"
+#include "graspsim/simulation/scene_stepper.h"
 
 #include <algorithm>
 #include <chrono>
@@ -195,64 +191,6 @@ void stepThroughSamples(const GraspExperiment& experiment, AnyStepper& stepper, 
     }
 }
 
-// A stepper with what it needs kept alive: the linearly implicit one's force Jacobians.
-struct SceneStepper {
-    std::vector<std::unique_ptr<integration::ForceJacobianContributor>> jacobians;
-    std::unique_ptr<integration::Stepper> stepper;
-};
-
-// The linearly implicit stepper (ROS2) with the joints' impedance and the compliant contacts
-// implicit; steps up to `stepSize`, chosen by error control at `accuracy` (0: fixed steps).
-SceneStepper makeLinearlyImplicitStepper(const GraspExperiment& experiment, double stepSize, double accuracy) {
-    const GraspScene& scene = experiment.getScene();
-    const GraspApproximation* approximation = experiment.getApproximation();
-    SceneStepper made;
-    const SimTK::SimbodyMatterSubsystem& matter = scene.getModel().getMatter();
-    made.jacobians.push_back(std::make_unique<integration::JointImpedanceJacobian>(
-        matter, scene.getModel().getForces(), scene.findJointImpedances()));
-    made.jacobians.push_back(std::make_unique<contact::CompliantContactJacobian>(matter, scene.getCompliantContacts()));
-    if (approximation) {
-        auto attachment = approximation->getAttachment().makeForceJacobian(matter, scene.getPalm(), scene.getObject());
-        if (attachment) made.jacobians.push_back(std::move(attachment));
-    }
-    std::vector<const integration::ForceJacobianContributor*> contributors;
-    for (const auto& j : made.jacobians) contributors.push_back(j.get());
-    integration::LinearlyImplicitOptions implicit;
-    implicit.stepSize = stepSize;
-    implicit.accuracy = accuracy;
-    // Its steps go on past output samples (dense output), but not past the loads' jumps.
-    if (const PerturbationForce* p = experiment.getLoads().getPerturbation()) implicit.landingTimes = {p->getStartTime(), p->getEndTime()};
-    if (const RampLoad* r = experiment.getLoads().getLoadRamp()) implicit.landingTimes.push_back(r->getSpec().start);
-    // Events handled at an interpolated instant hand Report-stage changes (the PD ramp, which starts
-    // one IK interval after its update) on to the step's end; that needs steps shorter than it.
-    implicit.interpolate = stepSize <= scene.getScenario().controller.ikInterval;
-    made.stepper = std::make_unique<integration::LinearlyImplicitStepper>(scene.getSystem(), contributors, implicit);
-    return made;
-}
-
-// The accuracy is a relative tolerance for both BDF integrators; CVODE takes its atol and
-// constraint tolerance from it as Simbody's integrators do (cvode_integrator.h).
-SceneStepper makeStepper(const GraspExperiment& experiment, const SimulationOptions& options) {
-    const GraspScene& scene = experiment.getScene();
-    const scenario::SimulationSpec& spec = scene.getScenario().simulation;
-    const double accuracy = options.accuracy > 0 ? options.accuracy : spec.accuracy;
-    if (options.integrator == IntegratorChoice::LinearlyImplicit) {
-        return makeLinearlyImplicitStepper(experiment, options.stepSize > 0 ? options.stepSize : spec.stepSize, accuracy);
-    }
-    if (options.integrator == IntegratorChoice::LinearlyImplicitFixed) {
-        return makeLinearlyImplicitStepper(experiment, options.stepSize > 0 ? options.stepSize : spec.stepSize, 0.0);
-    }
-    SceneStepper made;
-    if (options.integrator == IntegratorChoice::SimbodyCpodes) {
-        made.stepper = std::make_unique<integration::SimbodyCpodesStepper>(scene.getSystem(), accuracy);
-        return made;
-    }
-    integration::CvodeOptions cvode;
-    cvode.relativeTolerance = accuracy;
-    made.stepper = std::make_unique<integration::CvodeIntegrator>(scene.getSystem(), cvode);
-    return made;
-}
-
 SimulationSummary makeSummaryHeader(const scenario::Scenario& scenario, const SimulationOptions& options, double duration) {
     SimulationSummary summary;
     summary.scenario = scenario.name;
@@ -375,7 +313,7 @@ SimulationResult runGraspSimulation(const scenario::Scenario& scenario, const Si
         result.summary.integrator = "simbody-semiexpliciteuler-pgs";
         return result;
     }
-    const SceneStepper made = makeStepper(experiment, options);
+    const SceneStepper made = makeSceneStepper(experiment, options);
     const std::unique_ptr<integration::Stepper>& stepper = made.stepper;
     runScene(experiment, *stepper, duration, "integration failed", progress, observer, result);
     result.summary.integrator = stepper->getMethodName();

@@ -70,6 +70,11 @@ void checkApproxAttach(const scenario::Scenario& scenario, const SimulationOptio
 }
 
 void checkFixedStepStability(const scenario::Scenario& scenario, const SimulationOptions& options) {
+    if (options.contact == ContactModel::Rigid && options.integrator != IntegratorChoice::SimbodyCpodes) {
+        throw InputError("--integrator: '" + toString(options.integrator) +
+                         "' is not accepted with --contact rigid (rigid contact has its own time stepper, Simbody's "
+                         "semi-explicit Euler with impulses, rigid_stepping.h); leave --integrator out");
+    }
     if (options.contact != ContactModel::Compliant || options.integrator != IntegratorChoice::LinearlyImplicitFixed ||
         scenario.friction.model != contact::FrictionModel::Anchor) {
         return;

@@ -33,6 +33,9 @@ TEST_F(CapacityCommand, BadInputIsOneLineAndWritesNothing) {
     expectRejected("--method guess", "--method");
     expectRejected("--method compliance", "--out");  // it writes no files
     expectRejected("--mode half", "--mode");
+    expectRejected("--integrator euler", "--integrator");
+    expectRejected("--integrator implicit --step-size 0", "--step-size");
+    expectRejected("--contact rigid --integrator implicit", "--integrator");  // rigid has its own stepper
     // About the line through the phone's two goals, R_GO (p_index - p_thumb) normalized (the
     // scenario's goals and orientation; grasp_capacity_test derives it in code): nothing resists.
     expectRejected("--torque --direction 0.8866,-0.4599,-0.0500", "--direction");
@@ -53,4 +56,27 @@ TEST_F(CapacityCommand, RampWritesTheFiguresItPrints) {
     const std::string last = r.out.substr(r.out.rfind('\n', r.out.size() - 2) + 1);
     EXPECT_EQ(last.rfind("capacity of phone-pinch (compliant, full): -y force (ramp): slips at ", 0), 0u) << last;
     EXPECT_NE(last.find(", drops at "), std::string::npos) << last;
+}
+
+// The ramp on the linearly implicit stepper against the same ramp on CPodes (the second method):
+// the phone's slip onset and drop within 3 % of each other (two integrators of one model at the
+// scenario's accuracy; their trajectories agree within 0.14 mm, docs/performance.md).
+TEST_F(CapacityCommand, TheImplicitStepperFindsTheFiguresCpodesFinds) {
+    const auto figures = [&](const std::string& integrator) {
+        const std::string out = (dir_ / ("cap-" + integrator)).string();
+        const RunResult r = run("capacity phone-pinch --rate 8 --max-duration 0.6 --integrator " + integrator + " --out " + out);
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        const std::string json = slurp(fs::path(out) / "capacity.json");
+        const auto number = [&](const std::string& key) {
+            const std::size_t at = json.find("\"" + key + "\": ");
+            return at == std::string::npos ? -1.0 : std::stod(json.substr(at + key.size() + 4));
+        };
+        return std::make_pair(number("slip_onset_n"), number("drop_n"));
+    };
+    const auto [cpodesSlip, cpodesDrop] = figures("simbody");
+    const auto [implicitSlip, implicitDrop] = figures("implicit");
+    ASSERT_GT(cpodesSlip, 0);
+    ASSERT_GT(cpodesDrop, 0);
+    EXPECT_NEAR(implicitSlip, cpodesSlip, 0.03 * cpodesSlip);
+    EXPECT_NEAR(implicitDrop, cpodesDrop, 0.03 * cpodesDrop);
 }

@@ -147,8 +147,10 @@ constexpr double kAnchorStabilityLimit = 2.0;
 /// scenario's simulation.step_size) is stable with the scenario's friction law: with the anchor law
 /// it must be at most kAnchorStabilityLimit x its relaxation time (measured on the ball clutch at
 /// the default 1 ms: 2 ms runs, 2.5 ms blows up; at 2 ms relaxation: 4 ms runs, 5 ms blows up).
-/// Error-controlled integrators shrink their steps themselves and pass. Call before anything is
-/// written. @throws graspsim::InputError naming the step's field, its value and the largest stable step.
+/// Error-controlled integrators shrink their steps themselves and pass. Also refuses an integrator
+/// other than the default with rigid contact, which has its own stepper. Call before anything is
+/// written. @throws graspsim::InputError naming the field (--integrator, --step-size or the file's
+/// simulation.step_size), its value and what is accepted.
 void checkFixedStepStability(const scenario::Scenario& scenario, const SimulationOptions& options);
 
 /// The approximation's options of a run: `given` over the scenario's `approximation:` section (a

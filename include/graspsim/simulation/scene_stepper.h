@@ -1,0 +1,31 @@
+#pragma once
+/// @file
+/// The integrator of a compliant-contact grasp run, as SimulationOptions::integrator chooses it:
+/// Simbody's CPodes, the CVODE reference, or the linearly implicit stepper (error-controlled or
+/// fixed steps) with the analytic force Jacobians of the scene's joints, contacts and engaged
+/// attachment. One place for `simulate`, `capacity` and everything else that steps a scene
+/// (rigid contact has its own stepper, rigid_stepping.h).
+
+#include "graspsim/integration/force_jacobian.h"
+#include "graspsim/integration/stepper.h"
+#include "graspsim/simulation/simulation_options.h"
+
+#include <memory>
+#include <vector>
+
+namespace graspsim::simulation {
+
+class GraspExperiment;
+
+/// A stepper with what it needs kept alive: the linearly implicit one's force Jacobians.
+struct SceneStepper {
+    std::vector<std::unique_ptr<integration::ForceJacobianContributor>> jacobians;
+    std::unique_ptr<integration::Stepper> stepper;
+};
+
+/// The stepper of `options.integrator` for `experiment`'s System, at `options.accuracy` (the
+/// scenario's if 0) and, for the linearly implicit one, steps up to `options.stepSize` (the
+/// scenario's simulation.step_size if 0). Not initialized. The experiment must outlive it.
+SceneStepper makeSceneStepper(const GraspExperiment& experiment, const SimulationOptions& options);
+
+}  // namespace graspsim::simulation
