@@ -78,7 +78,8 @@ CapacityCommand::CapacityCommand(CLI::App& app) : options_(std::make_shared<Opti
     command_->add_option("--limits-friction", o.limitsFriction,
                          "approx: the friction coefficient of the constraint's limits, dynamic (default) or static");
     command_->add_option("--limits", o.limits,
-                         "approx: the constraint's friction limits, thesis (default: one box) or contact (per axis)");
+                         "approx: the constraint's friction limits, thesis (default: one box), contact (per axis) or "
+                         "compliance (two-sided per axis, from the grasp's compliance model; bushing, merged)");
     command_->add_option("--out", o.out, "output folder; receives capacity.json and capacity.csv (default: none written)");
 }
 

@@ -33,6 +33,7 @@ TEST_F(CapacityCommand, BadInputIsOneLineAndWritesNothing) {
     expectRejected("--method guess", "--method");
     expectRejected("--method compliance", "--out");  // it writes no files
     expectRejected("--mode half", "--mode");
+    expectRejected("--mode approx --constraint weld --limits compliance", "--limits");
     // About the line through the phone's two goals, R_GO (p_index - p_thumb) normalized (the
     // scenario's goals and orientation; grasp_capacity_test derives it in code): nothing resists.
     expectRejected("--torque --direction 0.8866,-0.4599,-0.0500", "--direction");

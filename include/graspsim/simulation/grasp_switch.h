@@ -168,7 +168,7 @@ private:
     void release(SimTK::State& state, double quality, const std::string& reason) const;
     void setFingersMerged(SimTK::State& state, bool merged) const;
     std::string describeRelease(const SimTK::State& state, double quality) const;
-    std::string describeEngagement(double qThreshold, const SimTK::Vec6& limits) const;
+    std::string describeEngagement(double qThreshold, const grasp::AttachmentEngagement& engagement) const;
     double findVelocityJump(SimTK::State& state, const SimTK::Vec3& v_before) const;
 
     const ApproximationContext& context_;

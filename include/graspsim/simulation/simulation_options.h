@@ -80,7 +80,9 @@ struct ApproxOptions {
     /// dynamic one (the compliant contact holds until the static coefficient; docs/capacity.md).
     bool staticFrictionLimits = false;
     /// How the constraint's limits follow from the contacts at engagement: the thesis's box
-    /// (default) or per axis from each contact's normal and position (grasp/friction_limits.h).
+    /// (default), per axis from each contact's normal and position (grasp/friction_limits.h), or
+    /// two-sided per axis from the grasp's compliance model (grasp/compliance_limits.h; bushing
+    /// and merged only). The friction coefficient is the one staticFrictionLimits picks.
     grasp::FrictionLimitModel limitModel = grasp::FrictionLimitModel::Thesis;
     /// Bound on the growth of the fingertips' penetration while engaged from the bushing's elastic
     /// deflection (m; the thesis's conclusion names fingertips sinking into the object as the
@@ -134,8 +136,10 @@ ApproxAttach parseApproxAttach(const std::string& text, const std::string& sourc
 std::string toString(ApproxAttach attach);
 
 /// Whether the scene of `scenario` supports `options.approx.attach` in approx mode: multi needs
-/// the bushing realization, and every goal end-effector on a body with contact geometry.
-/// Call before anything is written. @throws graspsim::InputError naming --attach otherwise.
+/// the bushing realization, and every goal end-effector on a body with contact geometry; and
+/// whether the limit model fits the attachment: compliance limits are two-sided, which only the
+/// merged bushing takes. Call before anything is written.
+/// @throws graspsim::InputError naming --attach or --limits otherwise.
 void checkApproxAttach(const scenario::Scenario& scenario, const SimulationOptions& options);
 
 /// The approximation's options of a run: `given` over the scenario's `approximation:` section (a
