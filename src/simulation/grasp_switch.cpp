@@ -303,17 +303,21 @@ void GraspSwitch::engage(SimTK::State& state, double quality, const std::vector<
     }
     grasp::AttachmentEngagement engagement;
     const contact::ContactParameters& pair = context_.contactParameters;
-    const double mu = options_.staticFrictionLimits ? pair.staticFriction : pair.dynamicFriction;
-    const SimTK::Vec3 p_GC = findContactCentroid(reports);
-    placeConstraintFrames(state, p_GC, engagement);
+    const bool compliance = options_.limitModel == grasp::FrictionLimitModel::Compliance;
+    const double mu = options_.staticFrictionLimits.value_or(compliance) ? pair.staticFriction : pair.dynamicFriction;
+    // M at the contact centroid, where the friction acts; for the compliance limits, which are the
+    // model's capacities for loads through M's origin, at the object's centre of mass (O's origin),
+    // where the loads an object carries act (its weight and inertia, the capacity protocol's ramp).
+    const SimTK::Vec3 p_GM = compliance ? context_.object.getBodyOriginLocation(state) : findContactCentroid(reports);
+    placeConstraintFrames(state, p_GM, engagement);
     if (options_.limitModel == grasp::FrictionLimitModel::Thesis) {
         engagement.limits = calcFrictionLimits(reports, mu);
-    } else if (options_.limitModel == grasp::FrictionLimitModel::Compliance) {
-        setComplianceLimits(context_, state, reports, mu, context_.object.getBodyTransform(state).R(), p_GC, engagement);
+    } else if (compliance) {
+        setComplianceLimits(context_, state, reports, mu, context_.object.getBodyTransform(state).R(), p_GM, engagement);
     } else {
-        engagement.limits = calcContactGeometryLimits(reports, mu, context_.object.getBodyTransform(state).R(), p_GC);
+        engagement.limits = calcContactGeometryLimits(reports, mu, context_.object.getBodyTransform(state).R(), p_GM);
     }
-    engagement.leverArm = findLeverArm(reports, p_GC);
+    engagement.leverArm = findLeverArm(reports, p_GM);
     engagement.penetrationBound = options_.maxEngagedPenetration;
     for (int k = 0; k < 6; ++k) engagement.lockedAxes[k] = !(*options_.relaxedAxes)[k];
     context_.contacts.setPairsEnabled(state, context_.contacts.findAllPairIndices(), false);  // (b)
