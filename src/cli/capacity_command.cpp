@@ -35,7 +35,7 @@ struct CapacityCommand::Options {
     std::string releaseSlide;
     std::string releasePenetration;
     std::string qMinimum;
-    std::string limitsFriction = "dynamic";
+    std::string limitsFriction;
     std::string limits = "thesis";
     std::string accuracy;
     std::string integrator = "simbody";
@@ -84,9 +84,11 @@ CapacityCommand::CapacityCommand(CLI::App& app) : options_(std::make_shared<Opti
                          "approx: release when a fingertip sank this much deeper into the object, m (default 0.0005)");
     command_->add_option("--q-minimum", o.qMinimum, "approx: grasp quality Q_M (N) below which to release (default: 0.5 x Q_Th)");
     command_->add_option("--limits-friction", o.limitsFriction,
-                         "approx: the friction coefficient of the constraint's limits, dynamic (default) or static");
+                         "approx: the friction coefficient of the constraint's limits, dynamic or static (default: dynamic, "
+                         "static for --limits compliance)");
     command_->add_option("--limits", o.limits,
-                         "approx: the constraint's friction limits, thesis (default: one box) or contact (per axis)");
+                         "approx: the constraint's friction limits, thesis (default: one box), contact (per axis) or "
+                         "compliance (two-sided per axis, from the grasp's compliance model; bushing, merged)");
     command_->add_option("--out", o.out, "output folder; receives capacity.json and capacity.csv (default: none written)");
 }
 
@@ -156,10 +158,10 @@ CapacityCommand::Plan CapacityCommand::makePlan() const {
         parsePositive(o.releasePenetration, "--release-penetration", "the release penetration (m)",
                       simulation::ApproxOptions{}.releasePenetration);
     plan.simulation.approx.qMinimum = parsePositive(o.qMinimum, "--q-minimum", "the grasp quality (N)", 0);
-    if (o.limitsFriction != "dynamic" && o.limitsFriction != "static") {
+    if (!o.limitsFriction.empty() && o.limitsFriction != "dynamic" && o.limitsFriction != "static") {
         throw InputError("--limits-friction: value '" + o.limitsFriction + "' is not accepted; use dynamic or static");
     }
-    plan.simulation.approx.staticFrictionLimits = o.limitsFriction == "static";
+    if (!o.limitsFriction.empty()) plan.simulation.approx.staticFrictionLimits = o.limitsFriction == "static";
     plan.simulation.approx.limitModel = grasp::parseFrictionLimitModel(o.limits, "--limits");
     if (o.method != "ramp" && o.method != "bisection" && o.method != "compliance") {
         throw InputError("--method: value '" + o.method + "' is not accepted; use ramp, bisection or compliance");

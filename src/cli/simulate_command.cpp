@@ -67,8 +67,9 @@ SimulateCommand::SimulateCommand(CLI::App& app) : options_(std::make_shared<Opti
     command_->add_option("--q-threshold", o.qThreshold, "approx: grasp quality Q_Th (N) to engage (default: 0.8 x the settled grasp's)");
     command_->add_option("--q-minimum", o.qMinimum, "approx: grasp quality Q_M (N) below which to release (default: 0.5 x Q_Th)");
     command_->add_option("--limits", o.limits,
-                         "approx: the constraint's friction limits, thesis (default: one box, eq. 4.1-4.3) or contact "
-                         "(per axis, from each contact's normal and position)");
+                         "approx: the constraint's friction limits, thesis (default: one box, eq. 4.1-4.3), contact "
+                         "(per axis, from each contact's normal and position) or compliance (two-sided per axis, "
+                         "from the grasp's compliance model; bushing, merged)");
     command_->add_option("--out", o.out,
                          "output folder (default out); receives trajectory.csv, contacts.csv, summary.json, scenario.yaml, "
                          "model.urdf, provenance.json (and events.csv, constraint.csv in approx mode), and for OpenSim "

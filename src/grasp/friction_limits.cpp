@@ -19,6 +19,7 @@ std::string toString(FrictionLimitModel model) {
     switch (model) {
         case FrictionLimitModel::Thesis: return "thesis";
         case FrictionLimitModel::ContactGeometry: return "contact";
+        case FrictionLimitModel::Compliance: return "compliance";
     }
     return "thesis";
 }
@@ -26,8 +27,10 @@ std::string toString(FrictionLimitModel model) {
 FrictionLimitModel parseFrictionLimitModel(const std::string& text, const std::string& what) {
     if (text == "thesis") return FrictionLimitModel::Thesis;
     if (text == "contact") return FrictionLimitModel::ContactGeometry;
-    throw InputError(what + ": value '" + text + "' is not accepted; use thesis (eq. 4.1-4.3, one box) or contact "
-                            "(per axis, from each contact's normal and position)");
+    if (text == "compliance") return FrictionLimitModel::Compliance;
+    throw InputError(what + ": value '" + text + "' is not accepted; use thesis (eq. 4.1-4.3, one box), contact "
+                            "(per axis, from each contact's normal and position) or compliance (two-sided per axis, "
+                            "from the grasp's compliance model)");
 }
 
 Eigen::Matrix<double, 6, 1> calcContactGeometryLimits(const std::vector<GraspContact>& contacts, double mu,

@@ -17,7 +17,8 @@ const char* const kAxisNames[6] = {"rotation x",    "rotation y",    "rotation z
 // The per-state axis settings: one discrete variable, so setLimits(), setAxisLocked() and
 // setStiffness() invalidate once. Stiffness and damping start at the constructor's values.
 struct AxisSettings {
-    SimTK::Vec6 limits = SimTK::Vec6(SimTK::Infinity);
+    SimTK::Vec6 limits = SimTK::Vec6(SimTK::Infinity);       // L+ (the upper side)
+    SimTK::Vec6 lowerLimits = SimTK::Vec6(SimTK::Infinity);  // L-: the force stays >= -L-
     std::array<bool, 6> locked = {true, true, true, true, true, true};
     SimTK::Vec6 stiffness = SimTK::Vec6(0);
     SimTK::Vec6 damping = SimTK::Vec6(0);
@@ -105,20 +106,16 @@ public:
         return SimTK::Value<bool>::downcast(forces_.getDiscreteVariable(s, enabledIndex_)).get();
     }
     void setEnabled(SimTK::State& s, bool enabled) const {
-        SimTK::Value<bool>::updDowncast(forces_.updDiscreteVariable(s, enabledIndex_)).upd() =
-            enabled;
+        SimTK::Value<bool>::updDowncast(forces_.updDiscreteVariable(s, enabledIndex_)).upd() = enabled;
     }
     const BushingFrames& getFrames(const SimTK::State& s) const {
-        return SimTK::Value<BushingFrames>::downcast(forces_.getDiscreteVariable(s, framesIndex_))
-            .get();
+        return SimTK::Value<BushingFrames>::downcast(forces_.getDiscreteVariable(s, framesIndex_)).get();
     }
     void setFrames(SimTK::State& s, const BushingFrames& frames) const {
-        SimTK::Value<BushingFrames>::updDowncast(forces_.updDiscreteVariable(s, framesIndex_))
-            .upd() = frames;
+        SimTK::Value<BushingFrames>::updDowncast(forces_.updDiscreteVariable(s, framesIndex_)).upd() = frames;
     }
     const AxisSettings& getSettings(const SimTK::State& s) const {
-        return SimTK::Value<AxisSettings>::downcast(forces_.getDiscreteVariable(s, settingsIndex_))
-            .get();
+        return SimTK::Value<AxisSettings>::downcast(forces_.getDiscreteVariable(s, settingsIndex_)).get();
     }
     // Writes the settings and, if positions are realized, moves the anchor so no axis holds
     // more elastic force than its new limit (the excess becomes slip at once).
@@ -129,23 +126,17 @@ public:
         SimTK::Value<AxisSettings>::updDowncast(forces_.updDiscreteVariable(s, settingsIndex_))
             .upd() = settings;
         if (!canProject) return;
-        const SimTK::Vec6 limits = findEffectiveLimits(settings);
+        const SimTK::Vec6 upper = applyAxisLocks(settings.limits, settings.locked);
+        const SimTK::Vec6 lower = applyAxisLocks(settings.lowerLimits, settings.locked);
         bool changed = false;
         for (int k = 0; k < 6; ++k) {
-            const double eMax = limits[k] / settings.stiffness[k];
+            const double eMax = findLoadedSideLimit(lower[k], upper[k], e[k]) / settings.stiffness[k];
             if (std::abs(e[k]) > eMax) {
                 e[k] = std::copysign(eMax, e[k]);
                 changed = true;
             }
         }
         if (changed) placeAnchor(s, X_FM, e);
-    }
-    static SimTK::Vec6 findEffectiveLimits(const AxisSettings& settings) {
-        SimTK::Vec6 limits = settings.limits;
-        for (int k = 0; k < 6; ++k) {
-            if (settings.locked[k]) limits[k] = SimTK::Infinity;
-        }
-        return limits;
     }
 
     // ---- anchor --------------------------------------------------------------------------
@@ -157,25 +148,19 @@ public:
         return slip;
     }
     SimTK::Transform findAnchorTransform(const SimTK::State& s) const {
-        const SimTK::Transform& X_FA0 =
-            SimTK::Value<SimTK::Transform>::downcast(forces_.getDiscreteVariable(s, baseIndex_))
-                .get();
+        const SimTK::Transform& X_FA0 = SimTK::Value<SimTK::Transform>::downcast(forces_.getDiscreteVariable(s, baseIndex_)).get();
         const SimTK::Vec6 z = getAnchorSlip(s);
-        return X_FA0 *
-               SimTK::Transform(calcRotationFromVector(z.getSubVec<3>(0)), z.getSubVec<3>(3));
+        return X_FA0 * SimTK::Transform(calcRotationFromVector(z.getSubVec<3>(0)), z.getSubVec<3>(3));
     }
     // Sets the anchor so that M's displacement from it is e. Re-bases the chart (X_FA0 := X_FA,
     // z := 0) so the rotation-vector slip starts again from zero.
     void placeAnchor(SimTK::State& s, const SimTK::Transform& X_FM, const SimTK::Vec6& e) const {
         const SimTK::Transform X_AM(calcRotationFromVector(e.getSubVec<3>(0)), e.getSubVec<3>(3));
-        SimTK::Value<SimTK::Transform>::updDowncast(forces_.updDiscreteVariable(s, baseIndex_))
-            .upd() = X_FM * ~X_AM;
+        SimTK::Value<SimTK::Transform>::updDowncast(forces_.updDiscreteVariable(s, baseIndex_)).upd() = X_FM * ~X_AM;
         forces_.updZ(s)(int(zIndex_), 6) = 0;
     }
     void resetAnchor(SimTK::State& s) const { placeAnchor(s, findX_FM(s), SimTK::Vec6(0)); }
-    void setAnchorDisplacement(SimTK::State& s, const SimTK::Vec6& e) const {
-        placeAnchor(s, findX_FM(s), e);
-    }
+    void setAnchorDisplacement(SimTK::State& s, const SimTK::Vec6& e) const { placeAnchor(s, findX_FM(s), e); }
 
     // ---- kinematics and law --------------------------------------------------------------
     SimTK::Transform findX_FM(const SimTK::State& s) const {
@@ -213,13 +198,14 @@ public:
     }
     BushingResponse calcResponse(const SimTK::State& s, const BushingKinematics& k) const {
         const AxisSettings& settings = getSettings(s);
-        const SimTK::Vec6 limits = findEffectiveLimits(settings);
+        const SimTK::Vec6 upper = applyAxisLocks(settings.limits, settings.locked);
+        const SimTK::Vec6 lower = applyAxisLocks(settings.lowerLimits, settings.locked);
         const SimTK::Vec6& K = settings.stiffness;
         BushingResponse response;
         for (int i = 0; i < 6; ++i) {
-            response.slip[i] = calcSlipFraction(K[i], limits[i], onsetWidth_, k.e[i], k.r[i]);
+            response.slip[i] = calcTwoSidedSlipFraction(K[i], lower[i], upper[i], onsetWidth_, k.e[i], k.r[i]);
             const double edot = (1 - response.slip[i]) * k.r[i];
-            response.force[i] = calcAxisForce(K[i], settings.damping[i], limits[i], k.e[i], edot);
+            response.force[i] = calcTwoSidedAxisForce(K[i], settings.damping[i], lower[i], upper[i], k.e[i], edot);
         }
         return response;
     }
@@ -372,11 +358,17 @@ void LimitedBushing::setEnabled(SimTK::State& state, bool enabled) const {
 const SimTK::Vec6& LimitedBushing::getLimits(const SimTK::State& state) const {
     return asBushingImpl(getImplementation()).getSettings(state).limits;
 }
-void LimitedBushing::setLimits(SimTK::State& state, const SimTK::Vec6& limits) const {
-    checkAxisValues(limits, "limit", true, true);
+const SimTK::Vec6& LimitedBushing::getLowerLimits(const SimTK::State& state) const {
+    return asBushingImpl(getImplementation()).getSettings(state).lowerLimits;
+}
+void LimitedBushing::setLimits(SimTK::State& state, const SimTK::Vec6& limits) const { setLimits(state, limits, limits); }
+void LimitedBushing::setLimits(SimTK::State& state, const SimTK::Vec6& lower, const SimTK::Vec6& upper) const {
+    checkAxisValues(lower, "lower limit", true, true);
+    checkAxisValues(upper, "limit", true, true);
     const LimitedBushingImpl& bushingImpl = asBushingImpl(getImplementation());
     AxisSettings settings = bushingImpl.getSettings(state);
-    settings.limits = limits;
+    settings.limits = upper;
+    settings.lowerLimits = lower;
     bushingImpl.setSettings(state, settings);
 }
 const SimTK::Vec6& LimitedBushing::getStiffness(const SimTK::State& state) const {
@@ -405,8 +397,12 @@ void LimitedBushing::setAxisLocked(SimTK::State& state, BushingAxis axis, bool l
     bushingImpl.setSettings(state, settings);
 }
 SimTK::Vec6 LimitedBushing::findEffectiveLimits(const SimTK::State& state) const {
-    const LimitedBushingImpl& bushingImpl = asBushingImpl(getImplementation());
-    return LimitedBushingImpl::findEffectiveLimits(bushingImpl.getSettings(state));
+    const AxisSettings& settings = asBushingImpl(getImplementation()).getSettings(state);
+    return applyAxisLocks(settings.limits, settings.locked);
+}
+SimTK::Vec6 LimitedBushing::findEffectiveLowerLimits(const SimTK::State& state) const {
+    const AxisSettings& settings = asBushingImpl(getImplementation()).getSettings(state);
+    return applyAxisLocks(settings.lowerLimits, settings.locked);
 }
 
 void LimitedBushing::setFrames(SimTK::State& state, const SimTK::Transform& X_HF,
@@ -453,10 +449,11 @@ void LimitedBushing::engage(SimTK::State& state, const AttachmentEngagement& eng
     resetAnchor(state);
     const SimTK::MassProperties mp = bodyO.getBody().getDefaultRigidBodyMassProperties();
     const SimTK::Vec3 I = mp.calcCentralInertia().getMoments();
-    const SimTK::Vec6 stiffness =
-        calcStiffnessForBound(getStiffness(), engagement.limits, engagement.leverArm, engagement.penetrationBound);
+    const SimTK::Vec6 lower = engagement.lowerLimits.value_or(engagement.limits);
+    const SimTK::Vec6 stiffness = calcStiffnessForBound(getStiffness(), findLargerSide(lower, engagement.limits),
+                                                        engagement.leverArm, engagement.penetrationBound);
     setStiffness(state, stiffness, calcCriticalDamping(stiffness, I, mp.getMass()));
-    setLimits(state, engagement.limits);
+    setLimits(state, lower, engagement.limits);
     for (int k = 0; k < 6; ++k) setAxisLocked(state, static_cast<BushingAxis>(k), engagement.lockedAxes[k]);
     system.realize(state, SimTK::Stage::Position);
 }
@@ -468,7 +465,8 @@ SimTK::SpatialVec LimitedBushing::findReactionOnObject(const SimTK::State& state
 
 std::optional<SingleConstraintState> LimitedBushing::findSingleConstraintState(const SimTK::State& state) const {
     if (!isEngaged(state)) return std::nullopt;
-    return SingleConstraintState{getFrameOnO(state), findEffectiveLimits(state), findGeneralizedForce(state), findWrench(state)};
+    return SingleConstraintState{getFrameOnO(state), findEffectiveLimits(state), findGeneralizedForce(state), findWrench(state),
+                                 findEffectiveLowerLimits(state)};
 }
 
 }  // namespace graspsim::grasp

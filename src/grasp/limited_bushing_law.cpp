@@ -30,6 +30,30 @@ double calcAxisForce(double stiffness, double damping, double limit, double e, d
     return std::clamp(-stiffness * e - damping * edot, -limit, limit);
 }
 
+double findLoadedSideLimit(double lower, double upper, double e) { return e < 0 ? upper : lower; }
+
+double calcTwoSidedSlipFraction(double stiffness, double lower, double upper, double onsetWidth, double e, double r) {
+    return calcSlipFraction(stiffness, findLoadedSideLimit(lower, upper, e), onsetWidth, e, r);
+}
+
+double calcTwoSidedAxisForce(double stiffness, double damping, double lower, double upper, double e, double edot) {
+    return std::clamp(-stiffness * e - damping * edot, -lower, upper);
+}
+
+SimTK::Vec6 applyAxisLocks(const SimTK::Vec6& limits, const std::array<bool, 6>& locked) {
+    SimTK::Vec6 result = limits;
+    for (int k = 0; k < 6; ++k) {
+        if (locked[k]) result[k] = SimTK::Infinity;
+    }
+    return result;
+}
+
+SimTK::Vec6 findLargerSide(const SimTK::Vec6& lower, const SimTK::Vec6& upper) {
+    SimTK::Vec6 result;
+    for (int k = 0; k < 6; ++k) result[k] = std::max(lower[k], upper[k]);
+    return result;
+}
+
 SimTK::Vec3 calcRotationVector(const SimTK::Rotation& R) {
     const SimTK::Vec4 angleAxis = R.convertRotationToAngleAxis();
     return angleAxis[0] * SimTK::Vec3(angleAxis[1], angleAxis[2], angleAxis[3]);

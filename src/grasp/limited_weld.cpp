@@ -348,6 +348,9 @@ const SimTK::Transform& LimitedWeld::findEngagedTransform(const SimTK::State& st
 SimTK::Transform LimitedWeld::findTransform(const SimTK::State& state) const { return elements_->findX_FM(state); }
 
 void LimitedWeld::engage(SimTK::State& state, const AttachmentEngagement& engagement) const {
+    if (engagement.lowerLimits && *engagement.lowerLimits != engagement.limits) {
+        throw InputError("limited weld: two-sided (asymmetric) limits are not supported; use the bushing");
+    }
     setFrames(state, engagement.X_HF, engagement.X_OM);
     setLimits(state, engagement.limits);
     for (int k = 0; k < 6; ++k) setAxisLocked(state, static_cast<WeldAxis>(k), engagement.lockedAxes[k]);
@@ -439,7 +442,8 @@ void LimitedWeld::releaseOverloadedAxes(SimTK::State& state) const {
 
 std::optional<SingleConstraintState> LimitedWeld::findSingleConstraintState(const SimTK::State& state) const {
     if (!isEngaged(state)) return std::nullopt;
-    return SingleConstraintState{getFrameOnO(state), findEffectiveLimits(state), findGeneralizedForce(state), findWrench(state)};
+    const SimTK::Vec6 limits = findEffectiveLimits(state);
+    return SingleConstraintState{getFrameOnO(state), limits, findGeneralizedForce(state), findWrench(state), limits};
 }
 
 }  // namespace graspsim::grasp

@@ -55,7 +55,8 @@ ApproximationContext makeContext(const GraspScene& scene, const grasp::GraspAtta
                                 attachment,
                                 multi,
                                 scene.getController(),
-                                s.controller.ikInterval};
+                                s.controller.ikInterval,
+                                scene.findJointImpedances()};
 }
 
 }  // namespace

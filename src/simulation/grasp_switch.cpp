@@ -1,8 +1,10 @@
 #include "graspsim/simulation/grasp_switch.h"
 
 #include "graspsim/error.h"
+#include "graspsim/grasp/compliance_limits.h"
 #include "graspsim/grasp/limited_bushing_law.h"
 #include "graspsim/simulation/contact_grasp_quality.h"
+#include "graspsim/simulation/finger_compliance.h"
 #include "graspsim/simulation/multi_attachment_switch.h"
 
 #include <algorithm>
@@ -58,6 +60,32 @@ SimTK::Vec6 calcContactGeometryLimits(const std::vector<contact::ContactReport>&
     SimTK::Vec6 result;
     for (int k = 0; k < 6; ++k) result[k] = limits[k];
     return result;
+}
+
+// Two-sided limits of the constraint frame M (orientation R_GM, origin p_GM) from the compliance
+// model of the grasp at engagement (grasp/compliance_limits.h), rotation first. A side the model
+// never lets go of is capped at four times the thesis's box on its axis, so that the bushing,
+// stiffened for its larger side, stays as stiff as the thesis's would be within a small factor.
+void setComplianceLimits(const ApproximationContext& context, const SimTK::State& state,
+                         const std::vector<contact::ContactReport>& reports, double mu, const SimTK::Rotation& R_GM,
+                         const SimTK::Vec3& p_GM, grasp::AttachmentEngagement& engagement) {
+    const FingerCompliance fingers(context.model, context.fingerMobilizers, context.jointImpedances, context.goals.getEndEffectors());
+    const std::vector<grasp::CompliantContact> contacts = fingers.findCompliantContacts(state, reports, {});
+    grasp::ComplianceLimitOptions options;
+    options.mu = mu;
+    const SimTK::Vec6 box = calcFrictionLimits(reports, mu);
+    for (int k = 0; k < 6; ++k) options.maxLoads[k] = std::max(4 * box[k], 1e-9);
+    Eigen::Matrix3d R;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) R(i, j) = R_GM.asMat33()(i, j);
+    const grasp::TwoSidedLimits limits =
+        grasp::calcComplianceLimits(contacts, R, Eigen::Vector3d(p_GM[0], p_GM[1], p_GM[2]), options);
+    SimTK::Vec6 lower;
+    for (int k = 0; k < 6; ++k) {
+        lower[k] = limits.lower[k];
+        engagement.limits[k] = limits.upper[k];
+    }
+    engagement.lowerLimits = lower;
 }
 
 // Centroid of the contact points (Ground, m): where the friction acts, so where the constraint does.
@@ -248,8 +276,16 @@ void GraspSwitch::checkEngage(SimTK::State& state) const {
 }
 
 // The engage event's text: the threshold and the limits (one force and one torque for the thesis's
-// box, every axis for per-axis limits).
-std::string GraspSwitch::describeEngagement(double qThreshold, const SimTK::Vec6& limits) const {
+// box, every axis for per-axis limits, both sides of every axis for two-sided ones).
+std::string GraspSwitch::describeEngagement(double qThreshold, const grasp::AttachmentEngagement& engagement) const {
+    const SimTK::Vec6& limits = engagement.limits;
+    if (engagement.lowerLimits) {
+        std::string text = format("Q >= Q_Th = %.6g N; compliance limits", qThreshold);
+        for (int k : {3, 4, 5, 0, 1, 2}) {
+            text += format(" [-%.6g, %.6g]", (*engagement.lowerLimits)[k], limits[k]) + (k == 5 ? " N," : k == 2 ? " N m" : "");
+        }
+        return text;
+    }
     if (options_.limitModel == grasp::FrictionLimitModel::Thesis) {
         return format("Q >= Q_Th = %.6g N; limits %.6g N", qThreshold, limits[3]) + format(", %.6g N m", limits[0]);
     }
@@ -267,15 +303,21 @@ void GraspSwitch::engage(SimTK::State& state, double quality, const std::vector<
     }
     grasp::AttachmentEngagement engagement;
     const contact::ContactParameters& pair = context_.contactParameters;
-    const double mu = options_.staticFrictionLimits ? pair.staticFriction : pair.dynamicFriction;
-    const SimTK::Vec3 p_GC = findContactCentroid(reports);
-    placeConstraintFrames(state, p_GC, engagement);
+    const bool compliance = options_.limitModel == grasp::FrictionLimitModel::Compliance;
+    const double mu = options_.staticFrictionLimits.value_or(compliance) ? pair.staticFriction : pair.dynamicFriction;
+    // M at the contact centroid, where the friction acts; for the compliance limits, which are the
+    // model's capacities for loads through M's origin, at the object's centre of mass (O's origin),
+    // where the loads an object carries act (its weight and inertia, the capacity protocol's ramp).
+    const SimTK::Vec3 p_GM = compliance ? context_.object.getBodyOriginLocation(state) : findContactCentroid(reports);
+    placeConstraintFrames(state, p_GM, engagement);
     if (options_.limitModel == grasp::FrictionLimitModel::Thesis) {
         engagement.limits = calcFrictionLimits(reports, mu);
+    } else if (compliance) {
+        setComplianceLimits(context_, state, reports, mu, context_.object.getBodyTransform(state).R(), p_GM, engagement);
     } else {
-        engagement.limits = calcContactGeometryLimits(reports, mu, context_.object.getBodyTransform(state).R(), p_GC);
+        engagement.limits = calcContactGeometryLimits(reports, mu, context_.object.getBodyTransform(state).R(), p_GM);
     }
-    engagement.leverArm = findLeverArm(reports, p_GC);
+    engagement.leverArm = findLeverArm(reports, p_GM);
     engagement.penetrationBound = options_.maxEngagedPenetration;
     for (int k = 0; k < 6; ++k) engagement.lockedAxes[k] = !(*options_.relaxedAxes)[k];
     context_.contacts.setPairsEnabled(state, context_.contacts.findAllPairIndices(), false);  // (b)
@@ -284,7 +326,7 @@ void GraspSwitch::engage(SimTK::State& state, double quality, const std::vector<
     const SimTK::Transform X_HO = ~context_.palm.getBodyTransform(state) * context_.object.getBodyTransform(state);
     GraspSwitchRecord& record = updRecord(state);
     record.X_HO_engaged = X_HO;
-    record.events.push_back({state.getTime(), GraspEventKind::Engage, quality, describeEngagement(qThreshold, engagement.limits)});  // (e)
+    record.events.push_back({state.getTime(), GraspEventKind::Engage, quality, describeEngagement(qThreshold, engagement)});  // (e)
 }
 
 // F on the palm and M on the object coincide at the contact centroid, with O's orientation.

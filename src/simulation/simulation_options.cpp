@@ -54,7 +54,15 @@ std::string toString(ApproxAttach attach) { return attach == ApproxAttach::Merge
 std::string toString(SimulationMode mode) { return mode == SimulationMode::Full ? "full" : "approx"; }
 
 void checkApproxAttach(const scenario::Scenario& scenario, const SimulationOptions& options) {
-    if (options.mode != SimulationMode::Approx || options.approx.attach != ApproxAttach::Multi) return;
+    if (options.mode != SimulationMode::Approx) return;
+    if (options.approx.limitModel == grasp::FrictionLimitModel::Compliance &&
+        (options.approx.constraint != ApproxConstraint::Bushing || options.approx.attach != ApproxAttach::Merged)) {
+        throw InputError("--limits: 'compliance' is not available with --constraint " + toString(options.approx.constraint) +
+                         " --attach " + toString(options.approx.attach) +
+                         " (its limits are two-sided, which only the merged bushing takes); use --constraint bushing "
+                         "--attach merged or another --limits");
+    }
+    if (options.approx.attach != ApproxAttach::Multi) return;
     if (options.approx.constraint != ApproxConstraint::Bushing) {
         throw InputError("--attach: 'multi' is not available with --constraint " + toString(options.approx.constraint) +
                          " (its parts are friction-limited bushings); use --constraint bushing or --attach merged");

@@ -1,6 +1,5 @@
 #include "graspsim/capacity/compliance_prediction.h"
 
-#include "graspsim/model/model_description.h"
 #include "graspsim/scenario/scenario_file.h"
 #include "graspsim/simulation/grasp_experiment.h"
 
@@ -8,83 +7,8 @@
 
 #include <Eigen/Eigenvalues>
 
-#include <cmath>
-
 namespace graspsim::capacity {
 namespace {
-
-// Second method for the finger's compliance: each finger joint's column of the point's Jacobian
-// by a central difference of the material point's position in the joint angle.
-Eigen::Matrix3d calcComplianceByDifferences(const simulation::GraspScene& scene, const SimTK::State& state,
-                                            const std::string& body, const SimTK::Vec3& p_G) {
-    const SimTK::MobilizedBody& segment = scene.getModel().getMobilizedBody(body);
-    scene.getSystem().realize(state, SimTK::Stage::Position);
-    const SimTK::Vec3 p_B = segment.findStationAtGroundPoint(state, p_G);
-    const std::vector<SimTK::MobilizedBodyIndex>& fingers = scene.getFingerMobilizers();
-    Eigen::Matrix3d compliance = Eigen::Matrix3d::Zero();
-    for (const system::JointImpedance& j : scene.findJointImpedances()) {
-        if (std::find(fingers.begin(), fingers.end(), j.mobod) == fingers.end()) continue;
-        const SimTK::MobilizedBody& joint = scene.getModel().getMatter().getMobilizedBody(j.mobod);
-        const double h = 1e-6, q = joint.getOneQ(state, 0);
-        SimTK::Vec3 p[2];
-        for (int side = 0; side < 2; ++side) {
-            SimTK::State moved = state;
-            joint.setOneQ(moved, 0, q + (side ? h : -h));
-            scene.getSystem().realize(moved, SimTK::Stage::Position);
-            p[side] = segment.findStationLocationInGround(moved, p_B);
-        }
-        const SimTK::Vec3 d = (p[1] - p[0]) / (2 * h);
-        const Eigen::Vector3d column(d[0], d[1], d[2]);
-        compliance += column * column.transpose() / j.stiffness;
-    }
-    return compliance;
-}
-
-TEST(CompliancePrediction, FingerComplianceAgainstFiniteDifferences) {
-    const scenario::Scenario pinch = scenario::findBuiltinScenario("phone-pinch");
-    simulation::GraspExperiment experiment(pinch, simulation::SimulationOptions{});
-    const simulation::GraspScene& scene = experiment.getScene();
-    const SimTK::State state = experiment.makeInitialState();
-    CompliancePredictionSettings plain;
-    plain.ikFollowsNullSpace = false;
-    const Eigen::MatrixXd K = calcFingerJointStiffness(scene, state, plain);
-    ASSERT_TRUE(K.isDiagonal());
-    for (const char* body : {"index_distal", "thumb_distal", "index_middle"}) {
-        const SimTK::MobilizedBody& segment = scene.getModel().getMobilizedBody(body);
-        const SimTK::Vec3 p_G = segment.findStationLocationInGround(state, SimTK::Vec3(0.003, 0.008, -0.002));
-        const Eigen::Matrix3d model = calcFingerCompliance(scene, state, K, body, p_G);
-        const Eigen::Matrix3d reference = calcComplianceByDifferences(scene, state, body, p_G);
-        EXPECT_GT(model.norm(), 1e-5) << body;
-        EXPECT_LT((model - reference).norm(), 1e-6 * reference.norm()) << body;
-    }
-    const SimTK::Vec3 p_palm = scene.getPalm().getBodyOriginLocation(state);
-    EXPECT_EQ(calcFingerCompliance(scene, state, K, scene.getModel().getDescription().findPalm().name, p_palm).norm(), 0);
-}
-
-// With the IK following the finger along its null space, the PD stiffness is kp J_E^+ J_E. At the
-// end-effector E itself the null space does not move the point, so its compliance is the plain
-// J_E J_E^T / (kp + k_s) of equal joint stiffnesses; elsewhere on the finger it can only be larger.
-TEST(CompliancePrediction, IkNullSpaceLeavesTheEndEffectorsComplianceAndSoftensTheRest) {
-    const scenario::Scenario pinch = scenario::findBuiltinScenario("phone-pinch");
-    simulation::GraspExperiment experiment(pinch, simulation::SimulationOptions{});
-    const simulation::GraspScene& scene = experiment.getScene();
-    const SimTK::State state = experiment.makeInitialState();
-    CompliancePredictionSettings plain;
-    plain.ikFollowsNullSpace = false;
-    const Eigen::MatrixXd Kplain = calcFingerJointStiffness(scene, state, plain);
-    const Eigen::MatrixXd Kik = calcFingerJointStiffness(scene, state, {});
-    const model::EndEffector& tip = *scene.getModel().getDescription().findEndEffector("index_tip");
-    const SimTK::MobilizedBody& distal = scene.getModel().getMobilizedBody(tip.body);
-    const SimTK::Vec3 p_tip = distal.findStationLocationInGround(state, SimTK::Vec3(tip.p_BE[0], tip.p_BE[1], tip.p_BE[2]));
-    const Eigen::Matrix3d atTipPlain = calcFingerCompliance(scene, state, Kplain, tip.body, p_tip);
-    const Eigen::Matrix3d atTipIk = calcFingerCompliance(scene, state, Kik, tip.body, p_tip);
-    EXPECT_LT((atTipIk - atTipPlain).norm(), 1e-6 * atTipPlain.norm());
-    const SimTK::Vec3 p_middle = scene.getModel().getMobilizedBody("index_middle").findStationLocationInGround(state, SimTK::Vec3(0.004, 0.01, 0));
-    const Eigen::Matrix3d extra = calcFingerCompliance(scene, state, Kik, "index_middle", p_middle) -
-                                  calcFingerCompliance(scene, state, Kplain, "index_middle", p_middle);
-    EXPECT_GT(Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(extra).eigenvalues().maxCoeff(), 1e-4);  // m/N, soft
-    EXPECT_GT(Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(extra).eigenvalues().minCoeff(), -1e-12);
-}
 
 // At the load's start the grasp is at rest: its contact forces carry the object's weight.
 TEST(CompliancePrediction, LoadStartContactsCarryTheWeight) {

@@ -36,6 +36,7 @@ TEST_F(CapacityCommand, BadInputIsOneLineAndWritesNothing) {
     expectRejected("--integrator euler", "--integrator");
     expectRejected("--integrator implicit --step-size 0", "--step-size");
     expectRejected("--contact rigid --integrator implicit", "--integrator");  // rigid has its own stepper
+    expectRejected("--mode approx --constraint weld --limits compliance", "--limits");
     // About the line through the phone's two goals, R_GO (p_index - p_thumb) normalized (the
     // scenario's goals and orientation; grasp_capacity_test derives it in code): nothing resists.
     expectRejected("--torque --direction 0.8866,-0.4599,-0.0500", "--direction");

@@ -176,7 +176,10 @@ TEST_F(SimulateCommand, RejectsBadOptionsWithoutTouchingTheOutputFolder) {
     expectBadInput("simulate ball-clutch --mode approx --constraint hinge" + out, {"--constraint", "hinge", "weld"});
     expectBadInput("simulate ball-clutch --mode approx --q-threshold 1 --q-minimum 2" + out, {"--q-minimum", "2"});
     expectBadInput("simulate ball-clutch --mode approx --attach glued" + out, {"--attach", "glued", "merged or multi"});
-    expectBadInput("simulate ball-clutch --mode approx --limits box" + out, {"--limits", "box", "thesis", "contact"});
+    expectBadInput("simulate ball-clutch --mode approx --limits box" + out, {"--limits", "box", "thesis", "contact", "compliance"});
+    expectBadInput("simulate ball-clutch --mode approx --constraint weld --limits compliance" + out,
+                   {"--limits", "compliance", "weld", "two-sided", "--constraint bushing"});
+    expectBadInput("simulate ball-clutch --mode approx --attach multi --limits compliance" + out, {"--limits", "compliance", "multi"});
     expectBadInput("simulate ball-clutch --mode approx --constraint weld --attach multi" + out, {"--attach", "multi", "weld"});
     EXPECT_FALSE(fs::exists(dir_ / "out"));
 }

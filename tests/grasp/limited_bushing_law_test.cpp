@@ -57,6 +57,44 @@ TEST(LimitedBushingLaw, ForceIsSpringDamperClampedAtTheLimit) {
     EXPECT_DOUBLE_EQ(calcAxisForce(kStiffness, 10, 0, 1.0, 1.0), 0);
 }
 
+// Two-sided limits [-L-, +L+]: the elastic force -K e is positive for e < 0, so that side slips at
+// L+ = 3 N and the other at L- = 1 N; the force clamps at each side's own limit.
+TEST(LimitedBushingLaw, TwoSidedSlipsAtTheLoadedSidesLimit) {
+    const double lower = 1, upper = 3;
+    EXPECT_EQ(findLoadedSideLimit(lower, upper, -1e-3), upper);
+    EXPECT_EQ(findLoadedSideLimit(lower, upper, 1e-3), lower);
+    // K |e| = 2 N: past L- = 1 N on the positive side (slides), inside L+ = 3 N on the negative one.
+    EXPECT_GT(calcTwoSidedSlipFraction(kStiffness, lower, upper, kWidth, 2e-3, 0.1), 1);
+    EXPECT_EQ(calcTwoSidedSlipFraction(kStiffness, lower, upper, kWidth, -2e-3, -0.1), 0);
+    // Exactly at each side's limit: full slip.
+    EXPECT_EQ(calcTwoSidedSlipFraction(kStiffness, lower, upper, kWidth, lower / kStiffness, 0.1), 1);
+    EXPECT_EQ(calcTwoSidedSlipFraction(kStiffness, lower, upper, kWidth, -upper / kStiffness, -0.1), 1);
+    // Onset band of the upper side: half way through it, s = 1/2.
+    EXPECT_NEAR(calcTwoSidedSlipFraction(kStiffness, lower, upper, kWidth, -(1 - kWidth / 2) * upper / kStiffness, -0.1),
+                0.5, 1e-9);
+    EXPECT_DOUBLE_EQ(calcTwoSidedAxisForce(kStiffness, 10, lower, upper, 5e-3, 0), -lower);
+    EXPECT_DOUBLE_EQ(calcTwoSidedAxisForce(kStiffness, 10, lower, upper, -5e-3, 0), upper);
+    EXPECT_DOUBLE_EQ(calcTwoSidedAxisForce(kStiffness, 10, lower, upper, -2e-3, 0), 2);  // elastic
+    EXPECT_DOUBLE_EQ(calcTwoSidedAxisForce(kStiffness, 10, lower, SimTK::Infinity, -1.0, 0), kStiffness);
+}
+
+// Equal sides are the symmetric law, bit for bit (the thesis runs must not change).
+TEST(LimitedBushingLaw, TwoSidedWithEqualSidesIsTheSymmetricLaw) {
+    for (double limit : {0.0, 0.7, kLimit, SimTK::Infinity}) {
+        for (double e : {-3e-3, -1.99e-3, -1e-4, 0.0, 1e-4, 1.985e-3, 2.01e-3}) {
+            for (double r : {-0.2, 0.0, 0.3}) {
+                EXPECT_EQ(calcTwoSidedSlipFraction(kStiffness, limit, limit, kWidth, e, r),
+                          calcSlipFraction(kStiffness, limit, kWidth, e, r));
+                EXPECT_EQ(calcTwoSidedAxisForce(kStiffness, 10, limit, limit, e, r), calcAxisForce(kStiffness, 10, limit, e, r));
+            }
+        }
+    }
+    const SimTK::Vec6 lower(1, 2, 3, 4, 5, 6), upper(6, 5, 4, 3, 2, 1);
+    EXPECT_EQ(findLargerSide(lower, upper), SimTK::Vec6(6, 5, 4, 4, 5, 6));
+    EXPECT_EQ(findLargerSide(lower, lower), lower);
+    EXPECT_EQ(applyAxisLocks(lower, {true, false, false, false, false, true}), SimTK::Vec6(SimTK::Infinity, 2, 3, 4, 5, SimTK::Infinity));
+}
+
 TEST(LimitedBushingLaw, RotationVectorRoundTrip) {
     for (const SimTK::Vec3& theta :
          {SimTK::Vec3(0.3, -0.2, 0.9), SimTK::Vec3(1e-7, 0, -2e-7), SimTK::Vec3(0, 3.0, 0)}) {

@@ -133,6 +133,40 @@ TEST_P(LimitedBushingDynamics, SpinsWithTheExcessTorqueAboveTheLimit) {
     EXPECT_LT(wrench[1].norm(), 1e-6);  // locked translation stays unloaded
 }
 
+// Two-sided limits on translation x, L- = 1 N and L+ = 3 N: a pull F along +x needs the force -F
+// on O, bounded by L-, so 2 N slides with (2 - 1) / m; a push -2 N is held (deflection -2 N / K);
+// -4 N slides with (4 - 3) / m.
+TEST_P(LimitedBushingDynamics, TwoSidedLimitsHoldAndSlideOnEachSide) {
+    const double lower = 1, upper = 3;
+    for (double force : {2.0, -2.0, -4.0}) {
+        BushedBox scene;
+        scene.addForce(Vec3(force, 0, 0));
+        SimTK::State start = scene.makeState(BushingAxis::TranslationX, kLinearLimit);
+        Vec6 lowers(SimTK::Infinity), uppers(SimTK::Infinity);
+        lowers[3] = lower;
+        uppers[3] = upper;
+        scene.bushing.setLimits(start, lowers, uppers);
+        EXPECT_EQ(scene.bushing.getLowerLimits(start)[3], lower);
+        EXPECT_EQ(scene.bushing.findEffectiveLimits(start)[3], upper);
+        SteppedRun run(GetParam(), scene.system, start);
+        const double t1 = 0.1, t2 = 0.3;
+        const double v1 = scene.box.getBodyVelocity(run.stepTo(t1))[1][0];
+        const SimTK::State& state = run.stepTo(t2);
+        const double v2 = scene.box.getBodyVelocity(state)[1][0];
+        const double side = force > 0 ? lower : upper;
+        if (std::abs(force) < side) {
+            EXPECT_NEAR(scene.box.getBodyOriginLocation(state)[0], force / kLinearStiffness, 1e-3 * std::abs(force) / kLinearStiffness);
+            EXPECT_FALSE(scene.bushing.isSliding(state, BushingAxis::TranslationX));
+            EXPECT_NEAR(scene.bushing.findWrench(state)[1][0], -force, 1e-3 * std::abs(force));
+        } else {
+            const double expected = (force - std::copysign(side, force)) / kMass;
+            EXPECT_NEAR((v2 - v1) / (t2 - t1), expected, 0.02 * std::abs(expected)) << "force " << force;
+            EXPECT_TRUE(scene.bushing.isSliding(state, BushingAxis::TranslationX));
+            EXPECT_NEAR(scene.bushing.findWrench(state)[1][0], -std::copysign(side, force), 0.02 * side);
+        }
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(Integrators, LimitedBushingDynamics,
                          testing::Values(IntegratorKind::RungeKuttaMerson, IntegratorKind::CPodes),
                          [](const testing::TestParamInfo<IntegratorKind>& paramInfo) {
@@ -206,6 +240,25 @@ TEST(LimitedBushing, LoweringALimitMovesTheAnchorToTheLimit) {
     // Locking the axis again leaves the anchor (limits only ever shrink the displacement).
     scene.bushing.setAxisLocked(state, BushingAxis::TranslationX, true);
     EXPECT_EQ(scene.bushing.findEffectiveLimits(state)[3], SimTK::Infinity);
+}
+
+// A two-sided limit moves the anchor to the limit of the side the displacement loads: e = +5e-4
+// (force -5 N) goes to L- = 1 N, e = -5e-4 to L+ = 3 N.
+TEST(LimitedBushing, TwoSidedLimitMovesTheAnchorToTheLoadedSidesLimit) {
+    for (double e : {5e-4, -5e-4}) {
+        BushedBox scene;
+        SimTK::State state = scene.makeState(BushingAxis::TranslationX, SimTK::Infinity);
+        scene.bushing.setAnchorDisplacement(state, Vec6(0, 0, 0, e, 0, 0));
+        scene.system.realize(state, SimTK::Stage::Position);
+        Vec6 lower(SimTK::Infinity), upper(SimTK::Infinity);
+        lower[3] = 1;
+        upper[3] = 3;
+        scene.bushing.setLimits(state, lower, upper);
+        scene.system.realize(state, SimTK::Stage::Velocity);
+        const double side = e > 0 ? lower[3] : upper[3];
+        EXPECT_NEAR(scene.bushing.findDisplacement(state)[3], std::copysign(side, e) / kLinearStiffness, 1e-12);
+        EXPECT_NEAR(scene.bushing.findWrench(state)[1][0], -std::copysign(side, e), 1e-9);
+    }
 }
 
 TEST(LimitedBushing, RejectsBadParametersNamingTheAxis) {

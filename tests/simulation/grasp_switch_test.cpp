@@ -9,6 +9,7 @@
 #include "graspsim/simulation/grasp_switch.h"
 
 #include "graspsim/error.h"
+#include "graspsim/grasp/limited_bushing.h"
 #include "graspsim/grasp/limited_weld.h"
 #include "graspsim/scenario/scenario_file.h"
 
@@ -356,4 +357,55 @@ TEST(GraspSwitch, OverloadReleaseHandsBackToContactWithoutAVelocityJump) {
         EXPECT_EQ(r.events.size(), 2u);
         expectNoPenetrationGrowth(r);
     }
+}
+
+// --limits compliance: two-sided limits from the grasp's compliance model at engagement. Oracles:
+// the full-contact run (the object stays within 2 mm of it, as with the thesis's box), and the
+// weight: at rest the bushing carries m g upward (to 5 %) inside both sides of every axis (no axis
+// slides), which fails if a side carried the engagement's wrench W0 with the wrong sign.
+TEST(GraspSwitch, BallClutchComplianceLimitsAreTwoSidedAndHoldTheWeight) {
+    const scenario::Scenario s = scenario::findBuiltinScenario("ball-clutch");
+    const double duration = s.simulation.settleTime + 0.5;
+    simulation::SimulationOptions options = makeOptions(simulation::SimulationMode::Approx, duration);
+    options.approx.limitModel = grasp::FrictionLimitModel::Compliance;
+    SimTK::Vec6 lower(0), upper(0), force(0);
+    SimTK::Rotation R_GA;
+    bool sliding = false;
+    const simulation::SampleObserver observe = [&](const simulation::GraspExperiment& experiment, const SimTK::State& state) {
+        const auto* bushing = dynamic_cast<const grasp::LimitedBushing*>(&experiment.getApproximation()->getAttachment());
+        ASSERT_NE(bushing, nullptr);
+        if (!bushing->isEngaged(state)) return;
+        experiment.getScene().getSystem().realize(state, SimTK::Stage::Velocity);
+        lower = bushing->findEffectiveLowerLimits(state);
+        upper = bushing->findEffectiveLimits(state);
+        force = bushing->findGeneralizedForce(state);
+        // The anchor frame A, in which the generalized force is expressed: R_GH R_HF R_FA.
+        R_GA = experiment.getScene().getPalm().getBodyRotation(state) * bushing->getFrameOnH(state).R() *
+               bushing->findAnchorTransform(state).R();
+        sliding = false;
+        for (int k = 0; k < 6; ++k) sliding = sliding || bushing->isSliding(state, static_cast<grasp::BushingAxis>(k));
+    };
+    const auto approx = simulation::runGraspSimulation(s, options, {}, observe);
+    const auto full = simulation::runGraspSimulation(s, makeOptions(simulation::SimulationMode::Full, duration));
+    ASSERT_TRUE(approx.summary.complete) << approx.summary.failure;
+    ASSERT_TRUE(approx.summary.engaged);
+    ASSERT_EQ(approx.events.size(), 1u) << approx.events.back().reason;
+    EXPECT_NE(approx.events[0].reason.find("compliance limits"), std::string::npos) << approx.events[0].reason;
+    double asymmetry = 0;
+    for (int k = 0; k < 6; ++k) {
+        EXPECT_GT(lower[k], 0) << k;
+        EXPECT_GT(upper[k], 0) << k;
+        asymmetry = std::max(asymmetry, std::abs(upper[k] - lower[k]) / std::max(upper[k], lower[k]));
+    }
+    EXPECT_GT(asymmetry, 0.2) << "lower " << lower << " upper " << upper;
+    const double weight = s.object.mass * std::abs(s.world.gravity[1]);
+    const SimTK::Vec3 F_G = R_GA * force.getSubVec<3>(3);
+    EXPECT_NEAR(F_G[1], weight, 0.05 * weight) << F_G;
+    EXPECT_FALSE(sliding);
+    for (int k = 0; k < 6; ++k) {
+        EXPECT_LT(force[k], upper[k]) << k;
+        EXPECT_GT(force[k], -lower[k]) << k;
+    }
+    const double gap = findLargestDistanceFrom(approx, approx.summary.engageTime, full.trajectory.back().p_GO);
+    EXPECT_LT(gap, 0.002) << "approx object strays " << gap << " m from the full-contact final position";
 }

@@ -3,7 +3,8 @@
 /// The friction limits of the approximation's 6-DOF palm-object constraint: how much force along,
 /// and torque about, each axis of the constraint frame M the replaced contacts could carry.
 ///
-/// Two models:
+/// Two models here (a third, Compliance, is compliance_limits.h: two-sided limits from the
+/// compliance model of the grasp, which needs the fingers' compliance from the simulation layer):
 ///  - Thesis (section 4.2, eq. 4.1-4.3): one box, mu F_perp on every translation axis and
 ///    mu r F_perp on every rotation axis, with F_perp the summed normal forces and r the mean
 ///    distance of the contacts from their centroid. It ignores which way each contact faces, so a
@@ -32,13 +33,16 @@ namespace graspsim::grasp {
 /// How the approximation's constraint limits are derived from the contacts at engagement.
 enum class FrictionLimitModel {
     Thesis,          ///< thesis eq. 4.1-4.3: mu F_perp and mu r F_perp on every axis (the default)
-    ContactGeometry  ///< per axis, from each contact's normal and position (file comment)
+    ContactGeometry,  ///< per axis, from each contact's normal and position (file comment)
+    /// two-sided per axis, the compliance model's slip onset along and about each axis
+    /// (compliance_limits.h); needs the bushing
+    Compliance
 };
 
-/// "thesis" or "contact", the spelling of the command line.
+/// "thesis", "contact" or "compliance", the spelling of the command line.
 std::string toString(FrictionLimitModel model);
 
-/// Parses "thesis" or "contact".
+/// Parses "thesis", "contact" or "compliance".
 /// @throws graspsim::InputError naming `what`, the value and the accepted spellings.
 FrictionLimitModel parseFrictionLimitModel(const std::string& text, const std::string& what);
 

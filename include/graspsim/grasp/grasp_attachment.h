@@ -43,8 +43,12 @@ struct FingerLoad {
 struct AttachmentEngagement {
     SimTK::Transform X_HF;  ///< pose of F on the palm H (m); coincides with M at engagement
     SimTK::Transform X_OM;  ///< pose of M on the object O (m)
-    /// Per-axis limits L, rotation first (N m for 0-2, N for 3-5): mu r F_perp and mu F_perp.
+    /// Per-axis limits L, rotation first (N m for 0-2, N for 3-5): mu r F_perp and mu F_perp. With
+    /// `lowerLimits` set, the upper side L+ (the force on the object along the axis stays <= L+).
     SimTK::Vec6 limits{0};
+    /// The lower sides L- (force on the object >= -L-), for two-sided limits; unset: symmetric,
+    /// L- = L+ = limits. Only the bushing takes two-sided limits (the weld refuses them).
+    std::optional<SimTK::Vec6> lowerLimits;
     std::array<bool, 6> lockedAxes{};  ///< per axis, true: locked (limit infinite)
     /// Farthest contact point from M's origin (m): the lever through which the element's rotation
     /// moves a fingertip (for the compliant element's stiffness).
@@ -61,9 +65,12 @@ struct AttachmentEngagement {
 /// translation along them.
 struct SingleConstraintState {
     SimTK::Transform X_OM;      ///< pose of the constraint frame M on the object O (m)
-    SimTK::Vec6 limits{0};      ///< effective limits (N m for 0-2, N for 3-5); +Infinity on locked axes
+    SimTK::Vec6 limits{0};      ///< effective limits, upper side (N m for 0-2, N for 3-5); +Infinity on locked axes
     SimTK::Vec6 reaction{0};    ///< generalized reaction on the object along M's axes (N m, N)
     SimTK::SpatialVec wrench_G; ///< the same as a spatial force on the object (moment about M's origin, N m; force, N), in Ground
+    /// Lower sides of two-sided limits (the reaction stays >= -lowerLimits); equal to `limits`
+    /// for symmetric ones.
+    SimTK::Vec6 lowerLimits{0};
 };
 
 /// The friction-limited attachment of the grasp approximation (see the file comment).

@@ -18,12 +18,14 @@
 ///
 /// Per axis k, with e the displacement of M from A (e_r = rotation vector of R_AM (rad),
 /// e_p = p_AM expressed in A (m)), r the velocity of M relative to F expressed in A (angular
-/// rad/s, linear m/s of M's origin), and L_k the axis's limit (N m or N):
+/// rad/s, linear m/s of M's origin), and L_k the axis's limit (N m or N) on the side the elastic
+/// force -K_k e_k points to (two-sided limits: f_k in [-L-_k, +L+_k]; L_k = L+_k for e_k < 0, else
+/// L-_k; equal sides are the symmetric element):
 ///  - slip fraction  s_k = g(K_k |e_k| / L_k) if e_k r_k > 0 (loading), else 0; g is 0 below
 ///    1 - w, a C1 smoothstep to 1 at u = 1 (w = getSlipOnsetWidth()), and 1 + ((u - 1) / w)^2
 ///    above, so an overshoot past the limit is pulled back (see limited_bushing_law.h);
 ///  - anchor rate    (rate of A in F, in A)_k = s_k r_k;   elastic rate  edot_k = (1 - s_k) r_k;
-///  - generalized force  f_k = clamp(-K_k e_k - D_k edot_k, -L_k, +L_k).
+///  - generalized force  f_k = clamp(-K_k e_k - D_k edot_k, -L-_k, +L+_k).
 /// O receives moment (f_0, f_1, f_2) and force (f_3, f_4, f_5), expressed in A, at M's origin;
 /// H receives the opposite at the same point.
 ///
@@ -90,8 +92,12 @@ public:
     /// not Force::disable(), which would also skip the element's zdot computation.
     void setEnabled(SimTK::State& state, bool enabled) const;
 
-    /// Per-axis force limits L (N m for 0-2, N for 3-5) in `state`, before locking.
+    /// Per-axis force limits L (N m for 0-2, N for 3-5) in `state`, before locking: the upper side
+    /// L+ (the force on O along the axis stays <= L+).
     const SimTK::Vec6& getLimits(const SimTK::State& state) const;
+    /// The lower side L- (>= 0; the force on O stays >= -L-), before locking; getLimits() unless
+    /// two-sided limits were set.
+    const SimTK::Vec6& getLowerLimits(const SimTK::State& state) const;
     /// Sets L (each >= 0; +Infinity allowed); invalidates Stage::Dynamics. The thesis's values
     /// are mu F_perp on translation axes (eq. 4.1) and mu |r| F_perp on rotation axes (eq. 4.2).
     /// If `state` is realized to Stage::Position, the anchor is moved so that |K_k e_k| <= L_k on
@@ -99,6 +105,10 @@ public:
     /// elasto-plastic material does); otherwise the anchor is left alone.
     /// @throws graspsim::InputError naming the axis for a negative or NaN limit.
     void setLimits(SimTK::State& state, const SimTK::Vec6& limits) const;
+    /// Two-sided limits: the force on O along axis k stays in [-lower_k, +upper_k] (each >= 0;
+    /// +Infinity allowed); the slip onset of a loaded axis is decided by the side it is loaded
+    /// toward. Otherwise as setLimits(state, limits), which is setLimits(state, limits, limits).
+    void setLimits(SimTK::State& state, const SimTK::Vec6& lower, const SimTK::Vec6& upper) const;
     /// K per axis in force in `state` (N m/rad for 0-2, N/m for 3-5); the constructor's until
     /// setStiffness() is called.
     const SimTK::Vec6& getStiffness(const SimTK::State& state) const;
@@ -116,8 +126,10 @@ public:
     /// Locks (true) or relaxes (false, limited by getLimits()) `axis`; invalidates
     /// Stage::Dynamics. Relaxing follows the same anchor rule as setLimits().
     void setAxisLocked(SimTK::State& state, BushingAxis axis, bool locked) const;
-    /// The limits in force: L_k, or +Infinity for a locked axis.
+    /// The limits in force: L_k (the upper side), or +Infinity for a locked axis.
     SimTK::Vec6 findEffectiveLimits(const SimTK::State& state) const;
+    /// The lower sides in force: L-_k, or +Infinity for a locked axis.
+    SimTK::Vec6 findEffectiveLowerLimits(const SimTK::State& state) const;
 
     /// Moves frame F to pose X_HF on H and frame M to X_OM on O (m; e.g. both at the point the
     /// element should act through); invalidates Stage::Instance. The anchor keeps its pose in F,
@@ -156,9 +168,10 @@ public:
     /// GraspAttachment: moves F and M to `engagement`'s frames, enables the element with its
     /// anchor at the current pose (no spring force jump), stiffens it so that its elastic
     /// deflection at the limits moves no fingertip (at most engagement.leverArm from M) more
-    /// than engagement.penetrationBound (calcStiffnessForBound, never below the constructor's
+    /// than engagement.penetrationBound (calcStiffnessForBound with each axis's larger side, never below the constructor's
     /// stiffness; damping critical with the object's mass and central moments of inertia), then
-    /// sets the limits and locks. Leaves `state` realized to Stage::Position.
+    /// sets the limits (two-sided if engagement.lowerLimits is set) and locks. Leaves `state`
+    /// realized to Stage::Position.
     void engage(SimTK::State& state, const AttachmentEngagement& engagement) const override;
     /// GraspAttachment: disables the element.
     void release(SimTK::State& state) const override { setEnabled(state, false); }
@@ -170,8 +183,8 @@ public:
         const SimTK::MobilizedBody& bodyO) const override;
     /// GraspAttachment: findWrench() with its moment moved to O's origin. Needs Stage::Velocity.
     SimTK::SpatialVec findReactionOnObject(const SimTK::State& state) const override;
-    /// GraspAttachment: getFrameOnO(), findEffectiveLimits(), findGeneralizedForce() and
-    /// findWrench() while enabled. Needs Stage::Velocity.
+    /// GraspAttachment: getFrameOnO(), findEffectiveLimits(), findGeneralizedForce(), findWrench()
+    /// and findEffectiveLowerLimits() while enabled. Needs Stage::Velocity.
     std::optional<SingleConstraintState> findSingleConstraintState(const SimTK::State& state) const override;
 };
 

@@ -9,6 +9,8 @@
 
 #include "graspsim/simbody.h"
 
+#include <array>
+
 namespace graspsim::grasp {
 
 /// Fraction s of the relative rate r that the anchor takes over (zdot = s r).
@@ -23,6 +25,25 @@ double calcSlipFraction(double stiffness, double limit, double onsetWidth, doubl
 /// Force (N or N m) on the axis: clamp(-K e - D edot, -L, +L), edot the elastic rate
 /// (1 - s) r.
 double calcAxisForce(double stiffness, double damping, double limit, double e, double edot);
+
+/// Two-sided limits (an axis whose force may lie in [-L-, +L+]): the limit of the side the elastic
+/// force -K e points to, L+ for e < 0 and L- otherwise (N m or N). Sliding is decided by that
+/// side's limit: a load that presses the axis toward +L+ slips at L+, one toward -L- at L-.
+double findLoadedSideLimit(double lower, double upper, double e);
+
+/// calcSlipFraction with the limit of the loaded side (findLoadedSideLimit): identical to it for
+/// lower == upper.
+double calcTwoSidedSlipFraction(double stiffness, double lower, double upper, double onsetWidth, double e, double r);
+
+/// Force (N or N m) on a two-sided axis: clamp(-K e - D edot, -L-, +L+); calcAxisForce for
+/// lower == upper.
+double calcTwoSidedAxisForce(double stiffness, double damping, double lower, double upper, double e, double edot);
+
+/// The limits with the locked axes' set to +Infinity.
+SimTK::Vec6 applyAxisLocks(const SimTK::Vec6& limits, const std::array<bool, 6>& locked);
+
+/// Per axis the larger of two one-sided limits (N m, N): what a two-sided axis must be stiff enough for.
+SimTK::Vec6 findLargerSide(const SimTK::Vec6& lower, const SimTK::Vec6& upper);
 
 /// Stiffness per axis for which loads up to `loads` (N m on rotations 0-2, N on translations 3-5)
 /// move a point at `leverArm` (m) from the frame origin by at most `bound` (m): each of the two

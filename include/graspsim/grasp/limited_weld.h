@@ -136,6 +136,7 @@ public:
     /// GraspAttachment: moves F and M to `engagement`'s frames, sets the limits and locks, then
     /// enables the weld (last, so that axes already over their limits start sliding at once).
     /// Leaves `state` realized to Stage::Position.
+    /// @throws graspsim::InputError for two-sided limits (lowerLimits set and unequal to limits).
     void engage(SimTK::State& state, const AttachmentEngagement& engagement) const override;
     /// GraspAttachment: disables the weld.
     void release(SimTK::State& state) const override { setEnabled(state, false); }

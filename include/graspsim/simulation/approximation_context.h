@@ -14,6 +14,7 @@
 #include "graspsim/scenario/scenario.h"
 #include "graspsim/simulation/fingertip_goals.h"
 #include "graspsim/simulation/object_hold.h"
+#include "graspsim/system/implicit_joint_impedance.h"
 #include "graspsim/system/multibody_model.h"
 
 #include "graspsim/simbody.h"
@@ -40,6 +41,9 @@ struct ApproximationContext {
     const grasp::MultiAttachment* multi = nullptr;  ///< the same, when it is the multi-attachment
     const control::GraspController& controller;  ///< the IK controller the switch runs while ungrasped
     double ikInterval = 0;                       ///< the IK's period, the switch's too (s)
+    /// Every joint's stiffness (springs + PD) and stop, for the fingers' compliance
+    /// (finger_compliance.h) of the compliance limits.
+    std::vector<system::JointImpedance> jointImpedances;
 };
 
 }  // namespace graspsim::simulation

@@ -16,6 +16,9 @@
 ///         mu r F_perp, with mu the scenario's DYNAMIC friction: the limit is reached only when
 ///         the object slides, and sliding skin-on-object friction is the dynamic one (below
 ///         the limit the bushing sticks elastically and the weld rigidly, which is what static friction gives);
+///         or per axis from the contacts' geometry (ApproxOptions::limitModel contact), or two-sided
+///         per axis from the grasp's compliance model (compliance: grasp/compliance_limits.h, with
+///         the fingers' compliance of finger_compliance.h at this state and mu_s by default);
 ///     (b) disable every hand-object contact pair;
 ///     (c) MERGE: lock every finger joint's mobilizer at its current angle, so hand and fingers
 ///         move as one composite body. Realism lost: the fingers no longer flex while engaged
@@ -36,7 +39,11 @@
 ///         of mass a force through the centre of mass makes no moment on the constraint, so a
 ///         pull that levers the object out of a pinch (phone-pinch f1: 2 N at 2.6 cm from the
 ///         pinch) was held by the approximation while full contact drops the object; at the
-///         centroid the same pull makes its real moment about the grip, and the verdicts agree;
+///         centroid the same pull makes its real moment about the grip, and the verdicts agree.
+///         The compliance limits are the exception: they are the model's capacities for loads
+///         through M's origin, which the model already shares among the contacts by their
+///         positions (a load's moment about the grip included), so M is at the centre of mass,
+///         where weight, inertia and the capacity protocol's loads act;
 ///     (e) record an "engage" event.
 ///  With ApproxOptions::attach Multi, (c) and (d) are replaced by multi_attachment_switch.h (fingers
 ///  stay free, one friction-limited part per fingertip, fingers detached one by one).
@@ -168,7 +175,7 @@ private:
     void release(SimTK::State& state, double quality, const std::string& reason) const;
     void setFingersMerged(SimTK::State& state, bool merged) const;
     std::string describeRelease(const SimTK::State& state, double quality) const;
-    std::string describeEngagement(double qThreshold, const SimTK::Vec6& limits) const;
+    std::string describeEngagement(double qThreshold, const grasp::AttachmentEngagement& engagement) const;
     double findVelocityJump(SimTK::State& state, const SimTK::Vec3& v_before) const;
 
     const ApproximationContext& context_;

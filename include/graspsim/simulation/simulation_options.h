@@ -76,11 +76,16 @@ struct ApproxOptions {
     /// engagement (m). The locked fingers cannot give way as real contacts would, so an object
     /// sliding against a pad sinks into it; handed back later, the pad would throw the object out.
     double releasePenetration = 0.0005;
-    /// Opt-in, for comparing capacities: the friction limits from the scenario's STATIC friction instead of the
-    /// dynamic one (the compliant contact holds until the static coefficient; docs/capacity.md).
-    bool staticFrictionLimits = false;
+    /// Which friction coefficient the limits use: true the scenario's STATIC one, false the
+    /// dynamic one; unset (default) the limit model's own: dynamic for the thesis's and the contact
+    /// limits (static is opt-in, for comparing capacities: the compliant contact holds until the
+    /// static coefficient), static for the compliance limits, whose model stands for full contact's
+    /// regularized friction, which breaks loose at its static peak (docs/capacity.md).
+    std::optional<bool> staticFrictionLimits;
     /// How the constraint's limits follow from the contacts at engagement: the thesis's box
-    /// (default) or per axis from each contact's normal and position (grasp/friction_limits.h).
+    /// (default), per axis from each contact's normal and position (grasp/friction_limits.h), or
+    /// two-sided per axis from the grasp's compliance model (grasp/compliance_limits.h; bushing
+    /// and merged only).
     grasp::FrictionLimitModel limitModel = grasp::FrictionLimitModel::Thesis;
     /// Bound on the growth of the fingertips' penetration while engaged from the bushing's elastic
     /// deflection (m; the thesis's conclusion names fingertips sinking into the object as the
@@ -134,8 +139,10 @@ ApproxAttach parseApproxAttach(const std::string& text, const std::string& sourc
 std::string toString(ApproxAttach attach);
 
 /// Whether the scene of `scenario` supports `options.approx.attach` in approx mode: multi needs
-/// the bushing realization, and every goal end-effector on a body with contact geometry.
-/// Call before anything is written. @throws graspsim::InputError naming --attach otherwise.
+/// the bushing realization, and every goal end-effector on a body with contact geometry; and
+/// whether the limit model fits the attachment: compliance limits are two-sided, which only the
+/// merged bushing takes. Call before anything is written.
+/// @throws graspsim::InputError naming --attach or --limits otherwise.
 void checkApproxAttach(const scenario::Scenario& scenario, const SimulationOptions& options);
 
 /// Largest step / anchor_relaxation_time of the fixed-step linearly implicit integrator with the
