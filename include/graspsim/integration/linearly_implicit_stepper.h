@@ -101,6 +101,7 @@ private:
     void advanceControlled(double tStop);
     void stepToInterpolating(double time);
     bool takeControlledStep(double tStop);
+    double findStepToStop(double remaining) const;
     void restoreStepStart(double t, const SimTK::Vector& q, const SimTK::Vector& u, const SimTK::Vector& z);
     void showAt(double t);
     bool handleInterpolatedEvents(const SimTK::HandleEventsResults& results);
@@ -127,6 +128,8 @@ private:
     SimTK::Array_<SimTK::EventTriggerInfo> triggerInfo_;
     static constexpr double kMinStepSize = 1e-8;  // s; a step this short is accepted whatever its error
     double nextStepSize_ = SimTK::Infinity;  // s, from the last step's error (error control only)
+    // Equal steps to a stop (findStepToStop): up to this many, each up to this factor of the proposal.
+    static constexpr double kMaxEqualSteps = 4, kStepStretch = 1.15;
     long rejectedSteps_ = 0;
     // M of the step matrix, kept for kMassMatrixAge: ROS2 is a W-method (second order with any
     // W), and the arm's mass matrix changes slowly; calcM was a fifth of a step.
