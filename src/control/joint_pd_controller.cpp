@@ -47,6 +47,18 @@ struct TargetRamp {
         }
         return value;
     }
+    // findValue(t)[k] without the whole vector: the last segment started by t sets the value
+    // (the same arithmetic, element by element, so the same numbers).
+    double findValue(double t, int k) const {
+        const RampSegment* last = nullptr;
+        for (const RampSegment& r : segments) {
+            if (t <= r.start) break;
+            last = &r;
+        }
+        if (last == nullptr) return base[k];
+        const double tau = std::min(1.0, (t - last->start) / last->duration);
+        return last->from[k] + (tau * tau * (3 - 2 * tau)) * (last->to[k] - last->from[k]);
+    }
     // Drops the segments over by `t`, folding their end value into the base.
     void forgetBefore(double t) {
         while (!segments.empty() && segments.front().findEnd() <= t) {
@@ -103,16 +115,30 @@ public:
     }
     double findAngle(const State& s, std::size_t k) const { return matter_.getMobilizedBody(jointBodies_[k]).getOneQ(s, 0); }
 
+    // The joints' q and u indices, fixed from the Model stage on (graspsim changes no Model-stage
+    // variable during a run): looking them up through the mobilized bodies' handles at every
+    // evaluation cost more than the torques.
+    void realizeModel(State& s) const override {
+        qIndices_.clear();
+        uIndices_.clear();
+        for (MobilizedBodyIndex b : jointBodies_) {
+            const SimTK::MobilizedBody& mobod = matter_.getMobilizedBody(b);
+            qIndices_.push_back(mobod.getFirstQIndex(s));
+            uIndices_.push_back(mobod.getFirstUIndex(s));
+        }
+    }
+
     void calcForce(const State& s, SimTK::Vector_<SimTK::SpatialVec>&, SimTK::Vector_<SimTK::Vec3>&,
                    Vector& mobilityForces) const override {
-        const Vector target = getTargets(s);
+        const TargetRamp& ramp = SimTK::Value<TargetRamp>::downcast(matter_.getDiscreteVariable(s, rampIndex_)).get();
+        const Vector& held = SimTK::Value<Vector>::downcast(matter_.getDiscreteVariable(s, targetsIndex_)).get();
         const Vector& holding = findGravityHoldingForces(s);
+        const Vector &q = s.getQ(), &u = s.getU();
         for (std::size_t k = 0; k < jointBodies_.size(); ++k) {
-            const SimTK::MobilizedBody& mobod = matter_.getMobilizedBody(jointBodies_[k]);
-            const double q = mobod.getOneQ(s, 0), u = mobod.getOneU(s, 0);
-            const double tau = gains_[k].kp * (target[static_cast<int>(k)] - q) - gains_[k].kd * u +
-                               holding[mobod.getFirstUIndex(s)];
-            mobod.applyOneMobilityForce(s, SimTK::MobilizerUIndex(0), tau, mobilityForces);
+            const int i = static_cast<int>(k), ui = uIndices_[k];
+            const double target = ramp.active ? ramp.findValue(s.getTime(), i) : held[i];
+            const double tau = gains_[k].kp * (target - q[qIndices_[k]]) - gains_[k].kd * u[ui] + holding[ui];
+            mobilityForces[ui] += tau;
         }
     }
 
@@ -133,9 +159,10 @@ private:
         SimTK::Vector_<SimTK::SpatialVec> weights(matter_.getNumBodies(), SimTK::SpatialVec(SimTK::Vec3(0), SimTK::Vec3(0)));
         for (MobilizedBodyIndex b : weighedBodies_) {
             const SimTK::MobilizedBody& mobod = matter_.getMobilizedBody(b);
-            const double m = mobod.getBodyMass(s);
+            const SimTK::MassProperties& mass = mobod.getBodyMassProperties(s);
+            const double m = mass.getMass();
             if (m == 0) continue;
-            const SimTK::Vec3 p_BoCm_G = mobod.getBodyRotation(s) * mobod.getBodyMassCenterStation(s);
+            const SimTK::Vec3 p_BoCm_G = mobod.getBodyRotation(s) * mass.getMassCenter();
             const SimTK::Vec3 W = m * gravity_;
             weights[b] = SimTK::SpatialVec(p_BoCm_G % W, W);
         }
@@ -151,6 +178,7 @@ private:
     std::vector<MobilizedBodyIndex> weighedBodies_;
     mutable SimTK::DiscreteVariableIndex targetsIndex_, rampIndex_;
     mutable SimTK::CacheEntryIndex holdingIndex_;
+    mutable std::vector<int> qIndices_, uIndices_;  // per joint, from realizeModel
 };
 
 JointPdController::JointPdController(system::MultibodyModel& model, const std::vector<ControlledJoint>& joints,

@@ -1,9 +1,10 @@
 #include "graspsim/integration/linearly_implicit_stepper.h"
 
+#include "dense_output.h"
 #include "n_matrix.h"
 #include "scheduled_times.h"
-#include "step_interpolation.h"
 #include "step_matrix.h"
+#include "step_size_control.h"
 
 #include "graspsim/error.h"
 
@@ -53,7 +54,7 @@ LinearlyImplicitStepper::LinearlyImplicitStepper(const SimTK::MultibodySystem& s
                                                  std::vector<const ForceJacobianContributor*> contributors,
                                                  const LinearlyImplicitOptions& options)
     : system_(system), contributors_(std::move(contributors)), options_(options), n0_(std::make_unique<NMatrix>()),
-      stepStart_(std::make_unique<StepInterpolation>()) {
+      dense_(std::make_unique<DenseOutput>()), stepSizes_(std::make_unique<StepSizeControl>(options.stepSize)) {
     checkOptions(options_);
     std::sort(options_.landingTimes.begin(), options_.landingTimes.end());
 }
@@ -86,9 +87,7 @@ void LinearlyImplicitStepper::initialize(const SimTK::State& initial) {
     ++evaluations_;
     system_.calcEventTriggerInfo(state_, triggerInfo_);
     triggers_ = state_.getEventTriggers();
-    reportVariables_ = findReportVariables(state_);
-    hasAutoUpdate_ = hasAutoUpdateVariables(state_);
-    interpolatedInSync_ = false;
+    dense_->initialize(state_);
     stepsAtInitialize_ = steps_;
     massMatrixTime_ = -SimTK::Infinity;
     matrixStale_ = true;
@@ -134,17 +133,14 @@ void LinearlyImplicitStepper::showAt(double t) {
         outputInterpolated_ = false;
         return;
     }
-    // A State copy costs about two evaluations (Simbody copies every cache entry): it is made only
-    // when the integrator's state changed otherwise than in time, q, u and z since the last one.
-    if (!interpolatedInSync_) interpolated_ = state_;
-    interpolatedInSync_ = !hasAutoUpdate_;
-    interpolated_.updTime() = t;
-    stepStart_->interpolate(state_, t, interpolated_.updY());
-    project(interpolated_);
-    system_.realize(interpolated_, SimTK::Stage::Acceleration);
+    SimTK::State& shown = dense_->interpolate(state_, t);
+    project(shown);
+    system_.realize(shown, SimTK::Stage::Acceleration);
     ++evaluations_;
     outputInterpolated_ = true;
 }
+
+const SimTK::State& LinearlyImplicitStepper::getState() const { return outputInterpolated_ ? dense_->getState() : state_; }
 
 // Where the next step must end at the latest: a landing time, a scheduled event to land on (see
 // landOnEvents_), or `target` (the next output) when it is at least half a step away. Interpolating
@@ -153,7 +149,7 @@ double LinearlyImplicitStepper::findStop(double target, double nextEvent) const 
     const double t = state_.getTime();
     double stop = findNextLanding(t);
     if (landOnEvents_) stop = std::min(stop, nextEvent);
-    if (target - t >= 0.5 * std::min(nextStepSize_, options_.stepSize)) stop = std::min(stop, target);
+    if (target - t >= 0.5 * stepSizes_->getProposal()) stop = std::min(stop, target);
     return stop;
 }
 
@@ -165,7 +161,7 @@ double LinearlyImplicitStepper::findNextLanding(double t) const {
 // Handles the scheduled events and reports due now; true if any was.
 bool LinearlyImplicitStepper::handleDueScheduledEvents() {
     SimTK::HandleEventsResults results;
-    SimTK::State& now = outputInterpolated_ ? interpolated_ : state_;
+    SimTK::State& now = outputInterpolated_ ? dense_->updState() : state_;
     // Realized through Report, a change of a Report-stage variable shows in the results (Simbody
     // compares the versions of the stages realized before the handlers).
     if (interpolates()) system_.realize(now, SimTK::Stage::Report);
@@ -185,13 +181,8 @@ bool LinearlyImplicitStepper::handleDueScheduledEvents() {
 // state ahead (true); a lower change makes the handled state the integrator's own, the rest of
 // the step dropped (a one-step method keeps no history), and handleResults() goes on (false).
 bool LinearlyImplicitStepper::handleInterpolatedEvents(const SimTK::HandleEventsResults& results) {
-    const SimTK::Stage lowest = results.getLowestModifiedStage();
-    const bool failed = results.getExitStatus() != SimTK::HandleEventsResults::Succeeded;
-    if (!failed && lowest >= SimTK::Stage::Report) {
-        if (lowest == SimTK::Stage::Report) copyReportVariables(reportVariables_, interpolated_, state_);
-        return true;
-    }
-    state_ = interpolated_;
+    if (dense_->handOn(results, state_)) return true;
+    state_ = dense_->getState();
     outputInterpolated_ = false;
     matrixStale_ = true;
     return false;
@@ -215,9 +206,7 @@ void LinearlyImplicitStepper::advance(double tStop) {
 }
 
 // A step whose error estimate exceeds the accuracy is taken again from its start, shorter; the
-// next step grows by the usual second-order rule, 0.9 error^(-1/2), by 5x at most (not at all
-// right after a rejection), up to h. A stop closer than 1.5 steps is reached in one or two equal
-// steps, so no sliver step is left.
+// steps are chosen by StepSizeControl, never longer than h.
 void LinearlyImplicitStepper::advanceControlled(double tStop) {
     while (!terminated_ && state_.getTime() < tStop) {
         if (takeControlledStep(tStop)) return;
@@ -229,10 +218,9 @@ void LinearlyImplicitStepper::advanceControlled(double tStop) {
 bool LinearlyImplicitStepper::takeControlledStep(double tStop) {
     for (;;) {
         const double t = state_.getTime(), remaining = tStop - t;
-        double h = std::min(nextStepSize_, options_.stepSize);
-        if (remaining < 1.5 * h) h = remaining <= h ? remaining : remaining / 2;
+        const double h = stepSizes_->findStepToStop(remaining);
         const SimTK::Vector q = state_.getQ(), u = state_.getU(), z = state_.getZ();
-        if (interpolates()) stepStart_->captureStart(state_);
+        if (interpolates()) dense_->captureStart(state_);
         double error = 0;
         if (takeStep(h, error)) return true;
         if (redo_) {
@@ -241,16 +229,7 @@ bool LinearlyImplicitStepper::takeControlledStep(double tStop) {
             restoreStepStart(t, q, u, z);
             continue;
         }
-        const double factor = std::clamp(0.9 / std::sqrt(std::max(error, 1e-10)), 0.2, 5.0);
-        if (error <= 1 || h <= kMinStepSize) {
-            // No growth right after a rejection (Hairer and Wanner's rule): the step that just
-            // passed is near the limit, and growing it again mostly buys another rejection.
-            nextStepSize_ = h * (justRejected_ ? std::min(factor, 1.0) : factor);
-            justRejected_ = false;
-            return false;
-        }
-        nextStepSize_ = h * factor;
-        justRejected_ = true;
+        if (stepSizes_->acceptStep(h, error)) return false;
         matrixStale_ = true;
         ++rejectedSteps_;
         restoreStepStart(t, q, u, z);
@@ -300,7 +279,7 @@ bool LinearlyImplicitStepper::takeStep(double h, double& error) {
     project(state_);
     system_.realize(state_, SimTK::Stage::Acceleration);
     ++evaluations_;
-    if (options_.accuracy > 0 && error > 1 && h > kMinStepSize) return false;
+    if (options_.accuracy > 0 && error > 1 && h > StepSizeControl::kMinStepSize) return false;
     const SimTK::Array_<SimTK::EventId> triggered = findTriggeredEvents();
     if (!triggered.empty() && state_.getTime() > eventHorizon_) {
         redo_ = true;
@@ -469,7 +448,7 @@ SimTK::Array_<SimTK::EventId> LinearlyImplicitStepper::findTriggeredEvents() con
 // After any handler: realize the (possibly changed) state again and take its triggers as the
 // reference for the next step's crossings (an Instance-stage change may change their number).
 void LinearlyImplicitStepper::handleResults(const SimTK::HandleEventsResults& results) {
-    interpolatedInSync_ = false;  // handlers worked on state_
+    dense_->markChanged();  // handlers worked on state_
     if (results.getExitStatus() == SimTK::HandleEventsResults::Failed) {
         throw NumericalError("event handler failed at " + timeText(state_) + ": " + results.getMessage());
     }

@@ -75,7 +75,8 @@ struct LinearlyImplicitOptions {
 /// contributors must outlive it.
 class StepMatrix;  // src/integration/step_matrix.h
 class NMatrix;     // src/integration/n_matrix.h
-class StepInterpolation;  // src/integration/step_interpolation.h
+class DenseOutput;  // src/integration/dense_output.h
+class StepSizeControl;  // src/integration/step_size_control.h
 
 class LinearlyImplicitStepper : public Stepper {
 public:
@@ -88,7 +89,7 @@ public:
     void initialize(const SimTK::State& initial) override;
     void stepTo(double time) override;
     /// The state at the last stepTo() time: the integrator's own, or interpolated inside its last step.
-    const SimTK::State& getState() const override { return outputInterpolated_ ? interpolated_ : state_; }
+    const SimTK::State& getState() const override;
     long getNumStepsTaken() const override { return steps_ - stepsAtInitialize_; }
     IntegrationStatistics getStatistics() const override;
     /// "linearly-implicit-euler" (order 1) or "rosenbrock-ros2" (order 2).
@@ -125,8 +126,6 @@ private:
     SimTK::State state_;
     SimTK::Vector triggers_;                         // the event triggers at the state's time
     SimTK::Array_<SimTK::EventTriggerInfo> triggerInfo_;
-    static constexpr double kMinStepSize = 1e-8;  // s; a step this short is accepted whatever its error
-    double nextStepSize_ = SimTK::Infinity;  // s, from the last step's error (error control only)
     long rejectedSteps_ = 0;
     // M of the step matrix, kept for kMassMatrixAge: ROS2 is a W-method (second order with any
     // W), and the arm's mass matrix changes slowly; calcM was a fifth of a step.
@@ -142,17 +141,12 @@ private:
     static constexpr double kMatrixStepRatio = 1.1;  // g / g_built within (1/1.1, 1.1)
     std::unique_ptr<StepMatrix> matrix_;
     std::unique_ptr<NMatrix> n0_;  // N(q0) of the step under way
-    // Dense output (interpolates()): the last step's start, the state interpolated in it, whether
-    // getState() is that one, the Report-stage variables a scheduled event may hand on to state_,
-    // and the latest time a triggered event may be handled at (an output time inside the step
-    // must see the state before that event: such a step is taken again, ending there).
-    std::unique_ptr<StepInterpolation> stepStart_;
-    SimTK::State interpolated_;
+    // Dense output (interpolates()): the state interpolated in the last step, whether getState()
+    // is that one, and the latest time a triggered event may be handled at (an output time inside
+    // the step must see the state before that event: such a step is taken again, ending there).
+    std::unique_ptr<DenseOutput> dense_;
+    std::unique_ptr<StepSizeControl> stepSizes_;  // error control only
     bool outputInterpolated_ = false;
-    // Whether interpolated_ differs from state_ only in time, q, u and z (then showAt() need not
-    // copy the whole State again), and whether auto-update variables rule that out.
-    bool interpolatedInSync_ = false, hasAutoUpdate_ = false;
-    std::vector<std::pair<SimTK::SubsystemIndex, SimTK::DiscreteVariableIndex>> reportVariables_;
     double eventHorizon_ = SimTK::Infinity;
     bool redo_ = false;
     // Whether the steps end on the next scheduled event. An event whose handlers change the state
@@ -168,7 +162,6 @@ private:
     bool matrixStale_ = true;
     long matrixBuilds_ = 0;
     mutable double linearSolveSeconds_ = 0;  // building, factoring, solving (s)
-    bool justRejected_ = false;
     double lastEventTime_ = -SimTK::Infinity, lastReportTime_ = -SimTK::Infinity;
     long steps_ = 0, stepsAtInitialize_ = 0, evaluations_ = 0, projections_ = 0;
     long scheduledEvents_ = 0, triggeredEvents_ = 0;
