@@ -72,6 +72,7 @@ std::vector<CapacityRow> runCapacityComparison(const CapacityPlan& plan, const C
                 CapacityRow row{experiment, load.name, variant, {}, false, 0};
                 simulation::SimulationOptions options = makeVariantOptions(variant, "none", 0);
                 options.accuracy = plan.accuracy;
+                options.integrator = plan.integrator;
                 row.measured = capacity::measureGraspCapacityRamp(scenario, options, request);
                 const capacity::CapacityFigures& f = row.measured.trace.figures;
                 if (variant != "full" && rows[full].measured.trace.figures.slipped && f.slipped) {

@@ -39,6 +39,12 @@ struct CapacityPlan {
     /// ball) and the approximation's ramp does not converge; at 3e-4 the ball's −y slip onsets are
     /// within 0.2 % of those at 1e-4 in both modes (docs/capacity.md).
     double accuracy = 3e-4;
+    /// The integrator of every ramp. The linearly implicit stepper's error estimate follows the
+    /// bushing's slip onset where CPodes's single absolute tolerance does not: with CPodes, ball
+    /// ramps of the approximation stuck past their limits and ended in step failures (x, -y at 6 N/s,
+    /// -z), and each ramp cost about 20 times as much; full contact's figures agree within 0.2 %
+    /// between the two (docs/capacity.md).
+    simulation::IntegratorChoice integrator = simulation::IntegratorChoice::LinearlyImplicit;
 };
 
 /// Called before each ramp with its index, the number of ramps, and a label ("ball-clutch -y full").
