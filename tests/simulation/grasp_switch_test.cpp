@@ -268,7 +268,8 @@ TEST(GraspSwitch, RejectsBadThresholdsBeforeSimulating) {
 }
 
 // Under every perturbation of both experiments the approximation's hold/slide verdict is full
-// contact's (the second method), for both realizations, at the end of the perturbation.
+// contact's (the second method), for both realizations, at the end of the perturbation; where full
+// contact holds, the approximated object stays within 2 mm of it.
 class PerturbationVerdict : public ::testing::TestWithParam<std::pair<const char*, const char*>> {};
 
 TEST_P(PerturbationVerdict, MatchesFullContact) {
@@ -287,6 +288,10 @@ TEST_P(PerturbationVerdict, MatchesFullContact) {
         ASSERT_TRUE(approx.summary.complete) << approx.summary.failure;
         EXPECT_TRUE(approx.summary.engaged);
         EXPECT_EQ(approx.summary.held, full.summary.held);
+        // Below capacity (full contact holds), the approximated object follows the full-contact
+        // object within 2 mm through the load (issue "holding capacity"; measured with the bushing:
+        // ball f1 1.23 mm, ball f2 0.43 mm, phone f2 1.45 mm).
+        if (full.summary.held) EXPECT_LT(findLargestDeviation(approx, full, 0).distance, 0.002);
     }
 }
 
