@@ -3,7 +3,8 @@
 Usage: /usr/bin/python3 analysis/plot_capacity.py OUT.png DIR [DIR ...]
 
 Reads DIR/capacity.json (format in include/graspsim/capacity/capacity_files.h) from each folder
-(e.g. one full-contact run and one approx run) and draws, per folder, the slip-onset force of the
+(e.g. one full-contact run and one approx run; with several, each is labelled by its folder's
+name) and draws, per folder, the slip-onset force of the
 six axis directions on three polar panels (the x-y, y-z and z-x planes of G: each axis direction
 at its angle in the plane, its load as the radius; a direction that did not slip within its ramp
 is left out), and the three torques as bars. Nothing here computes a pass/fail.
@@ -38,6 +39,8 @@ def main(argv):
     if len(argv) < 3:
         sys.exit("usage: plot_capacity.py OUT.png DIR [DIR ...]")
     runs = [load(d) for d in argv[2:]]
+    if len(runs) > 1:  # several runs: each labelled with its folder's name (e.g. the variant)
+        runs = [(os.path.basename(os.path.normpath(d)),) + r[1:] for d, r in zip(argv[2:], runs)]
     fig = plt.figure(figsize=(13, 3.6))
     for k, (a, b) in enumerate(PLANES):
         ax = fig.add_subplot(1, 4, k + 1, projection="polar")

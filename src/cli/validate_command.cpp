@@ -127,7 +127,10 @@ int ValidateCommand::run() const {
     meter.finish();
     // The tables first, so that a plotting failure still leaves the numbers.
     validation::writeValidationReport(o.out, results, {});
-    const std::vector<std::string> plots = o.plots ? validation::runPlotScript(o.out) : std::vector<std::string>{};
+    std::vector<std::string> plots = o.plots ? validation::runPlotScript(o.out) : std::vector<std::string>{};
+    if (o.plots) {
+        for (const std::string& p : validation::drawCapacityComparisonPlots(o.out, results.capacity)) plots.push_back(p);
+    }
     validation::writeValidationReport(o.out, results, plots);
     std::size_t failed = 0;
     for (const validation::ValidationCheck& c : results.checks) {

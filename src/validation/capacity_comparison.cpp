@@ -1,10 +1,15 @@
 #include "graspsim/validation/capacity_comparison.h"
 
 #include "number_text.h"
+#include "graspsim/capacity/capacity_files.h"
+#include "graspsim/capacity/capacity_plot.h"
 #include "graspsim/capacity/load_direction.h"
 #include "graspsim/scenario/scenario_file.h"
 #include "graspsim/validation/validation_plan.h"
 
+#include <algorithm>
+#include <filesystem>
+#include <map>
 #include <sstream>
 
 namespace graspsim::validation {
@@ -36,6 +41,11 @@ std::vector<std::string> listVariants(const CapacityPlan& plan) {
         if (v.rfind("approx", 0) == 0) variants.push_back(v);
         // Quick: the default realization only, unless variants were named.
         if (plan.quick && plan.variants.empty() && variants.size() == 2) break;
+    }
+    // The other friction-limit models on the default realization, so that the report compares
+    // them with the thesis's box (issue 17 item 3).
+    if (!plan.quick && plan.variants.empty()) {
+        for (const char* v : {"approx-bushing-merged-contact", "approx-bushing-merged-compliance"}) variants.push_back(v);
     }
     return variants;
 }
@@ -130,6 +140,30 @@ std::string formatCapacityMarkdown(const std::vector<CapacityRow>& rows) {
         if (rows[i].variant == variants.back()) md << "\n";
     }
     return md.str();
+}
+
+std::vector<std::string> drawCapacityComparisonPlots(const std::string& folder, const std::vector<CapacityRow>& rows) {
+    // Experiment -> variant -> its ramps, in the rows' order.
+    std::map<std::string, std::vector<std::pair<std::string, std::vector<capacity::GraspCapacity>>>> runs;
+    for (const CapacityRow& r : rows) {
+        auto& variants = runs[r.experiment];
+        auto v = std::find_if(variants.begin(), variants.end(), [&](const auto& entry) { return entry.first == r.variant; });
+        if (v == variants.end()) v = variants.insert(variants.end(), {r.variant, {}});
+        v->second.push_back(r.measured);
+    }
+    std::vector<std::string> plots;
+    for (const auto& [experiment, variants] : runs) {
+        std::vector<std::string> folders;
+        for (const auto& [variant, measurements] : variants) {
+            const std::string runFolder = folder + "/capacity/" + experiment + "/" + variant;
+            std::filesystem::create_directories(runFolder);
+            capacity::writeCapacityFiles(runFolder, experiment, measurements);
+            folders.push_back(runFolder);
+        }
+        const std::string png = "capacity_" + experiment + ".png";
+        if (capacity::drawCapacityPlot(folder + "/" + png, folders).skipped.empty()) plots.push_back(png);
+    }
+    return plots;
 }
 
 }  // namespace graspsim::validation

@@ -47,6 +47,8 @@ simulation::SimulationOptions makeVariantOptions(const std::string& variant, con
     }
     if (variant.find("-weld") != std::string::npos) options.approx.constraint = simulation::ApproxConstraint::Weld;
     if (variant.find("-multi") != std::string::npos) options.approx.attach = simulation::ApproxAttach::Multi;
+    if (variant.find("-merged-contact") != std::string::npos) options.approx.limitModel = grasp::FrictionLimitModel::ContactGeometry;
+    if (variant.find("-merged-compliance") != std::string::npos) options.approx.limitModel = grasp::FrictionLimitModel::Compliance;
     options.perturbation = perturbation;
     options.duration = duration;
     return options;

@@ -7,6 +7,7 @@
 /// (`/usr/bin/python3 DIR/plot_capacity.py OUT.png DIR1 DIR2`).
 
 #include <string>
+#include <vector>
 
 namespace graspsim::capacity {
 
@@ -20,5 +21,10 @@ struct CapacityPlot {
 /// interpreter (io::findPythonInterpreter()) is missing or the script fails, says why instead of
 /// throwing: capacity.json and capacity.csv stand without the plot.
 CapacityPlot drawCapacityPlot(const std::string& folder);
+
+/// Draws `png` from the capacity.json of each of `runFolders`, one curve per folder, labelled with
+/// the folder's name (e.g. full contact and approximation variants side by side); the script is
+/// left beside `png`. Skips with a reason as above.
+CapacityPlot drawCapacityPlot(const std::string& png, const std::vector<std::string>& runFolders);
 
 }  // namespace graspsim::capacity
