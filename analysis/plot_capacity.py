@@ -29,7 +29,9 @@ def load(folder):
     forces, torques = {}, {}
     for m in data["measurements"]:
         key = "slip_onset_nm" if m["load"] == "torque" else "slip_onset_n"
-        (torques if m["load"] == "torque" else forces)[m["direction"]] = m.get(key)
+        # `graspsim validate` names its torques "torque x" ...; `graspsim capacity` names them "x" ...
+        direction = m["direction"].removeprefix("torque ")
+        (torques if m["load"] == "torque" else forces)[direction] = m.get(key)
     label = data["measurements"][0]["mode"] if data["measurements"] else folder
     real = data["measurements"][0].get("realization") if data["measurements"] else None
     return (label + (" (" + real + ")" if real else "")), forces, torques

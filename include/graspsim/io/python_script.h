@@ -26,7 +26,7 @@ struct ScriptRun {
 ScriptRun runPythonScript(const std::string& scriptPath, const std::string& text, const std::vector<std::string>& arguments,
                           bool withStderr);
 
-/// Empty if `run` succeeded; otherwise one line for the user, "plots skipped: <why>; <complete>",
+/// Empty if `run` succeeded; otherwise one line for the user, "plots skipped: WHY; COMPLETE",
 /// e.g. "plots skipped: no Python interpreter at /usr/bin/python3 (install python3-matplotlib or
 /// set GRASPSIM_PYTHON); results.csv is complete". `script`: its file name, for the message.
 std::string explainSkippedPlots(const ScriptRun& run, const std::string& script, const std::string& complete);

@@ -61,8 +61,8 @@ std::string formatCapacityCsv(const std::vector<CapacityRow>& rows);
 std::string formatCapacityMarkdown(const std::vector<CapacityRow>& rows);
 
 /// The comparison's polar plots: writes each experiment's ramps per variant as
-/// `folder`/capacity/<experiment>/<variant>/capacity.json and capacity.csv (capacity_files.h), and
-/// draws `folder`/capacity_<experiment>.png with every variant (capacity_plot.h). Returns the PNG
+/// `folder/capacity/EXPERIMENT/VARIANT/capacity.json` and `capacity.csv` (capacity_files.h), and
+/// draws `folder/capacity_EXPERIMENT.png` with every variant (capacity_plot.h). Returns the PNG
 /// names relative to `folder`; a plot that cannot be drawn is left out (the tables stand).
 std::vector<std::string> drawCapacityComparisonPlots(const std::string& folder, const std::vector<CapacityRow>& rows);
 
