@@ -219,7 +219,7 @@ EndEffectorCost measureEndEffectors(int count, double duration, int realizations
 
 CostTable measureCostTable(double duration, int realizations, const CostProgress& progress) {
     const auto start = std::chrono::steady_clock::now();
-    const auto report = [&](std::size_t done, const std::string& next) { if (progress) progress(done, 6, next); };
+    const auto report = [&](std::size_t done, const std::string& next) { if (progress) progress(done, 7, next); };
     CostTable table;
     for (const char* name : {"ball-clutch", "phone-pinch"}) {
         report(table.experiments.size(), name);
@@ -229,7 +229,16 @@ CostTable measureCostTable(double duration, int realizations, const CostProgress
         report(2 + table.scaling.size(), std::to_string(count) + " end-effectors");
         table.scaling.push_back(measureEndEffectors(count, duration, realizations));
     }
-    report(6, "done");
+    report(6, "capacity ramps");
+    for (const char* name : {"ball-clutch", "phone-pinch"}) {
+        const scenario::Scenario s = scenario::findBuiltinScenario(name);
+        for (const auto mode : {simulation::SimulationMode::Full, simulation::SimulationMode::Approx}) {
+            for (const auto integrator : {simulation::IntegratorChoice::SimbodyCpodes, simulation::IntegratorChoice::LinearlyImplicit}) {
+                table.capacity.push_back(measureCapacityCost(s, mode, integrator));
+            }
+        }
+    }
+    report(7, "done");
     table.wallTime = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return table;
 }
@@ -343,7 +352,7 @@ std::string formatCostTable(const CostTable& t) {
     std::vector<StepperCost> steppers;
     for (const ExperimentCost& e : t.experiments) steppers.insert(steppers.end(), e.steppers.begin(), e.steppers.end());
     return "Table 5.1 on this machine (µs per step; thesis figures from Vortex in brackets)\n\n" + formatStepTable(t) +
-           formatSimSecondTable(t) + formatEvaluationCountTable(t) + formatEvaluationTable(t) + formatStepperTable(steppers) +
+           formatSimSecondTable(t) + formatEvaluationCountTable(t) + formatEvaluationTable(t) + formatStepperTable(steppers) + formatCapacityCostTable(t.capacity) +
            formatScalingTable(t) + line("\nmeasured in %.1f s", t.wallTime);
 }
 
@@ -397,6 +406,15 @@ std::string formatCostTableJson(const CostTable& t) {
                                              {"ik_us_per_step", c.ikUsPerStep},
                                              {"dynamics_us_per_step", c.dynamicsUsPerStep},
                                              {"realize_us", c.realizeUs}});
+    }
+    for (const CapacityCost& c : t.capacity) {
+        j["capacity"].push_back({{"scenario", c.scenario},
+                                 {"mode", simulation::toString(c.mode)},
+                                 {"integrator", simulation::toString(c.integrator)},
+                                 {"ramp_wall_s", c.rampWall},
+                                 {"ramp_sim_s", c.rampSimTime},
+                                 {"simulation_3s_wall_s", c.simulationWall},
+                                 {"ramp_failure", c.failure}});
     }
     j["wall_time_s"] = t.wallTime;
     return j.dump(2) + "\n";

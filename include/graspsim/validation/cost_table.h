@@ -24,6 +24,7 @@
 ///    the approximation run's own System with its constraint off (ApproxCost). This is the
 ///    thesis's "time to solve the contacts of one step".
 
+#include "graspsim/validation/capacity_cost.h"
 #include "graspsim/validation/stepper_cost.h"
 
 #include <functional>
@@ -85,6 +86,9 @@ struct EndEffectorCost {
 struct CostTable {
     std::vector<ExperimentCost> experiments;
     std::vector<EndEffectorCost> scaling;  ///< ball-clutch with 2 .. 5 fingertip goals
+    /// A capacity ramp against a 3 s simulation, both experiments, full and approx, CPodes and the
+    /// linearly implicit stepper (capacity_cost.h).
+    std::vector<CapacityCost> capacity;
     double wallTime = 0;                   ///< s, the whole measurement
 };
 
