@@ -52,7 +52,7 @@ GraspScene::GraspScene(const scenario::Scenario& scenario, const SimulationOptio
                          "and the rigid stepper runs none); use --mode full or --contact compliant");
     }
     checkApproxAttach(scenario, options);
-    checkFixedStepStability(scenario, options);
+    checkIntegratorChoice(scenario, options);
     addObject(options.mode == SimulationMode::Approx && options.approx.attach != ApproxAttach::Multi &&
               options.approx.constraint == ApproxConstraint::Weld);
     addContacts();

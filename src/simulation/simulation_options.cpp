@@ -77,7 +77,7 @@ void checkApproxAttach(const scenario::Scenario& scenario, const SimulationOptio
     }
 }
 
-void checkFixedStepStability(const scenario::Scenario& scenario, const SimulationOptions& options) {
+void checkIntegratorChoice(const scenario::Scenario& scenario, const SimulationOptions& options) {
     if (options.contact == ContactModel::Rigid && options.integrator != IntegratorChoice::SimbodyCpodes) {
         throw InputError("--integrator: '" + toString(options.integrator) +
                          "' is not accepted with --contact rigid (rigid contact has its own time stepper, Simbody's "

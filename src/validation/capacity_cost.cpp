@@ -3,16 +3,11 @@
 #include "graspsim/capacity/grasp_capacity.h"
 #include "graspsim/simulation/grasp_simulation.h"
 
-#include <chrono>
+#include "run_timing.h"
+
 #include <cstdio>
 
 namespace graspsim::validation {
-
-namespace {
-
-double nowSeconds() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
-
-}  // namespace
 
 CapacityCost measureCapacityCost(const scenario::Scenario& scenario, simulation::SimulationMode mode,
                                  simulation::IntegratorChoice integrator) {
@@ -24,13 +19,13 @@ CapacityCost measureCapacityCost(const scenario::Scenario& scenario, simulation:
     options.mode = mode;
     options.integrator = integrator;
     options.duration = 3.0;
-    double start = nowSeconds();
+    double start = readWallClock();
     simulation::runGraspSimulation(scenario, options);
-    row.simulationWall = nowSeconds() - start;
+    row.simulationWall = readWallClock() - start;
     options.duration = 0;
-    start = nowSeconds();
+    start = readWallClock();
     const capacity::GraspCapacity ramp = capacity::measureGraspCapacityRamp(scenario, options, capacity::GraspCapacityRequest{});
-    row.rampWall = nowSeconds() - start;
+    row.rampWall = readWallClock() - start;
     row.rampSimTime = ramp.trace.samples.empty() ? ramp.start : ramp.trace.samples.back().time;
     row.failure = ramp.trace.failure;
     return row;

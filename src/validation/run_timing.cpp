@@ -5,18 +5,18 @@
 
 namespace graspsim::validation {
 
-namespace {
+double readWallClock() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
 
-double nowSeconds() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
+namespace {
 
 // One batch of `realizations` evaluations of `state`, µs each.
 double timeBatch(const SimTK::System& system, SimTK::State& state, int realizations) {
-    const double start = nowSeconds();
+    const double start = readWallClock();
     for (int k = 0; k < realizations; ++k) {
         state.invalidateAllCacheAtOrAbove(SimTK::Stage::Time);
         system.realize(state, SimTK::Stage::Acceleration);
     }
-    return 1e6 * (nowSeconds() - start) / realizations;
+    return 1e6 * (readWallClock() - start) / realizations;
 }
 
 double findMedian(std::vector<double> values) {
@@ -52,16 +52,16 @@ std::pair<double, double> timeRealizationPair(const SimTK::System& system, const
 long countEvaluations(const SimTK::System& system) { return system.getNumRealizationsOfThisStage(SimTK::Stage::Acceleration); }
 
 Mark RunClock::mark(double time, const SimTK::System& system) const {
-    return {time, nowSeconds() - observing_, countEvaluations(system) - observedEvaluations_};
+    return {time, readWallClock() - observing_, countEvaluations(system) - observedEvaluations_};
 }
 
 void RunClock::beginObserving(const SimTK::System& system) {
-    observeStart_ = nowSeconds();
+    observeStart_ = readWallClock();
     evaluationsAtStart_ = countEvaluations(system);
 }
 
 void RunClock::endObserving(const SimTK::System& system) {
-    observing_ += nowSeconds() - observeStart_;
+    observing_ += readWallClock() - observeStart_;
     observedEvaluations_ += countEvaluations(system) - evaluationsAtStart_;
 }
 
@@ -106,7 +106,7 @@ FloorRun::FloorRun(const SimTK::System& system, const SimTK::State& floorState, 
 }
 
 Mark FloorRun::advanceOneSecond() {
-    const double wallStart = nowSeconds();
+    const double wallStart = readWallClock();
     const long evaluationsStart = countEvaluations(system_);
     const double end = integrator_.getTime() + 1.0;
     while (integrator_.getTime() < end - 1e-12) {
@@ -115,7 +115,7 @@ Mark FloorRun::advanceOneSecond() {
         if (status == SimTK::Integrator::ReachedReportTime && integrator_.getTime() >= next_ - 1e-12) next_ += interval_;
         if (status == SimTK::Integrator::EndOfSimulation) break;
     }
-    return {1.0, nowSeconds() - wallStart, countEvaluations(system_) - evaluationsStart};
+    return {1.0, readWallClock() - wallStart, countEvaluations(system_) - evaluationsStart};
 }
 
 HoldCost timeFloorHold(const SimTK::System& system, const SimTK::State& floorState, double accuracy, double reportInterval,

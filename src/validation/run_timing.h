@@ -10,6 +10,9 @@
 
 namespace graspsim::validation {
 
+// Wall-clock seconds of a steady clock (differences only).
+double readWallClock();
+
 // µs per dynamics evaluation (realize to Acceleration from Time) of `state`: best of five batches
 // of `realizations`, so that another process taking the core for a moment does not count.
 double timeRealization(const SimTK::System& system, const SimTK::State& state, int realizations);

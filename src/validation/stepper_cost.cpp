@@ -7,14 +7,11 @@
 #include "run_timing.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 
 namespace graspsim::validation {
 
 namespace {
-
-double nowSeconds() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
 
 // µs per evaluation of the contact element's force alone at `state` (realized through Velocity):
 // best of five batches.
@@ -27,13 +24,13 @@ double timeContactForce(const simulation::GraspScene& scene, const SimTK::State&
     SimTK::Vector mobility(state.getNU());
     double best = 1e300;
     for (int batch = 0; batch < 5; ++batch) {
-        const double start = nowSeconds();
+        const double start = readWallClock();
         for (int k = 0; k < realizations; ++k) {
             bodyForces.setToZero();
             mobility.setToZero();
             contacts.calcForceContribution(state, bodyForces, particles, mobility);
         }
-        best = std::min(best, 1e6 * (nowSeconds() - start) / realizations);
+        best = std::min(best, 1e6 * (readWallClock() - start) / realizations);
     }
     return best;
 }
@@ -63,10 +60,10 @@ StepperCost measureFullContactStepper(const scenario::Scenario& scenario, simula
     const simulation::SampleObserver observe = [&](const simulation::GraspExperiment& experiment, const SimTK::State& state) {
         if (state.getTime() < duration - 1e-9) return;
         const simulation::GraspScene& scene = experiment.getScene();
-        const double start = nowSeconds();
+        const double start = readWallClock();
         realizeUs = timeRealization(scene.getSystem(), state, realizations);
         contactUs = timeContactForce(scene, state, realizations);
-        observing += nowSeconds() - start;
+        observing += readWallClock() - start;
     };
     const simulation::SimulationSummary s = simulation::runGraspSimulation(scenario, options, {}, observe).summary;
     const double wall = s.wallTime - observing;

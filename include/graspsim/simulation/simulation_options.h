@@ -150,15 +150,16 @@ void checkApproxAttach(const scenario::Scenario& scenario, const SimulationOptio
 /// explicit part, whose stability interval on the negative real axis ends at -2.
 constexpr double kAnchorStabilityLimit = 2.0;
 
-/// Whether `options`' fixed step (IntegratorChoice::LinearlyImplicitFixed, its stepSize or the
-/// scenario's simulation.step_size) is stable with the scenario's friction law: with the anchor law
-/// it must be at most kAnchorStabilityLimit x its relaxation time (measured on the ball clutch at
-/// the default 1 ms: 2 ms runs, 2.5 ms blows up; at 2 ms relaxation: 4 ms runs, 5 ms blows up).
-/// Error-controlled integrators shrink their steps themselves and pass. Also refuses an integrator
-/// other than the default with rigid contact, which has its own stepper. Call before anything is
-/// written. @throws graspsim::InputError naming the field (--integrator, --step-size or the file's
-/// simulation.step_size), its value and what is accepted.
-void checkFixedStepStability(const scenario::Scenario& scenario, const SimulationOptions& options);
+/// Whether `options.integrator` can run the scenario: not with rigid contact, which has its own
+/// stepper (only the default is accepted there); and a fixed step (IntegratorChoice::
+/// LinearlyImplicitFixed, its stepSize or the scenario's simulation.step_size) must be stable with
+/// the scenario's friction law: with the anchor law at most kAnchorStabilityLimit x its relaxation
+/// time (measured on the ball clutch at the default 1 ms: 2 ms runs, 2.5 ms blows up; at 2 ms
+/// relaxation: 4 ms runs, 5 ms blows up). Error-controlled integrators shrink their steps
+/// themselves and pass. Call before anything is written. @throws graspsim::InputError naming the
+/// field (--integrator, --step-size or the file's simulation.step_size), its value and what is
+/// accepted.
+void checkIntegratorChoice(const scenario::Scenario& scenario, const SimulationOptions& options);
 
 /// The approximation's options of a run: `given` over the scenario's `approximation:` section (a
 /// threshold or relaxed axes given to the run win; 0 / unset take the scenario's), checked, before
