@@ -4,6 +4,7 @@
 #include "graspsim/integration/simbody_stepper.h"
 #include "graspsim/simulation/finger_compliance.h"
 #include "graspsim/simulation/grasp_experiment.h"
+#include "graspsim/system/simtk_conversion.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,8 +15,6 @@
 namespace graspsim::capacity {
 
 namespace {
-
-Eigen::Vector3d toEigen(const SimTK::Vec3& v) { return {v[0], v[1], v[2]}; }
 
 SimTK::State runToLoadStart(simulation::GraspExperiment& experiment, const scenario::Scenario& scenario,
                             integration::Stepper& stepper) {
@@ -31,7 +30,7 @@ SimTK::State runToLoadStart(simulation::GraspExperiment& experiment, const scena
 
 Eigen::Matrix<double, 6, 1> toLoadDirection(const GraspCapacityRequest& r) {
     Eigen::Matrix<double, 6, 1> d = Eigen::Matrix<double, 6, 1>::Zero();
-    d.segment<3>(r.torque ? 0 : 3) = toEigen(SimTK::Vec3(r.direction));
+    d.segment<3>(r.torque ? 0 : 3) = system::toEigenVector(SimTK::Vec3(r.direction));
     return d;
 }
 
@@ -78,7 +77,7 @@ LoadStartGrasp findLoadStartGrasp(const scenario::Scenario& scenario, simulation
         if (r.normalForce > 0 && r.depth > 0) start.bodies.push_back(r.bodyA);
     }
     if (start.contacts.empty()) throw NumericalError("compliance prediction: no contact at the load's start");
-    start.p_GO = toEigen(scene.getObject().findMassCenterLocationInGround(state));
+    start.p_GO = system::toEigenVector(scene.getObject().findMassCenterLocationInGround(state));
     return start;
 }
 

@@ -3,6 +3,7 @@
 #include "graspsim/grasp/grasp_quality.h"
 #include "graspsim/grasp/wrench_distribution.h"
 #include "graspsim/simulation/contact_grasp_quality.h"
+#include "graspsim/system/simtk_conversion.h"
 
 #include <algorithm>
 #include <numeric>
@@ -11,13 +12,10 @@ namespace graspsim::simulation {
 
 namespace {
 
-Eigen::Vector3d toEigen(const SimTK::Vec3& v) { return {v[0], v[1], v[2]}; }
-
 grasp::ObjectFrame toObjectFrame(const SimTK::Transform& X_GO) {
     grasp::ObjectFrame frame;
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) frame.R_GO(i, j) = X_GO.R().asMat33()(i, j);
-    frame.p_GO = toEigen(X_GO.p());
+    frame.R_GO = system::toEigenMatrix(X_GO.R());
+    frame.p_GO = system::toEigenVector(X_GO.p());
     return frame;
 }
 
@@ -65,13 +63,13 @@ double EngagedGraspTracker::calcQuality(const SimTK::State& state) const {
         // pivoted in the hand got the neighbouring face's normal, its captured force pointed out
         // of the object, and Q fell to 0 on the first check (the engage/release chatter of a
         // loaded pinch, docs/capacity.md).
-        c.p_GC = toEigen(X_GH * t.p_HC);
-        c.n_G = toEigen(X_GO.R() * t.n_O).normalized();
+        c.p_GC = system::toEigenVector(X_GH * t.p_HC);
+        c.n_G = system::toEigenVector(X_GO.R() * t.n_O).normalized();
         contacts.push_back(c);
-        reference.push_back(toEigen(X_GO.R() * t.f_O));
+        reference.push_back(system::toEigenVector(X_GO.R() * t.f_O));
     }
     Eigen::Matrix<double, 6, 1> wrench;
-    wrench << toEigen(W[0]), toEigen(W[1]);
+    wrench << system::toEigenVector(W[0]), system::toEigenVector(W[1]);
     const grasp::QualityOptions options = makeQualityOptions(context_->contactParameters);
     const grasp::ObjectFrame frame = toObjectFrame(X_GO);
     const grasp::WrenchDistribution d = grasp::distributeWrench(contacts, frame, wrench, reference, options.mu);

@@ -2,6 +2,7 @@
 
 #include "graspsim/model/model_description.h"
 #include "graspsim/simulation/grasp_scene.h"
+#include "graspsim/system/simtk_conversion.h"
 
 #include <Eigen/Dense>
 
@@ -9,12 +10,6 @@
 #include <utility>
 
 namespace graspsim::simulation {
-
-namespace {
-
-Eigen::Vector3d toEigen(const SimTK::Vec3& v) { return {v[0], v[1], v[2]}; }
-
-}  // namespace
 
 FingerCompliance::FingerCompliance(const system::MultibodyModel& model, std::vector<SimTK::MobilizedBodyIndex> fingerMobilizers,
                                    std::vector<system::JointImpedance> jointImpedances, std::vector<std::string> goalEndEffectors)
@@ -97,9 +92,9 @@ std::vector<grasp::CompliantContact> FingerCompliance::findCompliantContacts(con
     for (const contact::ContactReport& r : reports) {
         if (!(r.normalForce > 0) || !(r.depth > 0)) continue;
         grasp::CompliantContact c;
-        c.p_GC = toEigen(r.p_G);
-        c.n_G = toEigen(SimTK::Vec3(r.n_G));
-        c.force_G = r.normalForce * c.n_G + toEigen(r.frictionForce_G);
+        c.p_GC = system::toEigenVector(r.p_G);
+        c.n_G = system::toEigenVector(SimTK::Vec3(r.n_G));
+        c.force_G = r.normalForce * c.n_G + system::toEigenVector(r.frictionForce_G);
         c.normalStiffness = 1.5 * r.normalForce / r.depth;
         c.tangentialStiffness = settings.tangentialStiffnessRatio * c.normalStiffness;
         c.fingerCompliance_G = calcCompliance(state, jointStiffness, r.bodyA, r.p_G);

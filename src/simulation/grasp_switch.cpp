@@ -6,6 +6,7 @@
 #include "graspsim/simulation/contact_grasp_quality.h"
 #include "graspsim/simulation/finger_compliance.h"
 #include "graspsim/simulation/multi_attachment_switch.h"
+#include "graspsim/system/simtk_conversion.h"
 
 #include <algorithm>
 #include <cmath>
@@ -47,16 +48,13 @@ SimTK::Vec6 calcContactGeometryLimits(const std::vector<contact::ContactReport>&
     std::vector<grasp::GraspContact> contacts;
     for (const contact::ContactReport& c : reports) {
         grasp::GraspContact g;
-        g.p_GC = Eigen::Vector3d(c.p_G[0], c.p_G[1], c.p_G[2]);
-        g.n_G = Eigen::Vector3d(c.n_G[0], c.n_G[1], c.n_G[2]);
+        g.p_GC = system::toEigenVector(c.p_G);
+        g.n_G = system::toEigenVector(SimTK::Vec3(c.n_G));
         g.normalForce = c.normalForce;
         contacts.push_back(g);
     }
-    Eigen::Matrix3d R;
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) R(i, j) = R_GM.asMat33()(i, j);
     const Eigen::Matrix<double, 6, 1> limits =
-        grasp::calcContactGeometryLimits(contacts, mu, R, Eigen::Vector3d(p_GM[0], p_GM[1], p_GM[2]));
+        grasp::calcContactGeometryLimits(contacts, mu, system::toEigenMatrix(R_GM), system::toEigenVector(p_GM));
     SimTK::Vec6 result;
     for (int k = 0; k < 6; ++k) result[k] = limits[k];
     return result;
@@ -75,11 +73,8 @@ void setComplianceLimits(const ApproximationContext& context, const SimTK::State
     options.mu = mu;
     const SimTK::Vec6 box = calcFrictionLimits(reports, mu);
     for (int k = 0; k < 6; ++k) options.maxLoads[k] = std::max(4 * box[k], 1e-9);
-    Eigen::Matrix3d R;
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) R(i, j) = R_GM.asMat33()(i, j);
     const grasp::TwoSidedLimits limits =
-        grasp::calcComplianceLimits(contacts, R, Eigen::Vector3d(p_GM[0], p_GM[1], p_GM[2]), options);
+        grasp::calcComplianceLimits(contacts, system::toEigenMatrix(R_GM), system::toEigenVector(p_GM), options);
     SimTK::Vec6 lower;
     for (int k = 0; k < 6; ++k) {
         lower[k] = limits.lower[k];

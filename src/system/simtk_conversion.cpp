@@ -48,4 +48,13 @@ SimTK::Transform toSimTKTransform(const model::Transform& X_AB, const std::strin
     return SimTK::Transform(SimTK::Rotation(R_AB, true), toSimTKVec3(X_AB.p));
 }
 
+Eigen::Vector3d toEigenVector(const SimTK::Vec3& v) { return {v[0], v[1], v[2]}; }
+
+Eigen::Matrix3d toEigenMatrix(const SimTK::Rotation& R_AB) {
+    Eigen::Matrix3d R;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) R(i, j) = R_AB.asMat33()(i, j);
+    return R;
+}
+
 }  // namespace graspsim::system

@@ -43,5 +43,20 @@ TEST(SimTKConversion, TransformRejectsScaledAndReflectedMatrices) {
     }
 }
 
+// To Eigen: the same entries, so a rotation still maps vectors as Simbody's does.
+TEST(SimTKConversion, EigenCopiesKeepEveryEntry) {
+    const SimTK::Rotation R_AB(1.1, SimTK::UnitVec3(0, 0.6, 0.8));
+    const SimTK::Vec3 v_B(0.3, -2, 5);
+    const Eigen::Matrix3d R = toEigenMatrix(R_AB);
+    const Eigen::Vector3d v = toEigenVector(v_B);
+    const SimTK::Vec3 v_A = R_AB * v_B;
+    const Eigen::Vector3d mapped = R * v;
+    for (int i = 0; i < 3; ++i) {
+        EXPECT_EQ(v[i], v_B[i]);
+        EXPECT_NEAR(mapped[i], v_A[i], 1e-15);
+        for (int j = 0; j < 3; ++j) EXPECT_EQ(R(i, j), R_AB.asMat33()(i, j));
+    }
+}
+
 }  // namespace
 }  // namespace graspsim::system
