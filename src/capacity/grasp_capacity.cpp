@@ -31,8 +31,7 @@ public:
             return;
         }
         made_ = simulation::makeSceneStepper(experiment_, options);
-        stepper_ = made_.stepper.get();
-        stepper_->initialize(experiment_.makeInitialState());
+        made_.stepper->initialize(experiment_.makeInitialState());
     }
 
     void advanceTo(double t) override {
@@ -78,13 +77,13 @@ public:
 private:
     const simulation::GraspSwitch* findSwitch() const { return experiment_.findSwitch(); }
 
-    const SimTK::State& getState() const { return rigid_ ? rigid_->getState() : stepper_->getState(); }
+    const SimTK::State& getState() const { return rigid_ ? rigid_->getState() : made_.stepper->getState(); }
 
     void stepTo(double t) {
         if (rigid_) {
             rigid_->stepTo(t);
         } else {
-            stepper_->stepTo(t);
+            made_.stepper->stepTo(t);
         }
         const SimTK::State& s = getState();
         for (int k = 0; k < s.getNQ(); ++k) {
@@ -97,9 +96,9 @@ private:
             rigid_->releaseObject();
             return;
         }
-        SimTK::State released = stepper_->getState();
+        SimTK::State released = made_.stepper->getState();
         scene_.releaseObject(released);
-        stepper_->initialize(released);
+        made_.stepper->initialize(released);
     }
 
     SimTK::Transform findObjectInPalm() const {
@@ -118,8 +117,7 @@ private:
 
     simulation::GraspExperiment experiment_;
     const simulation::GraspScene& scene_;
-    simulation::SceneStepper made_;
-    integration::Stepper* stepper_ = nullptr;  // made_.stepper
+    simulation::SceneStepper made_;  // compliant contact: the stepper and its force Jacobians
     std::unique_ptr<simulation::RigidStepper> rigid_;
     std::vector<SimTK::Vec3> reference_;
     SimTK::Vec4 q_HO_reference_{1, 0, 0, 0};  // R_HO at the reference, as a quaternion
