@@ -38,7 +38,7 @@ struct CapacityCommand::Options {
     std::string limitsFriction;
     std::string limits = "thesis";
     std::string accuracy;
-    std::string integrator = "simbody";
+    std::string integrator = "auto";
     std::string stepSize;
     std::string out;
 };
@@ -67,8 +67,9 @@ CapacityCommand::CapacityCommand(CLI::App& app) : options_(std::make_shared<Opti
     command_->add_option("--method", o.method, "ramp (default), bisection (constant loads, --hold s each) or compliance (predicted by the grasp's compliance model from full contact at the load's start; docs/capacity.md)");
     command_->add_option("--accuracy", o.accuracy, "integrator relative accuracy in (0, 1) (default: the scenario's)");
     command_->add_option("--integrator", o.integrator,
-                         "compliant contact: simbody (default, CPodes BDF), cvode, implicit (linearly implicit, error-"
-                         "controlled steps up to --step-size) or implicit-fixed");
+                         "compliant contact: auto (default: implicit, but simbody for --constraint weld and --attach "
+                         "multi), simbody (CPodes BDF), cvode, implicit (linearly implicit, error-controlled steps up to "
+                         "--step-size) or implicit-fixed");
     command_->add_option("--step-size", o.stepSize,
                          "implicit: longest step, implicit-fixed: the step, in s, > 0 (default: the scenario's simulation.step_size)");
     command_->add_option("--max-duration", o.maxDuration, "ramp: longest ramp, s (default 4)");

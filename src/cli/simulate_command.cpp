@@ -31,7 +31,7 @@ struct SimulateCommand::Options {
     std::string attach = "merged";
     std::string perturbation = "none";
     std::string duration;
-    std::string integrator = "simbody";
+    std::string integrator = "auto";
     std::string accuracy;
     std::string stepSize;
     std::string qThreshold, qMinimum;
@@ -58,9 +58,10 @@ SimulateCommand::SimulateCommand(CLI::App& app) : options_(std::make_shared<Opti
     command_->add_option("--perturbation", o.perturbation, "none (default) or a perturbation of the scenario (f1, f2)");
     command_->add_option("--duration", o.duration, "simulated time in s (default: the scenario's)");
     command_->add_option("--integrator", o.integrator,
-                         "simbody (default: Simbody's CPodes BDF), cvode (the SUNDIALS CVODE BDF reference), implicit "
-                         "(linearly implicit Rosenbrock with analytic contact Jacobians, error-controlled steps up to "
-                         "--step-size; compliant contact) or implicit-fixed (the same at fixed steps)");
+                         "auto (default: implicit, but simbody for --constraint weld and --attach multi), simbody "
+                         "(Simbody's CPodes BDF), cvode (the SUNDIALS CVODE BDF reference), implicit (linearly implicit "
+                         "Rosenbrock with analytic contact Jacobians, error-controlled steps up to --step-size; compliant "
+                         "contact) or implicit-fixed (the same at fixed steps)");
     command_->add_option("--step-size", o.stepSize,
                          "implicit: longest step, implicit-fixed: the step, in s, > 0 (default: the scenario's simulation.step_size, 0.005)");
     command_->add_option("--accuracy", o.accuracy, "integrator relative accuracy in (0, 1) (default: the scenario's)");
@@ -173,17 +174,18 @@ std::string formatOverride(double value) {
 }
 
 // The per-run choices of provenance.json, as the options were given (defaults written out).
-results::RunProvenance makeRunProvenance(const std::vector<std::string>& commandLine,
+results::RunProvenance makeRunProvenance(const std::vector<std::string>& commandLine, const scenario::Scenario& scenario,
                                          const simulation::SimulationOptions& options) {
     results::RunProvenance run;
     run.commandLine = commandLine;
     run.run["contact"] = simulation::toString(options.contact);
     run.run["mode"] = simulation::toString(options.mode);
     run.run["perturbation"] = options.perturbation;
-    run.run["integrator"] = simulation::toString(options.integrator);
+    const simulation::IntegratorChoice integrator = simulation::resolveIntegrator(scenario, options);
+    run.run["integrator"] = simulation::toString(integrator);
     run.run["duration_s"] = formatOverride(options.duration);
     run.run["accuracy"] = formatOverride(options.accuracy);
-    if (options.integrator >= simulation::IntegratorChoice::LinearlyImplicit) run.run["step_size_s"] = formatOverride(options.stepSize);
+    if (integrator >= simulation::IntegratorChoice::LinearlyImplicit) run.run["step_size_s"] = formatOverride(options.stepSize);
     if (options.mode == simulation::SimulationMode::Approx) {
         run.run["constraint"] = simulation::toString(options.approx.constraint);
         run.run["attach"] = simulation::toString(options.approx.attach);
@@ -214,7 +216,7 @@ int SimulateCommand::run(const std::vector<std::string>& commandLine) const {
     simulation::SimulationResult result = simulation::runGraspSimulation(scenario, options, makeProgress(meter));
     result.summary.planTime = planTime;
     meter.finish();
-    results::writeResultFolder(o.out, scenario, result, makeRunProvenance(commandLine, options));
+    results::writeResultFolder(o.out, scenario, result, makeRunProvenance(commandLine, scenario, options));
     opensim::writeOpenSimResultFiles(o.out, result);
     const simulation::SimulationSummary& s = result.summary;
     if (o.view) std::cout << "replay written to " << viewer::writeReplayPage(o.out) << ": open it in a web browser\n";

@@ -48,14 +48,15 @@ SceneStepper makeSceneStepper(const GraspExperiment& experiment, const Simulatio
     const GraspScene& scene = experiment.getScene();
     const scenario::SimulationSpec& spec = scene.getScenario().simulation;
     const double accuracy = options.accuracy > 0 ? options.accuracy : spec.accuracy;
-    if (options.integrator == IntegratorChoice::LinearlyImplicit) {
+    const IntegratorChoice integrator = resolveIntegrator(scene.getScenario(), options);
+    if (integrator == IntegratorChoice::LinearlyImplicit) {
         return makeLinearlyImplicitStepper(experiment, options.stepSize > 0 ? options.stepSize : spec.stepSize, accuracy);
     }
-    if (options.integrator == IntegratorChoice::LinearlyImplicitFixed) {
+    if (integrator == IntegratorChoice::LinearlyImplicitFixed) {
         return makeLinearlyImplicitStepper(experiment, options.stepSize > 0 ? options.stepSize : spec.stepSize, 0.0);
     }
     SceneStepper made;
-    if (options.integrator == IntegratorChoice::SimbodyCpodes) {
+    if (integrator == IntegratorChoice::SimbodyCpodes) {
         made.stepper = std::make_unique<integration::SimbodyCpodesStepper>(scene.getSystem(), accuracy);
         return made;
     }

@@ -21,14 +21,16 @@ SimulationMode parseSimulationMode(const std::string& text, const std::string& s
 }
 
 IntegratorChoice parseIntegratorChoice(const std::string& text, const std::string& source) {
+    if (text == "auto") return IntegratorChoice::Automatic;
     if (text == "simbody") return IntegratorChoice::SimbodyCpodes;
     if (text == "cvode") return IntegratorChoice::Cvode;
     if (text == "implicit") return IntegratorChoice::LinearlyImplicit;
     if (text == "implicit-fixed") return IntegratorChoice::LinearlyImplicitFixed;
-    throw InputError(source + ": integrator '" + text + "' is not accepted; use simbody, cvode, implicit or implicit-fixed");
+    throw InputError(source + ": integrator '" + text + "' is not accepted; use auto, simbody, cvode, implicit or implicit-fixed");
 }
 
 std::string toString(IntegratorChoice integrator) {
+    if (integrator == IntegratorChoice::Automatic) return "auto";
     if (integrator == IntegratorChoice::Cvode) return "cvode";
     if (integrator == IntegratorChoice::LinearlyImplicit) return "implicit";
     return integrator == IntegratorChoice::LinearlyImplicitFixed ? "implicit-fixed" : "simbody";
@@ -77,8 +79,21 @@ void checkApproxAttach(const scenario::Scenario& scenario, const SimulationOptio
     }
 }
 
+IntegratorChoice resolveIntegrator(const scenario::Scenario& scenario, const SimulationOptions& options) {
+    if (options.integrator != IntegratorChoice::Automatic) return options.integrator;
+    if (options.contact == ContactModel::Rigid || scenario.friction.model == contact::FrictionModel::Anchor) {
+        return IntegratorChoice::SimbodyCpodes;
+    }
+    if (options.mode == SimulationMode::Approx &&
+        (options.approx.constraint != ApproxConstraint::Bushing || options.approx.attach != ApproxAttach::Merged)) {
+        return IntegratorChoice::SimbodyCpodes;
+    }
+    return IntegratorChoice::LinearlyImplicit;
+}
+
 void checkIntegratorChoice(const scenario::Scenario& scenario, const SimulationOptions& options) {
-    if (options.contact == ContactModel::Rigid && options.integrator != IntegratorChoice::SimbodyCpodes) {
+    if (options.contact == ContactModel::Rigid && options.integrator != IntegratorChoice::Automatic &&
+        options.integrator != IntegratorChoice::SimbodyCpodes) {
         throw InputError("--integrator: '" + toString(options.integrator) +
                          "' is not accepted with --contact rigid (rigid contact has its own time stepper, Simbody's "
                          "semi-explicit Euler with impulses, rigid_stepping.h); leave --integrator out");

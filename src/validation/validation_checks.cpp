@@ -50,14 +50,15 @@ void checkApproxRun(const RunRecord& r, std::vector<ValidationCheck>& checks) {
                                "thesis 5.1: results similar to full contact; 2 deg, not visible at hand scale"));
 }
 
-// Simbody's CPodes at the scenario's accuracy ("full", the reference of this pair) against the
-// CVODE run at kReferenceAccuracy (the candidate): the error is Simbody's.
+// The default full-contact run at the scenario's accuracy ("full", the reference of this pair: the
+// linearly implicit stepper, resolveIntegrator) against the CVODE run at kReferenceAccuracy (the
+// candidate): the error is the default integrator's.
 void checkIntegrator(const RunRecord& r, std::vector<ValidationCheck>& checks) {
     checks.push_back(makeCheck(r, "run complete", r.summary.complete ? 1 : 0, "==", 1, "", "a run that stops early (bad input, divergence) gives no verdict"));
-    checks.push_back(makeCheck(r, "Simbody CPodes vs CVODE reference: position error (max)", r.errors.maxPosition * kMm, "<=",
+    checks.push_back(makeCheck(r, "default integrator vs CVODE reference: position error (max)", r.errors.maxPosition * kMm, "<=",
                                kIntegratorPositionError * kMm, "mm",
                                "a quarter of the approximation's 2 mm, so integration error cannot decide its check"));
-    checks.push_back(makeCheck(r, "Simbody CPodes vs CVODE reference: orientation error (max)", r.errors.maxAngle * kDeg, "<=",
+    checks.push_back(makeCheck(r, "default integrator vs CVODE reference: orientation error (max)", r.errors.maxAngle * kDeg, "<=",
                                kIntegratorAngleError * kDeg, "deg",
                                "a quarter of the approximation's 2 deg, so integration error cannot decide its check"));
 }

@@ -73,3 +73,30 @@ TEST(ResolveApproxOptions, RejectsWhatTheSwitchCannotUse) {
     EXPECT_NE(findMessage(given).find("penetration bound must be > 0 m"), std::string::npos);
     EXPECT_EQ(findMessage({}), "");
 }
+
+// The default integrator: the linearly implicit stepper where it has every stiff element's
+// Jacobian (full compliant contact, the merged bushing), CPodes elsewhere; a choice given wins.
+TEST(ResolveIntegrator, AutomaticTakesTheImplicitStepperWhereItHasEveryJacobian) {
+    scenario::Scenario s;
+    simulation::SimulationOptions o;
+    ASSERT_EQ(o.integrator, simulation::IntegratorChoice::Automatic);
+    EXPECT_EQ(simulation::resolveIntegrator(s, o), simulation::IntegratorChoice::LinearlyImplicit);
+    o.mode = simulation::SimulationMode::Approx;
+    EXPECT_EQ(simulation::resolveIntegrator(s, o), simulation::IntegratorChoice::LinearlyImplicit);
+    o.approx.attach = simulation::ApproxAttach::Multi;
+    EXPECT_EQ(simulation::resolveIntegrator(s, o), simulation::IntegratorChoice::SimbodyCpodes);
+    o.approx.attach = simulation::ApproxAttach::Merged;
+    o.approx.constraint = simulation::ApproxConstraint::Weld;
+    EXPECT_EQ(simulation::resolveIntegrator(s, o), simulation::IntegratorChoice::SimbodyCpodes);
+    o = simulation::SimulationOptions{};
+    s.friction.model = contact::FrictionModel::Anchor;
+    EXPECT_EQ(simulation::resolveIntegrator(s, o), simulation::IntegratorChoice::SimbodyCpodes);
+    s.friction.model = contact::FrictionModel::Regularized;
+    o.contact = simulation::ContactModel::Rigid;
+    EXPECT_EQ(simulation::resolveIntegrator(s, o), simulation::IntegratorChoice::SimbodyCpodes);
+    o.contact = simulation::ContactModel::Compliant;
+    o.integrator = simulation::IntegratorChoice::Cvode;
+    EXPECT_EQ(simulation::resolveIntegrator(s, o), simulation::IntegratorChoice::Cvode);
+    EXPECT_EQ(simulation::parseIntegratorChoice("auto", "--integrator"), simulation::IntegratorChoice::Automatic);
+    EXPECT_EQ(simulation::toString(simulation::IntegratorChoice::Automatic), "auto");
+}

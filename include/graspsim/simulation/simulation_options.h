@@ -30,7 +30,10 @@ enum class SimulationMode {
 
 /// Which integrator advances the simulation.
 enum class IntegratorChoice {
-    SimbodyCpodes,  ///< Simbody's CPodes (BDF, Newton), stepped as by SimTK::TimeStepper (simbody_stepper.h): the default
+    /// The default: LinearlyImplicit where it has the analytic Jacobian of every stiff element
+    /// (full compliant contact, the merged bushing), SimbodyCpodes elsewhere (resolveIntegrator)
+    Automatic,
+    SimbodyCpodes,  ///< Simbody's CPodes (BDF, Newton), stepped as by SimTK::TimeStepper (simbody_stepper.h)
     Cvode,          ///< SUNDIALS CVODE (BDF, Newton), the reference (integration/cvode_integrator.h)
     /// Linearly implicit two-stage Rosenbrock (ROS2) with analytic contact and joint force
     /// Jacobians (integration/linearly_implicit_stepper.h), steps up to stepSize chosen by error
@@ -111,7 +114,7 @@ struct SimulationOptions {
     std::string perturbation = "none";  ///< "none" or the name of one of the scenario's perturbations
     double duration = 0;                ///< simulated time (s); 0 takes the scenario's
     ApproxOptions approx;               ///< used in SimulationMode::Approx only
-    IntegratorChoice integrator = IntegratorChoice::SimbodyCpodes;
+    IntegratorChoice integrator = IntegratorChoice::Automatic;
     /// Integrator accuracy (relative tolerance; CVODE's atol and both integrators' constraint
     /// tolerance follow it); 0 takes the scenario's simulation.accuracy.
     double accuracy = 0;
@@ -126,7 +129,7 @@ struct SimulationOptions {
 ContactModel parseContactModel(const std::string& text, const std::string& source);
 /// Parses "full" or "approx". @throws graspsim::InputError naming `source`, the value and the choices.
 SimulationMode parseSimulationMode(const std::string& text, const std::string& source);
-/// Parses "simbody", "cvode", "implicit" or "implicit-fixed". @throws graspsim::InputError naming `source`, the value and the choices.
+/// Parses "auto", "simbody", "cvode", "implicit" or "implicit-fixed". @throws graspsim::InputError naming `source`, the value and the choices.
 IntegratorChoice parseIntegratorChoice(const std::string& text, const std::string& source);
 std::string toString(ContactModel model);
 std::string toString(IntegratorChoice integrator);
@@ -150,8 +153,18 @@ void checkApproxAttach(const scenario::Scenario& scenario, const SimulationOptio
 /// explicit part, whose stability interval on the negative real axis ends at -2.
 constexpr double kAnchorStabilityLimit = 2.0;
 
+/// The integrator a run of `scenario` with `options` uses: `options.integrator` unless it is
+/// Automatic, which is LinearlyImplicit for compliant contact with the regularized friction law in
+/// full mode and with the merged bushing (its steps at the cap cost 4-5x less than CPodes's on the
+/// thesis scenes, and an engaged hold under a minute too: docs/performance.md), and SimbodyCpodes
+/// for the weld and the multi attachment (constraints and per-finger bushings the stepper has no
+/// Jacobian of: 10x more steps), for the anchor friction law (whose anchors it integrates
+/// explicitly: the held phone keeps shaking, 0.1 m/s^2 after 3.5 s) and for rigid contact (which
+/// runs its own stepper and ignores it).
+IntegratorChoice resolveIntegrator(const scenario::Scenario& scenario, const SimulationOptions& options);
+
 /// Whether `options.integrator` can run the scenario: not with rigid contact, which has its own
-/// stepper (only the default is accepted there); and a fixed step (IntegratorChoice::
+/// stepper (only auto and simbody are accepted there); and a fixed step (IntegratorChoice::
 /// LinearlyImplicitFixed, its stepSize or the scenario's simulation.step_size) must be stable with
 /// the scenario's friction law: with the anchor law at most kAnchorStabilityLimit x its relaxation
 /// time (measured on the ball clutch at the default 1 ms: 2 ms runs, 2.5 ms blows up; at 2 ms

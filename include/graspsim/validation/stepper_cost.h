@@ -38,6 +38,17 @@ struct StepperCost {
 StepperCost measureFullContactStepper(const scenario::Scenario& scenario, simulation::IntegratorChoice integrator,
                                       double duration, int realizations);
 
+/// How long after the scenario's settle_time the held window of measureHeldFullContact starts (s):
+/// the object has come to rest in the grasp.
+constexpr double kHeldWarmUp = 1.0;
+
+/// Full contact on a held grasp, the phase a fixed-step engine's benchmark times from a settled
+/// keyframe (MuJoCo's, ../shared/peers/mujoco): a run of `scenario` on `integrator` to
+/// settle_time + `warmUp` + `held`, timed (wall s per simulated s) over its last `held` s only.
+/// Counts are not split by phase there: left at -1.
+StepperCost measureHeldFullContact(const scenario::Scenario& scenario, simulation::IntegratorChoice integrator, double warmUp,
+                                   double held);
+
 /// The rows as a text table with a legend.
 std::string formatStepperTable(const std::vector<StepperCost>& rows);
 
