@@ -235,7 +235,6 @@ GraspCapacity measureGraspCapacityConstant(const scenario::Scenario& scenario, c
     protocol.start = c.start;
     protocol.load = load;
     protocol.hold = hold;
-    protocol.sampleInterval = request.sampleInterval;
     protocol.criteria = request.criteria;
     c.trace = runOverload(makeGraspRuns(scenario, options), protocol);
     c.wallTime = secondsSince(clock);

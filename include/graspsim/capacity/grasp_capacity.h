@@ -88,7 +88,8 @@ GraspCapacity measureGraspCapacityBisection(const scenario::Scenario& scenario, 
                                             const GraspCapacityRequest& request, double guess, double hold);
 
 /// Measures along one direction with a constant load of `load` (N or N m, > 0) from the load's start,
-/// held `hold` s (overload.h); request.rate and maxRampDuration are not used.
+/// held `hold` s (overload.h), sampled every kOverloadSampleInterval (1 ms); request.rate,
+/// maxRampDuration and sampleInterval (the ramp's) are not used.
 GraspCapacity measureGraspCapacityConstant(const scenario::Scenario& scenario, const simulation::SimulationOptions& options,
                                            const GraspCapacityRequest& request, double load, double hold);
 

@@ -13,6 +13,11 @@
 
 namespace graspsim::capacity {
 
+/// Default sample interval of a constant load (s): above capacity the thesis objects slip 2 mm
+/// within 15-150 ms of the load (docs/capacity.md), so the ramp's 5 ms would leave 3-4 samples
+/// before the onset.
+constexpr double kOverloadSampleInterval = 0.001;
+
 /// A constant load from `start` for `hold` s, sampled every `sampleInterval`.
 struct OverloadProtocol {
     SimTK::UnitVec3 direction{0, -1, 0};  ///< in G
@@ -20,7 +25,7 @@ struct OverloadProtocol {
     double start = 0;                     ///< s, when the load is applied
     double load = 1;                      ///< N or N m, > 0
     double hold = 1;                      ///< s, > 0
-    double sampleInterval = 0.005;        ///< s
+    double sampleInterval = kOverloadSampleInterval;  ///< s
     SlipCriteria criteria;
 };
 
