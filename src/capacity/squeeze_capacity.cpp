@@ -95,8 +95,7 @@ private:
 
     // Starts at the static Hertz depth for N, so the squeeze is in equilibrium from the start.
     // The implicit stepper lands on the load's start, as a scene's does (scene_stepper.cpp): a
-    // constant load jumps on there, and a step across the jump would apply it late (by up to a
-    // step, 5 ms).
+    // constant load jumps on there, and no step may straddle the jump.
     void startCompliant(double loadStart) {
         contacts_ = contact::CompliantContactForce(forces_, makePairs());
         const double depth = std::pow(3 * case_.press / (4 * kEStar * std::sqrt(kRadius)), 2.0 / 3.0);
