@@ -1,5 +1,7 @@
 #include "graspsim/capacity/capacity_files.h"
 
+#include "graspsim/capacity/overload.h"
+
 #include "graspsim/io/atomic_file.h"
 
 #include <nlohmann/json.hpp>
@@ -15,6 +17,47 @@ using Json = nlohmann::ordered_json;
 
 Json valueOrNull(bool valid, double value) { return valid ? Json(value) : Json(nullptr); }
 
+// The ramp's figures: loads and times (on the scene's clock) of slip onset, drop and release.
+void addRampFigures(const GraspCapacity& c, const std::string& unit, Json& j) {
+    const CapacityFigures& f = c.trace.figures;
+    j["slip_onset_" + unit] = valueOrNull(f.slipped, f.slipOnsetLoad);
+    j["drop_" + unit] = valueOrNull(f.dropped, f.dropLoad);
+    j["slip_onset_time_s"] = valueOrNull(f.slipped, f.slipOnsetTime);
+    j["drop_time_s"] = valueOrNull(f.dropped, f.dropTime);
+    if (c.mode != simulation::SimulationMode::Approx) return;
+    j["release_" + unit] = valueOrNull(f.released, f.releaseLoad);
+    j["release_time_s"] = valueOrNull(f.released, f.releaseTime);
+    j["release_reason"] = c.trace.releaseReason.empty() ? Json(nullptr) : Json(c.trace.releaseReason);
+}
+
+// A constant load's: the load and hold, and the times of slip onset, drop and release after the
+// load's start.
+void addConstantFigures(const GraspCapacity& c, const std::string& unit, Json& j) {
+    const OverloadFigures f = findOverloadFigures(c.trace.figures, c.start);
+    j["load_" + unit] = c.load;
+    j["hold_s"] = c.hold;
+    j["slip_onset_time_s"] = valueOrNull(f.slipped, f.slipOnsetTime);
+    j["drop_time_s"] = valueOrNull(f.dropped, f.dropTime);
+    if (c.mode != simulation::SimulationMode::Approx) return;
+    j["release_time_s"] = valueOrNull(f.released, f.releaseTime);
+    j["release_reason"] = c.trace.releaseReason.empty() ? Json(nullptr) : Json(c.trace.releaseReason);
+}
+
+void addBisectionFigures(const GraspCapacity& c, const std::string& unit, Json& j) {
+    j["slip_onset_" + unit] = c.bisection.findEstimate();
+    j["drop_" + unit] = nullptr;
+    j["slip_onset_time_s"] = nullptr;
+    j["drop_time_s"] = nullptr;
+    if (c.mode == simulation::SimulationMode::Approx) {
+        j["release_" + unit] = nullptr;
+        j["release_time_s"] = nullptr;
+        j["release_reason"] = nullptr;
+    }
+    j["bracket_held_" + unit] = c.bisection.held;
+    j["bracket_slipped_" + unit] = c.bisection.slipped;
+    j["runs"] = c.bisection.runs;
+}
+
 Json formatMeasurement(const GraspCapacity& c) {
     const std::string unit = c.torque ? "nm" : "n";
     Json j;
@@ -26,25 +69,12 @@ Json formatMeasurement(const GraspCapacity& c) {
     j["mode"] = simulation::toString(c.mode);
     j["realization"] = c.realization.empty() ? Json(nullptr) : Json(c.realization);
     j["load_start_s"] = c.start;
-    const bool ramp = c.method == "ramp";
-    const CapacityFigures& f = c.trace.figures;
-    j["rate"] = valueOrNull(ramp, c.rate);
+    j["rate"] = valueOrNull(c.method == "ramp", c.rate);
     j["slip_threshold_m"] = c.criteria.slip;
     j["drop_threshold_m"] = c.criteria.drop;
-    j["slip_onset_" + unit] = ramp ? valueOrNull(f.slipped, f.slipOnsetLoad) : Json(c.bisection.findEstimate());
-    j["drop_" + unit] = valueOrNull(ramp && f.dropped, f.dropLoad);
-    j["slip_onset_time_s"] = valueOrNull(ramp && f.slipped, f.slipOnsetTime);
-    j["drop_time_s"] = valueOrNull(ramp && f.dropped, f.dropTime);
-    if (c.mode == simulation::SimulationMode::Approx) {
-        j["release_" + unit] = valueOrNull(ramp && f.released, f.releaseLoad);
-        j["release_time_s"] = valueOrNull(ramp && f.released, f.releaseTime);
-        j["release_reason"] = c.trace.releaseReason.empty() ? Json(nullptr) : Json(c.trace.releaseReason);
-    }
-    if (!ramp) {
-        j["bracket_held_" + unit] = c.bisection.held;
-        j["bracket_slipped_" + unit] = c.bisection.slipped;
-        j["runs"] = c.bisection.runs;
-    }
+    if (c.method == "ramp") addRampFigures(c, unit, j);
+    if (c.method == "constant") addConstantFigures(c, unit, j);
+    if (c.method == "bisection") addBisectionFigures(c, unit, j);
     if (!c.trace.failure.empty()) j["failure"] = c.trace.failure;
     j["wall_time_s"] = c.wallTime;
     return j;
@@ -53,6 +83,21 @@ Json formatMeasurement(const GraspCapacity& c) {
 std::string formatNumber(double value, const char* format) {
     char text[64];
     std::snprintf(text, sizeof text, format, value);
+    return text;
+}
+
+// "slips after 0.12 s, drops after 0.4 s of 2.5 N held 1 s" and the release, the failure.
+std::string describeConstant(const GraspCapacity& c) {
+    const OverloadFigures f = findOverloadFigures(c.trace.figures, c.start);
+    const std::string load = formatNumber(c.load, "%.4g") + (c.torque ? " N m" : " N");
+    std::string text = f.slipped ? "slips after " + formatNumber(f.slipOnsetTime, "%.4g") + " s" : "no slip";
+    if (f.slipped) text += f.dropped ? ", drops after " + formatNumber(f.dropTime, "%.4g") + " s" : ", not dropped";
+    text += " of " + load + " held " + formatNumber(c.hold, "%.4g") + " s";
+    if (!c.trace.failure.empty()) text += " [run stopped early: " + c.trace.failure + "]";
+    if (f.released) {
+        text += " (approximation released after " + formatNumber(f.releaseTime, "%.4g") + " s" +
+                (c.trace.releaseReason.empty() ? "" : ": " + c.trace.releaseReason) + ")";
+    }
     return text;
 }
 
@@ -86,6 +131,7 @@ std::string describeCapacity(const GraspCapacity& c) {
         return text + "slips from " + formatNumber(c.bisection.findEstimate(), "%.4g") + unit + " (held " +
                formatNumber(c.bisection.held, "%.4g") + ", slipped " + formatNumber(c.bisection.slipped, "%.4g") + ")";
     }
+    if (c.method == "constant") return text + describeConstant(c);
     const CapacityFigures& f = c.trace.figures;
     text += f.slipped ? "slips at " + formatNumber(f.slipOnsetLoad, "%.4g") + unit : "no slip up to " +
                         formatNumber(c.trace.samples.empty() ? 0 : c.trace.samples.back().load, "%.4g") + unit;

@@ -48,20 +48,25 @@ bool slipsUnder(const LoadedRunFactory& makeRun, const BisectionProtocol& p, dou
 
 }  // namespace
 
-CapacityTrace runRamp(const LoadedRunFactory& makeRun, const RampProtocol& p) {
-    const simulation::LoadRampSpec spec{p.direction, p.torque, p.start, 0.0, p.rate};
-    const std::unique_ptr<LoadedRun> run = makeRun(spec);
+CapacityTrace runLoadedScene(const LoadedRunFactory& makeRun, const simulation::LoadRampSpec& load, double end,
+                             double sampleInterval, const SlipCriteria& criteria) {
+    const std::unique_ptr<LoadedRun> run = makeRun(load);
     CapacityTrace trace;
     try {
-        sampleRun(*run, spec, p.start + p.maxDuration, p.sampleInterval, p.criteria, trace.samples);
+        sampleRun(*run, load, end, sampleInterval, criteria, trace.samples);
     } catch (const NumericalError& e) {
         trace.failure = foldToOneLine(e.what());
     } catch (const SimTK::Exception::Base& e) {  // an integrator that cannot step
         trace.failure = "Simbody: " + foldToOneLine(e.getMessageText());
     }
-    trace.figures = findCapacityFigures(trace.samples, p.criteria);
+    trace.figures = findCapacityFigures(trace.samples, criteria);
     trace.releaseReason = run->findReleaseReason();
     return trace;
+}
+
+CapacityTrace runRamp(const LoadedRunFactory& makeRun, const RampProtocol& p) {
+    const simulation::LoadRampSpec spec{p.direction, p.torque, p.start, 0.0, p.rate};
+    return runLoadedScene(makeRun, spec, p.start + p.maxDuration, p.sampleInterval, p.criteria);
 }
 
 BisectionResult runBisection(const LoadedRunFactory& makeRun, const BisectionProtocol& p) {

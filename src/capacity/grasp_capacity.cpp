@@ -1,5 +1,7 @@
 #include "graspsim/capacity/grasp_capacity.h"
 
+#include "graspsim/capacity/overload.h"
+
 #include "graspsim/error.h"
 #include "graspsim/simulation/grasp_experiment.h"
 #include "graspsim/simulation/grasp_scene.h"
@@ -212,10 +214,29 @@ GraspCapacity measureGraspCapacityBisection(const scenario::Scenario& scenario, 
     protocol.start = c.start;
     protocol.hold = hold;
     protocol.high = guess;
+    c.hold = hold;
     protocol.tolerance = 0.02;
     protocol.sampleInterval = request.sampleInterval;
     protocol.criteria = request.criteria;
     c.bisection = runBisection(makeGraspRuns(scenario, options), protocol);
+    c.wallTime = secondsSince(clock);
+    return c;
+}
+
+GraspCapacity measureGraspCapacityConstant(const scenario::Scenario& scenario, const simulation::SimulationOptions& options,
+                                           const GraspCapacityRequest& request, double load, double hold) {
+    const auto clock = std::chrono::steady_clock::now();
+    GraspCapacity c = makeHeader(options, request, scenario, "constant");
+    c.load = load;
+    c.hold = hold;
+    OverloadProtocol protocol;
+    protocol.direction = request.direction;
+    protocol.torque = request.torque;
+    protocol.start = c.start;
+    protocol.load = load;
+    protocol.hold = hold;
+    protocol.criteria = request.criteria;
+    c.trace = runOverload(makeGraspRuns(scenario, options), protocol);
     c.wallTime = secondsSince(clock);
     return c;
 }

@@ -21,7 +21,6 @@ constexpr double kRigidStep = 1e-3;  // s, the rigid stepper's fixed step
 constexpr double kReferenceAccuracy = 1e-7;
 // A scenario's defaults (scenario::SimulationSpec), so the case checks what a run uses.
 constexpr double kImplicitAccuracy = 1e-3;
-constexpr double kImplicitStepCap = 5e-3;  // s
 
 class SqueezeRun : public LoadedRun {
 public:
@@ -35,7 +34,7 @@ public:
         if (c.rigid) {
             startRigid();
         } else {
-            startCompliant();
+            startCompliant(load.start);
         }
     }
 
@@ -95,14 +94,17 @@ private:
     }
 
     // Starts at the static Hertz depth for N, so the squeeze is in equilibrium from the start.
-    void startCompliant() {
+    // The implicit stepper lands on the load's start, as a scene's does (scene_stepper.cpp): a
+    // constant load jumps on there, and no step may straddle the jump.
+    void startCompliant(double loadStart) {
         contacts_ = contact::CompliantContactForce(forces_, makePairs());
         const double depth = std::pow(3 * case_.press / (4 * kEStar * std::sqrt(kRadius)), 2.0 / 3.0);
         if (case_.integrator == SqueezeIntegrator::LinearlyImplicit) {
             jacobian_ = std::make_unique<contact::CompliantContactJacobian>(matter_, contacts_);
             integration::LinearlyImplicitOptions options;
-            options.stepSize = kImplicitStepCap;
+            options.stepSize = case_.implicitStepCap;
             options.accuracy = kImplicitAccuracy;
+            options.landingTimes = {loadStart};
             implicit_ = std::make_unique<integration::LinearlyImplicitStepper>(
                 system_, std::vector<const integration::ForceJacobianContributor*>{jacobian_.get()}, options);
             implicit_->initialize(makeState(depth));

@@ -27,6 +27,7 @@ struct CapacityCommand::Options {
     std::string method = "ramp";
     std::string maxDuration = "4";
     std::string hold = "1";
+    std::string load;
     std::string guess;
     std::string contact = "compliant";
     std::string mode = "full";
@@ -49,10 +50,11 @@ struct CapacityCommand::Plan {
     std::vector<capacity::GraspCapacityRequest> requests;
     bool bisection = false;
     bool compliance = false;  // predicted by the compliance model, not measured
+    bool constant = false;    // one constant load (`load`), held `hold` s
     /// With --direction all, --rate is the forces' rate; the torques' is scaled from it by the
     /// default rates' ratio (a lever, m).
     bool torqueRateFromForceRate = false;
-    double hold = 1, guess = 0;
+    double hold = 1, guess = 0, load = 0;
 };
 
 CapacityCommand::CapacityCommand(CLI::App& app) : options_(std::make_shared<Options>()) {
@@ -64,7 +66,9 @@ CapacityCommand::CapacityCommand(CLI::App& app) : options_(std::make_shared<Opti
     command_->add_flag("--torque", o.torque, "a torque about the object's centre of mass instead of a force");
     command_->add_option("--rate", o.rate, "ramp rate, N/s (N m/s with --torque), > 0 (default: 2 object weights per second; with --direction all "
                          "the forces' rate, the torques' scaled by the farthest goal's distance)");
-    command_->add_option("--method", o.method, "ramp (default), bisection (constant loads, --hold s each) or compliance (predicted by the grasp's compliance model from full contact at the load's start; docs/capacity.md)");
+    command_->add_option("--method", o.method, "ramp (default), bisection (constant loads, --hold s each), constant (one --load "
+                         "held --hold s: when the object slips and drops) or compliance (predicted by the grasp's compliance "
+                         "model from full contact at the load's start; docs/capacity.md)");
     command_->add_option("--accuracy", o.accuracy, "integrator relative accuracy in (0, 1) (default: the scenario's)");
     command_->add_option("--integrator", o.integrator,
                          "compliant contact: auto (default: implicit, but simbody for --constraint weld and --attach "
@@ -73,7 +77,8 @@ CapacityCommand::CapacityCommand(CLI::App& app) : options_(std::make_shared<Opti
     command_->add_option("--step-size", o.stepSize,
                          "implicit: longest step, implicit-fixed: the step, in s, > 0 (default: the scenario's simulation.step_size)");
     command_->add_option("--max-duration", o.maxDuration, "ramp: longest ramp, s (default 4)");
-    command_->add_option("--hold", o.hold, "bisection: how long each constant load is held, s (default 1)");
+    command_->add_option("--hold", o.hold, "bisection, constant: how long each constant load is held, s (default 1)");
+    command_->add_option("--load", o.load, "constant: the load, N (N m with --torque), > 0, applied at once at the load's start");
     command_->add_option("--guess", o.guess, "bisection: first load to try, N or N m (default: rate x 1 s)");
     command_->add_option("--contact", o.contact, "compliant (default) or rigid");
     command_->add_option("--mode", o.mode, "full (default) or approx");
@@ -133,6 +138,20 @@ double findRate(const scenario::Scenario& scenario, bool torqueRateFromForceRate
     return r.rate;
 }
 
+// --load belongs to --method constant, which needs it, and one direction (a load is N or N m).
+void checkConstantLoadOptions(const std::string& method, const std::string& load, const std::string& direction) {
+    if (method != "constant" && !load.empty()) {
+        throw InputError("--load: value " + load + " is not accepted with --method " + method +
+                         "; --load is the load of --method constant");
+    }
+    if (method != "constant") return;
+    if (load.empty()) throw InputError("--load: missing; --method constant needs the load, N (N m with --torque), a number > 0");
+    if (direction == "all") {
+        throw InputError("--direction: value all is not accepted with --method constant (one load, N or N m, for one "
+                         "direction); use an axis or a vector");
+    }
+}
+
 void prepareFolder(const std::string& folder) {
     std::error_code ec;
     std::filesystem::create_directories(folder, ec);
@@ -164,11 +183,14 @@ CapacityCommand::Plan CapacityCommand::makePlan() const {
     }
     if (!o.limitsFriction.empty()) plan.simulation.approx.staticFrictionLimits = o.limitsFriction == "static";
     plan.simulation.approx.limitModel = grasp::parseFrictionLimitModel(o.limits, "--limits");
-    if (o.method != "ramp" && o.method != "bisection" && o.method != "compliance") {
-        throw InputError("--method: value '" + o.method + "' is not accepted; use ramp, bisection or compliance");
+    if (o.method != "ramp" && o.method != "bisection" && o.method != "constant" && o.method != "compliance") {
+        throw InputError("--method: value '" + o.method + "' is not accepted; use ramp, bisection, constant or compliance");
     }
     plan.bisection = o.method == "bisection";
     plan.compliance = o.method == "compliance";
+    plan.constant = o.method == "constant";
+    checkConstantLoadOptions(o.method, o.load, o.direction);
+    plan.load = parsePositive(o.load, "--load", "the load (N, or N m with --torque)", 0);
     if (plan.compliance && !o.out.empty()) throw InputError("--out: --method compliance writes no files; leave --out out");
     const double rate = parsePositive(o.rate, "--rate", "the rate", 0);
     const double maxDuration = parsePositive(o.maxDuration, "--max-duration", "the ramp's duration (s)", 4);
@@ -204,7 +226,9 @@ int CapacityCommand::run() const {
     std::vector<capacity::GraspCapacity> measurements;
     for (capacity::GraspCapacityRequest r : plan.requests) {
         r.rate = findRate(scenario, plan.torqueRateFromForceRate, r);
-        if (plan.bisection) {
+        if (plan.constant) {
+            measurements.push_back(capacity::measureGraspCapacityConstant(scenario, plan.simulation, r, plan.load, plan.hold));
+        } else if (plan.bisection) {
             const double rate = r.rate > 0 ? r.rate : capacity::findDefaultRate(scenario, r.torque);
             const double guess = plan.guess > 0 ? plan.guess : rate;
             measurements.push_back(capacity::measureGraspCapacityBisection(scenario, plan.simulation, r, guess, plan.hold));

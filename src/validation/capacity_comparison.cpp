@@ -4,11 +4,13 @@
 #include "graspsim/capacity/capacity_files.h"
 #include "graspsim/capacity/capacity_plot.h"
 #include "graspsim/capacity/load_direction.h"
+#include "graspsim/capacity/overload.h"
 #include "graspsim/scenario/scenario_file.h"
 #include "graspsim/validation/validation_plan.h"
 
 #include <algorithm>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <sstream>
 
@@ -50,6 +52,40 @@ std::vector<std::string> listVariants(const CapacityPlan& plan) {
     return variants;
 }
 
+capacity::GraspCapacityRequest makeRequest(const Load& load) {
+    capacity::GraspCapacityRequest request;
+    request.direction = load.direction.direction;
+    request.directionName = load.name;
+    request.torque = load.torque;
+    return request;
+}
+
+simulation::SimulationOptions makeOptions(const std::string& variant, const CapacityPlan& plan) {
+    simulation::SimulationOptions options = makeVariantOptions(variant, "none", 0);
+    options.accuracy = plan.accuracy;
+    options.integrator = plan.integrator;
+    return options;
+}
+
+capacity::OverloadFigures findOverloadTimes(const capacity::GraspCapacity& c) {
+    return capacity::findOverloadFigures(c.trace.figures, c.start);
+}
+
+// `row`'s constant load: kOverloadFactor x full contact's ramp onset (none if that ramp did not
+// slip), on `row`'s variant, its slip-onset time set against full contact's (`full`, run first).
+void runOverload(const scenario::Scenario& scenario, const Load& load, const CapacityPlan& plan, const CapacityRow& full,
+                 CapacityRow& row) {
+    const capacity::CapacityFigures& ramp = full.measured.trace.figures;
+    if (!ramp.slipped) return;
+    row.overload = capacity::measureGraspCapacityConstant(scenario, makeOptions(row.variant, plan), makeRequest(load),
+                                                          kOverloadFactor * ramp.slipOnsetLoad, kOverloadHold);
+    if (&row == &full) return;
+    const capacity::OverloadFigures f = findOverloadTimes(row.overload), reference = findOverloadTimes(full.overload);
+    if (!f.slipped || !reference.slipped) return;
+    row.hasOverloadReference = true;
+    row.overloadTimeDifference = (f.slipOnsetTime - reference.slipOnsetTime) / reference.slipOnsetTime;
+}
+
 std::string describeSlip(const CapacityRow& row) {
     const capacity::CapacityFigures& f = row.measured.trace.figures;
     const std::string unit = row.measured.torque ? " N m" : " N";
@@ -61,29 +97,76 @@ std::string describeSlip(const CapacityRow& row) {
     return text;
 }
 
+// A constant load's slip-onset time (ms after the load's start) and its difference to full contact's.
+std::string describeOverload(const CapacityRow& row) {
+    if (row.overload.method.empty()) return "-";
+    const capacity::OverloadFigures f = findOverloadTimes(row.overload);
+    if (!row.overload.trace.failure.empty() && !f.slipped) return "failed (integrator)";
+    if (!f.slipped) return "no slip";
+    std::string text = formatBriefNumber(1000 * f.slipOnsetTime) + " ms";
+    if (row.hasOverloadReference) {
+        text += " (" + std::string(row.overloadTimeDifference >= 0 ? "+" : "") + formatBriefNumber(100 * row.overloadTimeDifference) + " %)";
+    }
+    if (f.released) text += ", released at " + formatBriefNumber(1000 * f.releaseTime) + " ms";
+    return text;
+}
+
+// The constant load of a row's experiment and load (full contact's row carries it too).
+std::string describeOverloadLoad(const CapacityRow& row) {
+    if (row.overload.method.empty()) return "-";
+    return formatBriefNumber(row.overload.load) + (row.overload.torque ? " N m" : " N");
+}
+
+using Describe = std::function<std::string(const CapacityRow&)>;
+
+// One table per experiment under `heading` ("###"): loads down, variants across, `describe` in each
+// cell; a non-empty `leadName` adds a column after the load's, `lead` of the load's first row.
+std::string formatTables(const std::vector<CapacityRow>& rows, const std::string& heading, const Describe& describe,
+                         const std::string& leadName = "", const Describe& lead = {}) {
+    std::ostringstream md;
+    std::string experiment;
+    std::vector<std::string> variants;
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        if (rows[i].experiment != experiment) {
+            experiment = rows[i].experiment;
+            variants.clear();
+            for (std::size_t j = i; j < rows.size() && rows[j].experiment == experiment && rows[j].load == rows[i].load; ++j) {
+                variants.push_back(rows[j].variant);
+            }
+            md << "\n" << heading << " " << experiment << "\n\n| load |" << (leadName.empty() ? "" : " " + leadName + " |");
+            for (const std::string& v : variants) md << " " << v << " |";
+            md << "\n|---|" << (leadName.empty() ? "" : "---|");
+            for (std::size_t v = 0; v < variants.size(); ++v) md << "---|";
+            md << "\n";
+        }
+        if (rows[i].variant == variants.front()) md << "| " << rows[i].load << " |" << (leadName.empty() ? "" : " " + lead(rows[i]) + " |");
+        md << " " << describe(rows[i]) << " |";
+        if (rows[i].variant == variants.back()) md << "\n";
+    }
+    return md.str();
+}
+
 }  // namespace
 
 std::vector<CapacityRow> runCapacityComparison(const CapacityPlan& plan, const CapacityProgress& progress) {
     const std::vector<std::string> experiments = plan.experiments.empty() ? getThesisExperiments() : plan.experiments;
     const std::vector<std::string> variants = listVariants(plan);
     const std::vector<Load> loads = listLoads(plan.quick);
-    const std::size_t count = experiments.size() * loads.size() * variants.size();
+    const std::size_t count = 2 * experiments.size() * loads.size() * variants.size();  // a ramp and a constant load each
+    std::size_t index = 0;
+    const auto announce = [&](const std::string& label) {
+        if (progress) progress(index, count, label);
+        ++index;
+    };
     std::vector<CapacityRow> rows;
     for (const std::string& experiment : experiments) {
         const scenario::Scenario scenario = scenario::findBuiltinScenario(experiment);
         for (const Load& load : loads) {
             const std::size_t full = rows.size();  // this load's full-contact row, run first
             for (const std::string& variant : variants) {
-                if (progress) progress(rows.size(), count, experiment + " " + load.name + " " + variant);
-                capacity::GraspCapacityRequest request;
-                request.direction = load.direction.direction;
-                request.directionName = load.name;
-                request.torque = load.torque;
-                CapacityRow row{experiment, load.name, variant, {}, false, 0};
-                simulation::SimulationOptions options = makeVariantOptions(variant, "none", 0);
-                options.accuracy = plan.accuracy;
-                options.integrator = plan.integrator;
-                row.measured = capacity::measureGraspCapacityRamp(scenario, options, request);
+                announce(experiment + " " + load.name + " " + variant);
+                CapacityRow row{experiment, load.name, variant, {}, false, 0, {}, false, 0};
+                row.measured = capacity::measureGraspCapacityRamp(scenario, makeOptions(variant, plan), makeRequest(load));
                 const capacity::CapacityFigures& f = row.measured.trace.figures;
                 if (variant != "full" && rows[full].measured.trace.figures.slipped && f.slipped) {
                     row.hasReference = true;
@@ -92,15 +175,38 @@ std::vector<CapacityRow> runCapacityComparison(const CapacityPlan& plan, const C
                 }
                 rows.push_back(std::move(row));
             }
+            for (std::size_t k = full; k < rows.size(); ++k) {
+                announce(experiment + " " + load.name + " " + rows[k].variant + " constant");
+                runOverload(scenario, load, plan, rows[full], rows[k]);
+            }
         }
     }
     return rows;
 }
 
+namespace {
+
+// The constant load's columns, each after a comma; empty where it was not run or did not happen.
+std::string formatOverloadCsv(const CapacityRow& r) {
+    std::ostringstream csv;
+    if (r.overload.method.empty()) return ",,,,,,,,";
+    const capacity::OverloadFigures f = findOverloadTimes(r.overload);
+    const auto time = [](bool valid, double t) { return valid ? formatExactNumber(t) : std::string(); };
+    csv << "," << formatExactNumber(r.overload.load) << "," << (f.slipped ? 1 : 0) << "," << time(f.slipped, f.slipOnsetTime) << ","
+        << time(f.dropped, f.dropTime) << "," << time(f.released, f.releaseTime) << ","
+        << (r.hasOverloadReference ? formatExactNumber(r.overloadTimeDifference) : "") << ",\"" << r.overload.trace.failure << "\","
+        << formatExactNumber(r.overload.wallTime);
+    return csv.str();
+}
+
+}  // namespace
+
 std::string formatCapacityCsv(const std::vector<CapacityRow>& rows) {
     std::ostringstream csv;
     csv << "experiment,load,variant,unit,rate,slipped,slip_onset,slip_onset_time_s,dropped,drop,released,release_load,"
-           "relative_difference_to_full,release_reason,failure,wall_time_s\n";
+           "relative_difference_to_full,release_reason,failure,wall_time_s,overload_load,overload_slipped,"
+           "overload_slip_onset_time_s,overload_drop_time_s,overload_release_time_s,overload_time_difference_to_full,"
+           "overload_failure,overload_wall_time_s\n";
     for (const CapacityRow& r : rows) {
         const capacity::CapacityFigures& f = r.measured.trace.figures;
         csv << r.experiment << "," << r.load << "," << r.variant << "," << (r.measured.torque ? "N m" : "N") << ","
@@ -108,7 +214,7 @@ std::string formatCapacityCsv(const std::vector<CapacityRow>& rows) {
             << (f.slipped ? formatExactNumber(f.slipOnsetTime) : "") << "," << (f.dropped ? 1 : 0) << "," << (f.dropped ? formatExactNumber(f.dropLoad) : "")
             << "," << (f.released ? 1 : 0) << "," << (f.released ? formatExactNumber(f.releaseLoad) : "") << ","
             << (r.hasReference ? formatExactNumber(r.relativeDifference) : "") << ",\"" << r.measured.trace.releaseReason << "\",\""
-            << r.measured.trace.failure << "\"," << formatExactNumber(r.measured.wallTime) << "\n";
+            << r.measured.trace.failure << "\"," << formatExactNumber(r.measured.wallTime) << formatOverloadCsv(r) << "\n";
     }
     return csv.str();
 }
@@ -120,25 +226,15 @@ std::string formatCapacityMarkdown(const std::vector<CapacityRow>& rows) {
        << "Slip onset of a load ramped from the settled grasp (graspsim capacity; the difference to full contact's in "
           "parentheses; \"released first\": the approximation let go at or before that load, and the slip was then full "
           "contact's). Every ramp's figures are in capacity.csv.\n";
-    std::string experiment;
-    std::vector<std::string> variants;
-    for (std::size_t i = 0; i < rows.size(); ++i) {
-        if (rows[i].experiment != experiment) {
-            experiment = rows[i].experiment;
-            variants.clear();
-            for (std::size_t j = i; j < rows.size() && rows[j].experiment == experiment && rows[j].load == rows[i].load; ++j) {
-                variants.push_back(rows[j].variant);
-            }
-            md << "\n### " << experiment << "\n\n| load |";
-            for (const std::string& v : variants) md << " " << v << " |";
-            md << "\n|---|";
-            for (std::size_t v = 0; v < variants.size(); ++v) md << "---|";
-            md << "\n";
-        }
-        if (rows[i].variant == variants.front()) md << "| " << rows[i].load << " |";
-        md << " " << describeSlip(rows[i]) << " |";
-        if (rows[i].variant == variants.back()) md << "\n";
-    }
+    md << formatTables(rows, "###", describeSlip);
+    md << "\n### Slip-onset times under a constant load above capacity\n\n"
+       << "A constant load of " << formatBriefNumber(kOverloadFactor) << " x full contact's ramp slip onset (column \"constant load\"), "
+       << "applied at once at the load's start and held " << formatBriefNumber(kOverloadHold)
+       << " s on every variant (graspsim capacity --method constant): ms from the load's start to slip onset (2 mm), the "
+          "difference to full contact's in parentheses; \"released at\": when the approximation handed the object back to "
+          "full contact. A table, not checks: where they differ is a finding (docs/capacity.md). Figures in capacity.csv "
+          "(overload_*).\n";
+    md << formatTables(rows, "####", describeOverload, "constant load", describeOverloadLoad);
     return md.str();
 }
 

@@ -1,5 +1,7 @@
 #include "cli_process.h"
 
+#include <cstdio>
+
 using graspsim::testing::CliProcess;
 using graspsim::testing::RunResult;
 using graspsim::testing::slurp;
@@ -37,6 +39,16 @@ TEST_F(CapacityCommand, BadInputIsOneLineAndWritesNothing) {
     expectRejected("--integrator implicit --step-size 0", "--step-size");
     expectRejected("--contact rigid --integrator implicit", "--integrator");  // rigid has its own stepper
     expectRejected("--mode approx --constraint weld --limits compliance", "--limits");
+    expectRejected("--method constant", "--load");  // the load is required
+    expectRejected("--method constant --load 0", "--load");
+    expectRejected("--method constant --load=-2", "--load");
+    expectRejected("--method constant --load nan", "--load");
+    expectRejected("--method constant --load inf", "--load");
+    expectRejected("--load 2", "--load");  // with the ramp
+    expectRejected("--method bisection --load 2", "--load");
+    expectRejected("--method constant --load 2 --hold 0", "--hold");
+    expectRejected("--method constant --load 2 --hold=-1", "--hold");
+    expectRejected("--method constant --load 2 --direction all", "--direction");
     // About the line through the phone's two goals, R_GO (p_index - p_thumb) normalized (the
     // scenario's goals and orientation; grasp_capacity_test derives it in code): nothing resists.
     expectRejected("--torque --direction 0.8866,-0.4599,-0.0500", "--direction");
@@ -80,4 +92,34 @@ TEST_F(CapacityCommand, TheImplicitStepperFindsTheFiguresCpodesFinds) {
     ASSERT_GT(cpodesDrop, 0);
     EXPECT_NEAR(implicitSlip, cpodesSlip, 0.03 * cpodesSlip);
     EXPECT_NEAR(implicitDrop, cpodesDrop, 0.03 * cpodesDrop);
+}
+
+// A constant load on the phone above its capacity (2.5 N along -y; its ramp slips at about 2 N on
+// the implicit stepper): the last line states when it slipped and dropped, capacity.json holds the
+// same times after the load's start and the load, and the series starts at the load's start with
+// the full load and no slip.
+TEST_F(CapacityCommand, ConstantLoadWritesTheTimesItPrints) {
+    const std::string out = (dir_ / "cap").string();
+    const RunResult r = run("capacity phone-pinch --method constant --load 2.5 --hold 0.5 --integrator implicit --out " + out);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const std::string json = slurp(fs::path(out) / "capacity.json");
+    const auto number = [&](const std::string& key) {
+        const std::size_t at = json.find("\"" + key + "\": ");
+        return at == std::string::npos ? -1.0 : std::stod(json.substr(at + key.size() + 4));
+    };
+    EXPECT_EQ(number("load_n"), 2.5) << json;
+    EXPECT_EQ(number("hold_s"), 0.5) << json;
+    EXPECT_NE(json.find("\"method\": \"constant\""), std::string::npos) << json;
+    const double onset = number("slip_onset_time_s"), drop = number("drop_time_s");
+    ASSERT_GT(onset, 0) << json;
+    ASSERT_GT(drop, onset) << json;
+    EXPECT_LT(drop, 0.5) << json;
+    const std::string last = r.out.substr(r.out.rfind('\n', r.out.size() - 2) + 1);
+    EXPECT_EQ(last.rfind("capacity of phone-pinch (compliant, full): -y force (constant): slips after ", 0), 0u) << last;
+    char expected[96];
+    std::snprintf(expected, sizeof expected, "slips after %.4g s, drops after %.4g s of 2.5 N held 0.5 s", onset, drop);
+    EXPECT_NE(last.find(expected), std::string::npos) << last << " vs " << expected;
+    const std::string csv = slurp(fs::path(out) / "capacity.csv");
+    EXPECT_EQ(csv.rfind("direction,load,time_s,load_value,slip_m,rotation_rad,held,engaged\n-y,force,1.1000,2.5,0,", 0), 0u)
+        << csv.substr(0, 200);
 }

@@ -53,6 +53,17 @@ TEST_F(ValidateQuick, PassesEveryBoundAndWritesReportTablesAndPlots) {
     ASSERT_EQ(fields[5], "1") << rows[2];
     EXPECT_LT(std::abs(std::stod(fields[12])), 0.10) << rows[2];  // relative_difference_to_full
     EXPECT_NE(report.find("## Holding capacity"), std::string::npos);
+    // The constant load at 1.25 x full contact's ramp onset slips on both (its columns are the last
+    // eight: load, slipped, onset time, ...), and report.md has its table.
+    for (const std::size_t row : {1u, 2u}) {
+        std::vector<std::string> f;
+        std::istringstream in(rows[row]);
+        for (std::string cell; std::getline(in, cell, ',');) f.push_back(cell);
+        ASSERT_GT(f.size(), 8u) << rows[row];
+        EXPECT_EQ(f[f.size() - 7], "1") << rows[row];  // overload_slipped
+        EXPECT_GT(std::stod(f[f.size() - 6]), 0) << rows[row];  // overload_slip_onset_time_s
+    }
+    EXPECT_NE(report.find("### Slip-onset times under a constant load above capacity"), std::string::npos);
     // The polar plot's data: each variant's ramps in capacity.json, as `graspsim capacity` writes them.
     EXPECT_NE(slurp(out / "capacity" / "ball-clutch" / "approx-bushing-merged" / "capacity.json").find("\"slip_onset_n\""),
               std::string::npos);

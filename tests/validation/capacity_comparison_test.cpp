@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <sstream>
 
 namespace graspsim::validation {
 namespace {
@@ -37,6 +38,45 @@ TEST(CapacityComparison, ReportTablesHaveALinePerLoadAndAColumnPerVariant) {
     const std::string csv = formatCapacityCsv(rows);
     EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 9);
     EXPECT_TRUE(formatCapacityMarkdown({}).empty());
+}
+
+// A constant load held from t = 1.1 s whose slip passed 2 mm at `onset` s after it.
+capacity::GraspCapacity makeOverload(double load, double onset) {
+    capacity::GraspCapacity c;
+    c.method = "constant";
+    c.start = 1.1;
+    c.load = load;
+    c.hold = 1;
+    c.trace.figures.slipped = onset > 0;
+    c.trace.figures.slipOnsetTime = c.start + onset;
+    return c;
+}
+
+// The constant loads' table: the load in its own column, the onset times in ms after the load's
+// start, the difference to full contact's and the release; "-" where full contact's ramp did not
+// slip (no load to set); the times in capacity.csv's last columns.
+TEST(CapacityComparison, ConstantLoadTableGivesOnsetTimesAfterTheLoadsStart) {
+    std::vector<CapacityRow> rows{makeRow("ball-clutch", "-y", "full", 10), makeRow("ball-clutch", "-y", "approx-bushing-merged", 11),
+                                  makeRow("ball-clutch", "x", "full", 0), makeRow("ball-clutch", "x", "approx-bushing-merged", 0)};
+    rows[0].overload = makeOverload(12.5, 0.05);
+    rows[1].overload = makeOverload(12.5, 0.06);
+    rows[1].overload.mode = simulation::SimulationMode::Approx;
+    rows[1].overload.trace.figures.released = true;
+    rows[1].overload.trace.figures.releaseTime = 1.1 + 0.02;
+    rows[1].hasOverloadReference = true;
+    rows[1].overloadTimeDifference = 0.2;
+    const std::string md = formatCapacityMarkdown(rows);
+    EXPECT_NE(md.find("#### ball-clutch\n\n| load | constant load | full | approx-bushing-merged |\n|---|---|---|---|\n"
+                      "| -y | 12.5 N | 50 ms | 60 ms (+20 %), released at 20 ms |\n| x | - | - | - |\n"),
+              std::string::npos)
+        << md;
+    const std::string csv = formatCapacityCsv(rows);
+    EXPECT_NE(csv.find(",12.5,1,0.06"), std::string::npos) << csv;
+    const auto countCommas = [](const std::string& line) { return std::count(line.begin(), line.end(), ','); };
+    std::istringstream lines(csv);
+    std::string header, line;
+    std::getline(lines, header);
+    while (std::getline(lines, line)) EXPECT_EQ(countCommas(line), countCommas(header)) << line;
 }
 
 }  // namespace

@@ -9,7 +9,10 @@
 ///   give the slip onset as the bracket's middle, and bracket_held / bracket_slipped, and no drop.
 ///   Approx-mode entries add release_n / release_nm and release_time_s: when the approximation
 ///   handed the object back to full contact during the load (null if it did not).
-/// - capacity.csv: the ramps' time series: direction, load kind, time (s), load (N or N m), slip
+///   Constant-load entries (method "constant", overload.h) give load_n / load_nm and hold_s instead
+///   of the onset and drop loads, and slip_onset_time_s, drop_time_s and (approx) release_time_s as
+///   seconds AFTER the load's start (load_start_s), null where it did not happen within the hold.
+/// - capacity.csv: the ramps' and constant loads' time series: direction, load kind, time (s), load (N or N m), slip
 ///   (m), rotation relative to the palm (rad), held (1/0), engaged (1/0 in approx mode, -1 in full mode).
 /// Each file is written whole to a temporary name and renamed.
 

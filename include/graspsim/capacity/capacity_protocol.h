@@ -58,6 +58,14 @@ struct CapacityTrace {
     std::string failure;
 };
 
+/// Runs one scene made by `makeRun` with `load`: advances it to load.start, takes the reference
+/// there, then samples it every `sampleInterval` until the object drops or `end` (s). A numerical
+/// failure of the scene's integrator ends the run early (CapacityTrace::failure); the figures are
+/// read from the samples before it. The ramp and the constant load (overload.h) are this with their
+/// loads.
+CapacityTrace runLoadedScene(const LoadedRunFactory& makeRun, const simulation::LoadRampSpec& load, double end,
+                             double sampleInterval, const SlipCriteria& criteria);
+
 /// Runs the ramp on a scene made by `makeRun`.
 CapacityTrace runRamp(const LoadedRunFactory& makeRun, const RampProtocol& protocol);
 

@@ -62,14 +62,18 @@ struct GraspCapacity {
     std::string directionName;
     SimTK::UnitVec3 direction;
     bool torque = false;
-    std::string method;       ///< "ramp" or "bisection"
+    std::string method;       ///< "ramp", "bisection" or "constant"
     simulation::ContactModel contact = simulation::ContactModel::Compliant;
     simulation::SimulationMode mode = simulation::SimulationMode::Full;
     std::string realization;  ///< "" in full mode, else e.g. "bushing merged"
     double start = 0;         ///< load start (s)
     double rate = 0;          ///< N/s or N m/s (ramp)
+    double load = 0;          ///< N or N m (constant)
+    double hold = 0;          ///< s (constant, bisection)
     SlipCriteria criteria;
-    CapacityTrace trace;      ///< ramp: the time series and figures
+    /// ramp and constant: the time series and figures (on the scene's clock; for a constant load
+    /// findOverloadFigures gives them after the load's start)
+    CapacityTrace trace;
     BisectionResult bisection;  ///< bisection: the bracket
     double wallTime = 0;      ///< s, for all the runs of this measurement
 };
@@ -82,5 +86,11 @@ GraspCapacity measureGraspCapacityRamp(const scenario::Scenario& scenario, const
 /// [0, `guess`].
 GraspCapacity measureGraspCapacityBisection(const scenario::Scenario& scenario, const simulation::SimulationOptions& options,
                                             const GraspCapacityRequest& request, double guess, double hold);
+
+/// Measures along one direction with a constant load of `load` (N or N m, > 0) from the load's start,
+/// held `hold` s (overload.h), sampled every kOverloadSampleInterval (1 ms); request.rate,
+/// maxRampDuration and sampleInterval (the ramp's) are not used.
+GraspCapacity measureGraspCapacityConstant(const scenario::Scenario& scenario, const simulation::SimulationOptions& options,
+                                           const GraspCapacityRequest& request, double load, double hold);
 
 }  // namespace graspsim::capacity

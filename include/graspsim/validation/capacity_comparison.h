@@ -3,7 +3,8 @@
 /// The holding-capacity comparison of `graspsim validate`: for each thesis experiment, each load
 /// (the six axis forces and the three axis torques) and each variant (full contact and the
 /// approximation's realizations and attachments), the capacity ramp of capacity/grasp_capacity.h,
-/// with the approximation's slip onset set against full contact's.
+/// with the approximation's slip onset set against full contact's; then a constant load above
+/// full contact's capacity on each variant, with the slip-onset times set against full contact's.
 ///
 /// It is a table, not a set of pass/fail checks: where the approximation and full contact
 /// disagree is a finding (docs/capacity.md), reported with its numbers.
@@ -16,7 +17,14 @@
 
 namespace graspsim::validation {
 
-/// One capacity ramp of the comparison.
+/// The constant load of the comparison's slip-onset times: this times full contact's ramp slip
+/// onset, on every variant of the same experiment and load (issue 17: above capacity both slip,
+/// and their onset times are compared).
+constexpr double kOverloadFactor = 1.25;
+/// How long that load is held (s).
+constexpr double kOverloadHold = 1.0;
+
+/// One capacity ramp of the comparison, and one constant load above the capacity.
 struct CapacityRow {
     std::string experiment;  ///< "ball-clutch" or "phone-pinch"
     std::string load;        ///< "x", "-y", ..., or "torque x", ...
@@ -24,6 +32,12 @@ struct CapacityRow {
     capacity::GraspCapacity measured;
     bool hasReference = false;    ///< full contact's ramp of the same load was run and slipped
     double relativeDifference = 0;  ///< (slip onset - full's) / full's, when both slipped
+    /// The constant load kOverloadFactor x full contact's ramp onset held kOverloadHold s
+    /// (capacity::measureGraspCapacityConstant; times after the load's start); method "" when
+    /// full contact's ramp did not slip (no load to set).
+    capacity::GraspCapacity overload;
+    bool hasOverloadReference = false;  ///< this and full contact's constant load both slipped
+    double overloadTimeDifference = 0;  ///< (slip-onset time - full's) / full's, when both slipped
 };
 
 /// What to compare: the experiments and variants of the validation plan (full is always run, as
@@ -47,17 +61,20 @@ struct CapacityPlan {
     simulation::IntegratorChoice integrator = simulation::IntegratorChoice::LinearlyImplicit;
 };
 
-/// Called before each ramp with its index, the number of ramps, and a label ("ball-clutch -y full").
+/// Called before each run with its index, the number of runs (ramps and constant loads), and a
+/// label ("ball-clutch -y full", "ball-clutch -y full constant").
 using CapacityProgress = std::function<void(std::size_t index, std::size_t count, const std::string& label)>;
 
-/// Runs every ramp of `plan`, full contact first for each experiment and load.
+/// Runs every ramp of `plan`, full contact first for each experiment and load, then each
+/// variant's constant load.
 std::vector<CapacityRow> runCapacityComparison(const CapacityPlan& plan, const CapacityProgress& progress = {});
 
-/// DIR/capacity.csv: one row per ramp (slip onset, drop, release, failure, difference to full).
+/// DIR/capacity.csv: one row per ramp (slip onset, drop, release, failure, difference to full),
+/// with the constant load's figures in the last columns (overload_*).
 std::string formatCapacityCsv(const std::vector<CapacityRow>& rows);
 
 /// The report's section: one table per experiment, loads down, variants across (slip onset,
-/// and the difference to full contact's in %).
+/// and the difference to full contact's in %); then one of the constant loads' slip-onset times.
 std::string formatCapacityMarkdown(const std::vector<CapacityRow>& rows);
 
 /// The comparison's polar plots: writes each experiment's ramps per variant as
