@@ -7,7 +7,7 @@
 # PEER_DIR: the MuJoCo peer (grasp_bench.c and its models; default ../shared/peers/mujoco), built
 # here with Debian's libmujoco-dev. Per round and scene it prints MuJoCo's mean step (1 ms steps from
 # the settled keyframe: its s per simulated s) and graspsim's default full-contact run, s of wall
-# time per simulated s: "held" is the marginal cost of simulated seconds 2-5 (the grasp held, the
+# time per simulated s (medians of five runs): "held" is the marginal cost of simulated seconds 2-5 (the grasp held, the
 # phase MuJoCo's bench times), "whole" a 3 s run from the open hand (closing, landing and hold).
 set -euo pipefail
 build=${1:?usage: mujoco_ratio.sh BUILD_DIR [PEER_DIR] [ROUNDS]}
@@ -17,7 +17,7 @@ rounds=${3:-3}
 graspsim=$(cd "$build" && pwd)/bin/graspsim
 [[ -x $graspsim ]] || { echo "mujoco_ratio.sh: $graspsim not found; build graspsim first" >&2; exit 2; }
 [[ -f $peer/grasp_bench.c ]] || { echo "mujoco_ratio.sh: no MuJoCo peer at $peer (grasp_bench.c)" >&2; exit 2; }
-dpkg -s libmujoco-dev >/dev/null 2>&1 || { echo "mujoco_ratio.sh: needs Debian's libmujoco-dev (apt-get install libmujoco-dev)" >&2; exit 2; }
+dpkg -s libmujoco-dev >/dev/null 2>&1 || { echo "mujoco_ratio.sh: needs Debian's libmujoco-dev (bash .ci/install --peers)" >&2; exit 2; }
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -30,10 +30,13 @@ mujoco_step_ns() {
         awk -F'|' '$3 ~ / m / { gsub(/ /, "", $4); print $4 }'
 }
 
-# graspsim: the run's own wall time (summary.json's wall_time_s, the simulation without start-up).
+# graspsim: the run's own wall time (summary.json's wall_time_s, the simulation without start-up),
+# the median of five runs.
 graspsim_wall() {
-    "$graspsim" simulate "$1" --duration "$2" -q --out "$work/run" >/dev/null
-    sed -n 's/.*"wall_time_s": *\([0-9.eE+-]*\).*/\1/p' "$work/run/summary.json"
+    for rep in 1 2 3 4 5; do
+        "$graspsim" simulate "$1" --duration "$2" -q --out "$work/run" >/dev/null
+        sed -n 's/.*"wall_time_s": *\([0-9.eE+-]*\).*/\1/p' "$work/run/summary.json"
+    done | sort -g | sed -n 3p
 }
 
 printf '%-5s %-12s %12s %12s %12s %8s %8s\n' round scene mujoco held whole held/mj whole/mj

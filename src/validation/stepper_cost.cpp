@@ -124,13 +124,13 @@ std::string cell(double value, int width, int decimals) {
 std::string formatStepperTable(const std::vector<StepperCost>& rows) {
     std::string text = "Full contact per stepper, the approximation and the floor, side by side:\n";
     char head[256];
-    std::snprintf(head, sizeof head, "%-12s %-16s %9s %7s %7s %6s %6s %7s %8s | %7s %7s %7s %7s %6s %6s\n", "experiment", "run",
+    std::snprintf(head, sizeof head, "%-12s %-26s %9s %7s %7s %6s %6s %7s %8s | %7s %7s %7s %7s %6s %6s\n", "experiment", "run",
                   "wall/sim", "steps", "evals", "jac", "LU", "newton", "restarts", "step", "dynamic", "contact", "linear", "IK",
                   "rest");
     text += head;
     for (const StepperCost& r : rows) {
         char name[64];
-        std::snprintf(name, sizeof name, "%-12s %-16s", r.scenario.c_str(), r.run.c_str());
+        std::snprintf(name, sizeof name, "%-12s %-26s", r.scenario.c_str(), r.run.c_str());
         text += std::string(name) + cell(r.wallPerSimSecond, 10, 4) + cell(r.stepsPerSimSecond, 8, 0) +
                 cell(r.evaluationsPerSimSecond, 8, 0) + cell(r.jacobiansPerSimSecond, 7, 0) +
                 cell(r.factorizationsPerSimSecond, 7, 0) + cell(r.newtonPerSimSecond, 8, 0) + cell(r.restartsPerSimSecond, 9, 0) +

@@ -44,6 +44,20 @@ TEST(StepperCost, CpodesRowHasNewtonIterationsAndNoLinearSolveClock) {
     EXPECT_GE(row.restartsPerSimSecond, 0);
 }
 
+// The held row times only the window after settle_time + warm-up: a run that ends before the
+// window has nothing to time (0), one that reaches it a positive time, and no counts either way.
+TEST(StepperCost, HeldRowTimesOnlyTheHeldWindow) {
+    scenario::Scenario s = scenario::findBuiltinScenario("ball-clutch");
+    s.simulation.settleTime = 0.2;
+    const StepperCost row = measureHeldFullContact(s, simulation::IntegratorChoice::LinearlyImplicit, 0.05, 0.1);
+    EXPECT_EQ(row.run, "full, implicit, held");
+    EXPECT_GT(row.wallPerSimSecond, 0);
+    EXPECT_EQ(row.stepsPerSimSecond, -1);
+    EXPECT_EQ(row.evaluationsPerSimSecond, -1);
+    const StepperCost none = measureHeldFullContact(s, simulation::IntegratorChoice::LinearlyImplicit, 0.05, 0.0);
+    EXPECT_EQ(none.wallPerSimSecond, 0);
+}
+
 TEST(StepperCost, TableShowsUnknownsAsDashes) {
     StepperCost floor;
     floor.scenario = "ball-clutch";
