@@ -160,6 +160,17 @@ void measureFloor(const scenario::Scenario& s, const simulation::SimulationOptio
     simulation::runGraspSimulation(s, options, {}, observe);
 }
 
+// A stepper-table row of a hold: its wall time and evaluations per simulated second only.
+StepperCost makeHoldRow(const std::string& scenario, const std::string& run, double wallPerSimSecond,
+                        double evaluationsPerSimSecond) {
+    StepperCost row;
+    row.scenario = scenario;
+    row.run = run;
+    row.wallPerSimSecond = wallPerSimSecond;
+    row.evaluationsPerSimSecond = evaluationsPerSimSecond;
+    return row;
+}
+
 ExperimentCost measureExperiment(const std::string& name, double duration, int realizations) {
     const scenario::Scenario s = scenario::findBuiltinScenario(name);
     ExperimentCost cost;
@@ -183,28 +194,14 @@ ExperimentCost measureExperiment(const std::string& name, double duration, int r
     }
     cost.steppers.push_back(measureHeldFullContact(s, simulation::IntegratorChoice::LinearlyImplicit, kHeldWarmUp, duration));
     for (const ApproxCost& a : cost.approx) {
-        StepperCost hold;
-        hold.scenario = name;
-        hold.run = "approx, " + a.constraint;
-        hold.wallPerSimSecond = a.holdWallPerSimSecond;
-        hold.evaluationsPerSimSecond = a.holdEvaluationsPerSimSecond;
-        cost.steppers.push_back(hold);
+        cost.steppers.push_back(makeHoldRow(name, "approx, " + a.constraint, a.holdWallPerSimSecond, a.holdEvaluationsPerSimSecond));
     }
     // The default's hold: the bushing on the linearly implicit stepper (resolveIntegrator).
     const ApproxCost implicitHold = measureApprox(s, simulation::ApproxConstraint::Bushing, duration, realizations,
                                                   simulation::IntegratorChoice::LinearlyImplicit);
-    StepperCost hold;
-    hold.scenario = name;
-    hold.run = "approx, bushing, implicit";
-    hold.wallPerSimSecond = implicitHold.holdWallPerSimSecond;
-    hold.evaluationsPerSimSecond = implicitHold.holdEvaluationsPerSimSecond;
-    cost.steppers.push_back(hold);
-    StepperCost floor;
-    floor.scenario = name;
-    floor.run = "floor";
-    floor.wallPerSimSecond = cost.floorHoldWallPerSimSecond;
-    floor.evaluationsPerSimSecond = cost.floorEvaluationsPerSimSecond;
-    cost.steppers.push_back(floor);
+    cost.steppers.push_back(makeHoldRow(name, "approx, bushing, implicit", implicitHold.holdWallPerSimSecond,
+                                        implicitHold.holdEvaluationsPerSimSecond));
+    cost.steppers.push_back(makeHoldRow(name, "floor", cost.floorHoldWallPerSimSecond, cost.floorEvaluationsPerSimSecond));
     return cost;
 }
 
