@@ -151,6 +151,7 @@ std::string formatConstraintCsv(const simulation::SimulationResult& result) {
     out << "time_s,origin_x_m,origin_y_m,origin_z_m,qw,qx,qy,qz";
     for (const char* axis : kAxes) out << ",limit_" << axis;
     for (const char* axis : kAxes) out << ",reaction_" << axis;
+    for (const char* axis : kAxes) out << ",lower_limit_" << axis;
     out << '\n';
     for (const simulation::ConstraintSample& c : result.constraint) {
         std::ostringstream row;
@@ -159,6 +160,7 @@ std::string formatConstraintCsv(const simulation::SimulationResult& result) {
         for (int k = 0; k < 4; ++k) put(row, q[k]);
         for (int k = 0; k < 6; ++k) put(row, c.limits[k]);
         for (int k = 0; k < 6; ++k) put(row, c.reaction[k]);
+        for (int k = 0; k < 6; ++k) put(row, c.lowerLimits[k]);
         char time[32];
         std::snprintf(time, sizeof time, "%.17g", c.time);
         out << time << row.str() << '\n';

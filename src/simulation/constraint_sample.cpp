@@ -14,6 +14,7 @@ std::optional<ConstraintSample> findConstraintSample(const ApproximationContext&
     sample.time = state.getTime();
     sample.X_GM = context.object.getBodyTransform(state) * c->X_OM;
     sample.limits = c->limits;
+    sample.lowerLimits = c->lowerLimits;
     sample.reaction = c->reaction;
     sample.wrench_G = c->wrench_G;
     return sample;

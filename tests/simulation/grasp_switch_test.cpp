@@ -413,4 +413,10 @@ TEST(GraspSwitch, BallClutchComplianceLimitsAreTwoSidedAndHoldTheWeight) {
     }
     const double gap = findLargestDistanceFrom(approx, approx.summary.engageTime, full.trajectory.back().p_GO);
     EXPECT_LT(gap, 0.002) << "approx object strays " << gap << " m from the full-contact final position";
+    // The result's constraint samples (constraint.csv) report both sides as the bushing holds them.
+    ASSERT_FALSE(approx.constraint.empty());
+    for (int k = 0; k < 6; ++k) {
+        EXPECT_EQ(approx.constraint.back().limits[k], upper[k]) << k;
+        EXPECT_EQ(approx.constraint.back().lowerLimits[k], lower[k]) << k;
+    }
 }

@@ -16,7 +16,9 @@
 /// - constraint.csv (approx runs only): one row per output time while the merged approximation is
 ///   engaged (simulation/constraint_sample.h): time (s), the constraint frame M's origin x, y, z (m,
 ///   ground) and orientation quaternion w, x, y, z, then per axis rx, ry, rz, x, y, z its limit
-///   (N m, N; "inf" on a locked axis) and its reaction on the object (N m, N, along M's axes).
+///   (N m, N; "inf" on a locked axis; the upper side of two-sided limits), its reaction on the
+///   object (N m, N, along M's axes), and its lower limit (the reaction stays >= -lower_limit;
+///   equal to the limit for symmetric limits).
 /// Each file is written whole to a temporary name and renamed, so a crash never leaves half a file.
 
 #include "graspsim/simulation/grasp_simulation.h"

@@ -19,8 +19,10 @@ struct ConstraintSample {
     double time = 0;              ///< s
     SimTK::Transform X_GM;        ///< pose of the constraint frame M (on the object) in ground (m)
     /// limits in force (N m for 0-2, N for 3-5); +Infinity on locked axes. For two-sided limits
-    /// (--limits compliance) the upper sides; the lower ones are in the engage event's text.
+    /// (--limits compliance) the upper sides: the reaction stays <= limits.
     SimTK::Vec6 limits{0};
+    /// The lower sides (the reaction stays >= -lowerLimits); equal to `limits` for symmetric ones.
+    SimTK::Vec6 lowerLimits{0};
     SimTK::Vec6 reaction{0};      ///< generalized reaction on the object along M's axes (N m, N)
     SimTK::SpatialVec wrench_G;   ///< the same as a spatial force on the object (moment about M's origin, N m; force, N), in ground
 };
