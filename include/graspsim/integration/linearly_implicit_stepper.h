@@ -77,6 +77,7 @@ class StepMatrix;  // src/integration/step_matrix.h
 class NMatrix;     // src/integration/n_matrix.h
 class DenseOutput;  // src/integration/dense_output.h
 class StepSizeControl;  // src/integration/step_size_control.h
+class SwitchLocalization;  // src/integration/switch_localization.h
 
 class LinearlyImplicitStepper : public Stepper {
 public:
@@ -118,7 +119,6 @@ private:
                          const std::vector<double>& b1, const std::vector<double>& b2, const std::vector<double>& u0) const;
     void setState(double t, const SimTK::Vector& q, const SimTK::Vector& u, const SimTK::Vector& z);
     void handleResults(const SimTK::HandleEventsResults& results);
-    SimTK::Array_<SimTK::EventId> findTriggeredEvents() const;
 
     const SimTK::MultibodySystem& system_;
     std::vector<const ForceJacobianContributor*> contributors_;
@@ -146,6 +146,10 @@ private:
     // the step must see the state before that event: such a step is taken again, ending there).
     std::unique_ptr<DenseOutput> dense_;
     std::unique_ptr<StepSizeControl> stepSizes_;  // error control only
+    // Error control only: where a step lost an active term, bisected down to a window.
+    std::unique_ptr<SwitchLocalization> switches_;
+    std::vector<int> endSet_;  // the active set at the last step's end
+    bool switchCrossed_ = false;
     bool outputInterpolated_ = false;
     double eventHorizon_ = SimTK::Infinity;
     bool redo_ = false;
