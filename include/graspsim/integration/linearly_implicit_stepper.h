@@ -37,6 +37,13 @@
 /// tolerance); a step that passes an output time and triggers is taken again, ending there. A
 /// handler's change needs no restart (a one-step method keeps no history): the next step starts
 /// from the changed state. Auto-update discrete variables are updated after every step.
+///
+/// Switches (error control): a step at whose end a term of the contributors' active set that was
+/// active at its start is gone (a contact starts sliding or lets go) is taken again, bisecting
+/// toward the switch down to Simbody's event localization window (accuracy x the System's time
+/// scale x 0.1): the matrix kept that term's stiffness past the switch, where the error estimate
+/// cannot see it. Landing times: the step that ends on one sees the inputs from the left there
+/// (the jump belongs to the next step), and the steps after it start again from that window.
 
 #include "graspsim/integration/force_jacobian.h"
 #include "graspsim/integration/stepper.h"
@@ -68,6 +75,8 @@ struct LinearlyImplicitOptions {
     /// Times (s, finite) the steps end on exactly when they interpolate: where the inputs jump (a
     /// perturbation force switched on or off), so that no step straddles a discontinuity. Without
     /// interpolation the steps end on every stepTo() time, which the callers put at these times.
+    /// A step ending on one evaluates its second stage just before it; with error control the
+    /// steps after one start again from the switch localization window (see the file comment).
     std::vector<double> landingTimes;
 };
 
