@@ -123,7 +123,8 @@ void CompliantContactJacobian::appendActiveSet(const SimTK::State& state, std::v
     for (const ContactReport& report : contacts_.getEvaluatedContacts(state)) {
         if (report.normalForce <= 0) continue;
         const bool sticking = report.slipVelocity_G.norm() < parameters_[report.pairIndex].transitionVelocity;
-        active.push_back(2 * report.pairIndex + (sticking ? 1 : 0));
+        active.push_back(2 * report.pairIndex);
+        if (sticking) active.push_back(2 * report.pairIndex + 1);
     }
 }
 

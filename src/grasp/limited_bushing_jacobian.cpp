@@ -61,7 +61,7 @@ void LimitedBushingJacobian::appendActiveSet(const SimTK::State& state, std::vec
     if (!bushing_.isEnabled(state)) return;
     active.push_back(0);
     for (int k = 0; k < 6; ++k) {
-        if (bushing_.isSliding(state, static_cast<BushingAxis>(k))) active.push_back(1 + k);
+        if (!bushing_.isSliding(state, static_cast<BushingAxis>(k))) active.push_back(1 + k);
     }
 }
 

@@ -5,6 +5,8 @@
 #include "scheduled_times.h"
 #include "step_matrix.h"
 #include "step_size_control.h"
+#include "switch_localization.h"
+#include "trigger_crossings.h"
 
 #include "graspsim/error.h"
 
@@ -41,20 +43,14 @@ void checkOptions(const LinearlyImplicitOptions& o) {
 
 std::string timeText(const SimTK::State& s) { return "t = " + std::to_string(s.getTime()) + " s"; }
 
-// Whether a trigger going from `before` to `after` crosses zero in a direction `info` asks for.
-bool isCrossing(const SimTK::EventTriggerInfo& info, double before, double after) {
-    if (before == 0 || (before > 0) == (after > 0)) return false;
-    if (after == 0 && before > 0) return info.shouldTriggerOnFallingSignTransition();
-    return after > before ? info.shouldTriggerOnRisingSignTransition() : info.shouldTriggerOnFallingSignTransition();
-}
-
 }  // namespace
 
 LinearlyImplicitStepper::LinearlyImplicitStepper(const SimTK::MultibodySystem& system,
                                                  std::vector<const ForceJacobianContributor*> contributors,
                                                  const LinearlyImplicitOptions& options)
     : system_(system), contributors_(std::move(contributors)), options_(options), n0_(std::make_unique<NMatrix>()),
-      dense_(std::make_unique<DenseOutput>()), stepSizes_(std::make_unique<StepSizeControl>(options.stepSize)) {
+      dense_(std::make_unique<DenseOutput>()), stepSizes_(std::make_unique<StepSizeControl>(options.stepSize)),
+      switches_(std::make_unique<SwitchLocalization>(SwitchLocalization::findWindow(system, options.accuracy))) {
     checkOptions(options_);
     std::sort(options_.landingTimes.begin(), options_.landingTimes.end());
 }
@@ -88,6 +84,7 @@ void LinearlyImplicitStepper::initialize(const SimTK::State& initial) {
     system_.calcEventTriggerInfo(state_, triggerInfo_);
     triggers_ = state_.getEventTriggers();
     dense_->initialize(state_);
+    switches_->clear();
     stepsAtInitialize_ = steps_;
     massMatrixTime_ = -SimTK::Infinity;
     matrixStale_ = true;
@@ -214,22 +211,28 @@ void LinearlyImplicitStepper::advanceControlled(double tStop) {
 }
 
 // One accepted step toward tStop (rejected ones taken again); true if its end triggered an event.
-// A step past eventHorizon_ whose end triggers one is taken again, ending on the horizon.
+// A step past eventHorizon_ whose end triggers one is taken again, ending on the horizon; one that
+// loses an active term is taken again shorter (switch_localization.h). After a landing time (a
+// jump in the inputs) the steps start again from the localization window, as after a switch.
 bool LinearlyImplicitStepper::takeControlledStep(double tStop) {
     for (;;) {
         const double t = state_.getTime(), remaining = tStop - t;
-        const double h = stepSizes_->findStepToStop(remaining);
+        const double h = switches_->limitStep(t, stepSizes_->findStepToStop(remaining));
         const SimTK::Vector q = state_.getQ(), u = state_.getU(), z = state_.getZ();
         if (interpolates()) dense_->captureStart(state_);
         double error = 0;
         if (takeStep(h, error)) return true;
-        if (redo_) {
-            redo_ = false;
-            tStop = eventHorizon_;
+        if (redo_ || switchCrossed_) {
+            if (redo_) tStop = eventHorizon_;
+            rejectedSteps_ += switchCrossed_ ? 1 : 0;
+            redo_ = switchCrossed_ = false;
             restoreStepStart(t, q, u, z);
             continue;
         }
-        if (stepSizes_->acceptStep(h, error)) return false;
+        if (stepSizes_->acceptStep(h, error)) {
+            if (state_.getTime() >= findNextLanding(t)) stepSizes_->restart(switches_->getWindow());
+            return false;
+        }
         matrixStale_ = true;
         ++rejectedSteps_;
         restoreStepStart(t, q, u, z);
@@ -272,15 +275,23 @@ std::vector<double> addScaled(const std::vector<double>& a, double s, const std:
 
 // One step of size h (see the header); `error` receives its error estimate (weighted RMS
 // against the accuracy; 0 for Euler). True if the step's end triggered an event (handled); a
-// step about to be rejected (error > 1 under error control) is not looked at for events, and one
-// that ends past eventHorizon_ and triggers sets redo_ instead (the caller takes it again).
+// step about to be rejected (error > 1 under error control) is not looked at for events, one that
+// loses an active term sets switchCrossed_, and one that ends past eventHorizon_ and triggers sets
+// redo_ instead (the caller takes them again).
 bool LinearlyImplicitStepper::takeStep(double h, double& error) {
+    const double t0 = state_.getTime();
     error = options_.order == 2 ? takeRosenbrockStep(h) : (takeEulerStep(h), 0.0);
     project(state_);
     system_.realize(state_, SimTK::Stage::Acceleration);
     ++evaluations_;
     if (options_.accuracy > 0 && error > 1 && h > StepSizeControl::kMinStepSize) return false;
-    const SimTK::Array_<SimTK::EventId> triggered = findTriggeredEvents();
+    if (options_.accuracy > 0) {
+        endSet_.clear();
+        for (const ForceJacobianContributor* c : contributors_) c->appendActiveSet(state_, endSet_);
+        switchCrossed_ = SwitchLocalization::losesTerm(activeSet_, endSet_) && switches_->crossed(t0, h);
+        if (switchCrossed_) return false;
+    }
+    const SimTK::Array_<SimTK::EventId> triggered = findTriggeredEvents(triggerInfo_, triggers_, state_.getEventTriggers());
     if (!triggered.empty() && state_.getTime() > eventHorizon_) {
         redo_ = true;
         return false;
@@ -325,7 +336,10 @@ void LinearlyImplicitStepper::takeEulerStep(double h) {
 // which reduces to (M - g D - g^2 K) b = M r2 + g K r1, a = r1 + g b:
 //   stage 1: r = F(y0);                 stage 2: r = F(y0 + h k1) - 2 k1;
 //   y1 = y0 + h (3/2 k1 + 1/2 k2).
-// Z variables get the explicit two-stage (Heun) form of the same tableau.
+// Z variables get the explicit two-stage (Heun) form of the same tableau. A step that ends on a
+// landing time evaluates its second stage just before it: the inputs' jump there belongs to the
+// next step (evaluated at the landing time itself, its force at the step's end was on for half of
+// the step's weight, the load in effect starting half a step early).
 double LinearlyImplicitStepper::takeRosenbrockStep(double h) {
     const double gamma = 1 + 1 / std::sqrt(2.0), g = gamma * h;
     const SimTK::SimbodyMatterSubsystem& matter = system_.getMatterSubsystem();
@@ -339,7 +353,9 @@ double LinearlyImplicitStepper::takeRosenbrockStep(double h) {
     SimTK::Vector qdot1, qdot2;
     matter.multiplyByN(state_, false, toSimTK(a1), qdot1);  // N(q0) a1
     n0_->capture(matter, state_);                           // N(q0) for a2, after stage 2 moved the State
-    setState(t0 + h, q0 + h * qdot1, toSimTK(addScaled(u0, h, b1)), z0 + h * zdot0);
+    const double landing = findNextLanding(t0), t1 = t0 + h;
+    const bool endsOnLanding = landing <= t1 && t1 - landing <= 1e-12 * std::max(1.0, std::abs(t1));
+    setState(endsOnLanding ? std::nextafter(landing, t0) : t1, q0 + h * qdot1, toSimTK(addScaled(u0, h, b1)), z0 + h * zdot0);
     system_.realize(state_, SimTK::Stage::Acceleration);
     ++evaluations_;
     const SimTK::Vector zdot2 = state_.getZDot();
@@ -373,7 +389,7 @@ const StepMatrix& LinearlyImplicitStepper::findStepMatrix(double g) {
         massMatrixTime_ = t;
     }
     matrixTime_ = t;
-    matrixActiveSet_.swap(activeSet_);
+    matrixActiveSet_ = activeSet_;  // activeSet_ stays the step start's, for losesTerm
     matrixStale_ = false;
     ++matrixBuilds_;
     return *matrix_;
@@ -432,17 +448,6 @@ void LinearlyImplicitStepper::setState(double t, const SimTK::Vector& q, const S
     state_.updQ() = q;
     state_.updU() = u;
     state_.updZ() = z;
-}
-
-// The events whose triggers changed sign over the last step, in a direction they ask for.
-SimTK::Array_<SimTK::EventId> LinearlyImplicitStepper::findTriggeredEvents() const {
-    SimTK::Array_<SimTK::EventId> events;
-    const SimTK::Vector& now = state_.getEventTriggers();
-    if (now.size() != triggers_.size()) return events;
-    for (int i = 0; i < now.size(); ++i) {
-        if (isCrossing(triggerInfo_[i], triggers_[i], now[i])) events.push_back(triggerInfo_[i].getEventId());
-    }
-    return events;
 }
 
 // After any handler: realize the (possibly changed) state again and take its triggers as the

@@ -39,4 +39,9 @@ bool StepSizeControl::acceptStep(double h, double error) {
     return false;
 }
 
+void StepSizeControl::restart(double h) {
+    next_ = h;
+    justRejected_ = false;
+}
+
 }  // namespace graspsim::integration

@@ -15,6 +15,9 @@ public:
     // After a step of h (s) whose error estimate (in units of the accuracy) is `error`: true if it
     // is accepted (error <= 1, or h at most kMinStepSize); either way the next proposal follows.
     bool acceptStep(double h, double error);
+    // After a jump in the inputs (a landing time): the next step is `h` (s, > 0), growing from there
+    // by the error's rule, as the first steps after a localized switch do.
+    void restart(double h);
 
     static constexpr double kMinStepSize = 1e-8;  // s; a step this short is accepted whatever its error
 

@@ -61,5 +61,16 @@ TEST(StepSizeControl, AStepTakenAgainAfterARejectionIsShorter) {
     EXPECT_NEAR(again, rejected * 0.9 / std::sqrt(1.07), 1e-15);  // the proposal, not stretched
 }
 
+// After a landing time the proposal starts again from the step given, then grows by the rule.
+TEST(StepSizeControl, ARestartProposesItsStepAndGrowsFromThere) {
+    StepSizeControl control = makeWithProposal(kCap);
+    EXPECT_FALSE(control.acceptStep(kCap, 4));  // a rejection: growth would be held back
+    control.restart(1e-5);
+    EXPECT_NEAR(control.getProposal(), 1e-5, 1e-18);
+    EXPECT_NEAR(control.findStepToStop(10e-3), 1e-5, 1e-18);
+    EXPECT_TRUE(control.acceptStep(1e-5, 1e-6));
+    EXPECT_NEAR(control.getProposal(), 5e-5, 1e-18);  // grows 5x: the restart cleared the rejection
+}
+
 }  // namespace
 }  // namespace graspsim::integration

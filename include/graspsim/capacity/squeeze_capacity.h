@@ -25,9 +25,8 @@ struct SqueezeCase {
     double transitionVelocity = 1e-3;  ///< m/s, compliant friction's transition speed
     bool rigid = false;          ///< rigid (Coulomb, PGS time stepper) or compliant (Hunt-Crossley) contact
     SqueezeIntegrator integrator = SqueezeIntegrator::Reference;  ///< compliant contact only
-    /// s, the linearly implicit stepper's longest step (a scenario's default, 5 ms). Its first step
-    /// after a load that jumps on is this long (nothing moved before), and across the friction's
-    /// saturation its error estimate does not shorten it (docs/capacity.md, "Constant loads above capacity").
+    /// s, the linearly implicit stepper's longest step (a scenario's default, 5 ms; the slide
+    /// times at this cap: docs/capacity.md, "Constant loads above capacity").
     double implicitStepCap = 5e-3;
     /// The Coulomb holding capacity, 2 mu N (N).
     double findLimit() const { return 2 * mu * press; }

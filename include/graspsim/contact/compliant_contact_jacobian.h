@@ -33,8 +33,9 @@ public:
     CompliantContactJacobian(const SimTK::SimbodyMatterSubsystem& matter, const CompliantContactForce& contacts,
                              bool withStiffness = true);
     void addForceJacobians(const SimTK::State& state, SimTK::Matrix& D, SimTK::Matrix& K) const override;
-    /// Per contact point that pushes (f_n > 0), in the element's order: 2 pairIndex + 1 if it
-    /// sticks (slip speed below the pair's transition velocity), 2 pairIndex if it slides.
+    /// Per contact point that pushes (f_n > 0), in the element's order: 2 pairIndex (the normal
+    /// force's stiffness), then 2 pairIndex + 1 if it sticks (slip speed below the pair's transition
+    /// velocity: the friction's steep slope), so starting to slide drops a term.
     void appendActiveSet(const SimTK::State& state, std::vector<int>& active) const override;
 
 private:

@@ -30,7 +30,8 @@ public:
     LimitedBushingJacobian(const SimTK::SimbodyMatterSubsystem& matter, const LimitedBushing& bushing,
                            const SimTK::MobilizedBody& bodyH, const SimTK::MobilizedBody& bodyO);
     void addForceJacobians(const SimTK::State& state, SimTK::Matrix& D, SimTK::Matrix& K) const override;
-    /// 0 when enabled, then 1 + k for every sliding axis k; nothing when disabled.
+    /// 0 when enabled, then 1 + k for every axis k that holds (does not slide: its stiffness is in
+    /// K); nothing when disabled.
     void appendActiveSet(const SimTK::State& state, std::vector<int>& active) const override;
 
 private:

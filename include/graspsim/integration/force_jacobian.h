@@ -26,10 +26,13 @@ public:
     /// storage, so an element may write through updContiguousScalarData()) at `state`, realized through
     /// Stage::Velocity (Acceleration where the stepper calls it).
     virtual void addForceJacobians(const SimTK::State& state, SimTK::Matrix& D, SimTK::Matrix& K) const = 0;
-    /// Appends identifiers of the terms active at `state` (contact points pushing, limit stops
-    /// engaged; same realization as addForceJacobians): between two states with equal lists this
-    /// element's D and K change smoothly, so a stepper may keep them for a while; a change in the
-    /// list is a jump in structure and calls for new ones. The default: no such terms.
+    /// Appends identifiers of the stiff terms active at `state` (contact points pushing, sticking
+    /// friction, limit stops engaged; same realization as addForceJacobians): between two states
+    /// with equal lists this element's D and K change smoothly, so a stepper may keep them for a
+    /// while; a change in the list is a jump in structure and calls for new ones. A term that is
+    /// gone at a step's end (a contact starts sliding or lets go) is a switch the stepper localizes
+    /// (its matrix carried the term's stiffness past it); one that appears is not. The default: no
+    /// such terms.
     virtual void appendActiveSet(const SimTK::State& state, std::vector<int>& active) const {
         static_cast<void>(state);
         static_cast<void>(active);

@@ -37,6 +37,13 @@
 /// tolerance); a step that passes an output time and triggers is taken again, ending there. A
 /// handler's change needs no restart (a one-step method keeps no history): the next step starts
 /// from the changed state. Auto-update discrete variables are updated after every step.
+///
+/// Switches (error control): a step at whose end a term of the contributors' active set that was
+/// active at its start is gone (a contact starts sliding or lets go) is taken again, bisecting
+/// toward the switch down to Simbody's event localization window (accuracy x the System's time
+/// scale x 0.1): the matrix kept that term's stiffness past the switch, where the error estimate
+/// cannot see it. Landing times: the step that ends on one sees the inputs from the left there
+/// (the jump belongs to the next step), and the steps after it start again from that window.
 
 #include "graspsim/integration/force_jacobian.h"
 #include "graspsim/integration/stepper.h"
@@ -68,6 +75,8 @@ struct LinearlyImplicitOptions {
     /// Times (s, finite) the steps end on exactly when they interpolate: where the inputs jump (a
     /// perturbation force switched on or off), so that no step straddles a discontinuity. Without
     /// interpolation the steps end on every stepTo() time, which the callers put at these times.
+    /// A step ending on one evaluates its second stage just before it; with error control the
+    /// steps after one start again from the switch localization window (see the file comment).
     std::vector<double> landingTimes;
 };
 
@@ -77,6 +86,7 @@ class StepMatrix;  // src/integration/step_matrix.h
 class NMatrix;     // src/integration/n_matrix.h
 class DenseOutput;  // src/integration/dense_output.h
 class StepSizeControl;  // src/integration/step_size_control.h
+class SwitchLocalization;  // src/integration/switch_localization.h
 
 class LinearlyImplicitStepper : public Stepper {
 public:
@@ -118,7 +128,6 @@ private:
                          const std::vector<double>& b1, const std::vector<double>& b2, const std::vector<double>& u0) const;
     void setState(double t, const SimTK::Vector& q, const SimTK::Vector& u, const SimTK::Vector& z);
     void handleResults(const SimTK::HandleEventsResults& results);
-    SimTK::Array_<SimTK::EventId> findTriggeredEvents() const;
 
     const SimTK::MultibodySystem& system_;
     std::vector<const ForceJacobianContributor*> contributors_;
@@ -146,6 +155,10 @@ private:
     // the step must see the state before that event: such a step is taken again, ending there).
     std::unique_ptr<DenseOutput> dense_;
     std::unique_ptr<StepSizeControl> stepSizes_;  // error control only
+    // Error control only: where a step lost an active term, bisected down to a window.
+    std::unique_ptr<SwitchLocalization> switches_;
+    std::vector<int> endSet_;  // the active set at the last step's end
+    bool switchCrossed_ = false;
     bool outputInterpolated_ = false;
     double eventHorizon_ = SimTK::Infinity;
     bool redo_ = false;

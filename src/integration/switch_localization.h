@@ -1,0 +1,44 @@
+#pragma once
+// Where a force element switches regime inside a step: a term of the Jacobian contributors' active
+// set (ForceJacobianContributor::appendActiveSet) that was active at the step's start is gone at
+// its end (a contact starts sliding or stops pushing, a limit stop disengages). ROS2's two stages
+// and its embedded first-order solution share the start's matrix W, which keeps that term's
+// stiffness past the switch, and the second stage rarely lands beyond it: the error estimate
+// cannot see the switch (a box pulled loose from sticking friction ended a 5 ms step near the
+// sticking law's viscous equilibrium, its estimate 0.006 of the accuracy). So such a step is taken
+// again, bisecting toward the switch, until one that crosses it is no longer than the window.
+// Terms that appear (a contact touching, sliding turning to sticking) are not localized: the step
+// treats them explicitly, and their force shows in the second stage and the error estimate.
+
+#include "graspsim/simbody.h"
+
+#include <vector>
+
+namespace graspsim::integration {
+
+class SwitchLocalization {
+public:
+    // A switch is localized to within `window` (s, > 0).
+    explicit SwitchLocalization(double window) : window_(window) {}
+    // Simbody's event localization window for an integrator at `accuracy`: accuracy x the
+    // System's time scale x an event trigger's default window (0.1 of the time scale); 10 us at
+    // accuracy 1e-3 and the default time scale 0.1 s.
+    static double findWindow(const SimTK::System& system, double accuracy);
+    // Whether a term of `start` is missing from `end` (both as appended by the contributors).
+    static bool losesTerm(const std::vector<int>& start, const std::vector<int>& end);
+
+    double getWindow() const { return window_; }
+    // The step from t (s), at most h (s): with a switch bracketed ahead, half the way to the
+    // bracket's end while that is longer than the window, else the rest of the way.
+    double limitStep(double t, double h) const;
+    // After a step of h from t that lost a term: true if it is to be taken again (the switch is now
+    // bracketed in (t, t + h]); false when h is within the window (localized: the step stands).
+    bool crossed(double t, double h);
+    void clear() { end_ = -SimTK::Infinity; }
+
+private:
+    double window_;
+    double end_ = -SimTK::Infinity;  // s, the bracket's end; none once passed
+};
+
+}  // namespace graspsim::integration

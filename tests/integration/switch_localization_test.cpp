@@ -1,0 +1,61 @@
+// Localizing a force's switch of regime (src/integration/switch_localization.h): the oracle is the
+// documented rule itself (bisection to a window) and Simbody's event localization window.
+#include "switch_localization.h"
+
+#include <gtest/gtest.h>
+
+namespace graspsim::integration {
+namespace {
+
+TEST(SwitchLocalization, ATermLostIsASwitchATermGainedIsNot) {
+    EXPECT_FALSE(SwitchLocalization::losesTerm({4, 5}, {4, 5}));
+    EXPECT_FALSE(SwitchLocalization::losesTerm({4}, {4, 5}));     // starts sticking
+    EXPECT_FALSE(SwitchLocalization::losesTerm({}, {2}));         // touches
+    EXPECT_TRUE(SwitchLocalization::losesTerm({4, 5}, {4}));      // starts sliding
+    EXPECT_TRUE(SwitchLocalization::losesTerm({2, 4, 5}, {4, 5}));  // lets go
+    EXPECT_FALSE(SwitchLocalization::losesTerm({5, 4, 2}, {2, 4, 5, 7}));  // order does not matter
+}
+
+TEST(SwitchLocalization, TheWindowIsSimbodysEventWindow) {
+    SimTK::MultibodySystem system;
+    SimTK::SimbodyMatterSubsystem matter(system);
+    EXPECT_NEAR(SwitchLocalization::findWindow(system, 1e-3), 1e-5, 1e-18);  // 1e-3 x 0.1 s x 0.1
+    system.setDefaultTimeScale(0.5);
+    EXPECT_NEAR(SwitchLocalization::findWindow(system, 1e-3), 5e-5, 1e-18);
+}
+
+// A 5 ms step from t = 0 crosses a switch at 3.3 ms: the steps halve the bracket (0, 5 ms] until
+// it is no longer than the window, keeping the steps that fall short of the switch.
+TEST(SwitchLocalization, BisectsTowardTheSwitchDownToTheWindow) {
+    constexpr double kSwitch = 3.3e-3, kWindow = 1e-5, kCap = 5e-3;
+    SwitchLocalization switches(kWindow);
+    double t = 0, h = switches.limitStep(t, kCap);
+    EXPECT_EQ(h, kCap);  // nothing bracketed
+    int attempts = 0;
+    for (;; ++attempts) {
+        ASSERT_LT(attempts, 20);
+        if (t + h >= kSwitch) {
+            if (!switches.crossed(t, h)) break;
+        } else {
+            t += h;
+        }
+        h = switches.limitStep(t, kCap);
+    }
+    EXPECT_LE(h, kWindow);
+    EXPECT_LE(t, kSwitch);
+    EXPECT_GE(t + h, kSwitch);
+    EXPECT_LE(attempts, 10);  // log2(5 ms / 10 us) = 9
+    EXPECT_EQ(switches.limitStep(t + h, kCap), kCap);  // the bracket passed: free again
+}
+
+TEST(SwitchLocalization, AShorterProposalStandsAndClearForgetsTheBracket) {
+    SwitchLocalization switches(1e-5);
+    EXPECT_TRUE(switches.crossed(0, 4e-3));
+    EXPECT_EQ(switches.limitStep(0, 1e-3), 1e-3);  // shorter than half the bracket
+    EXPECT_EQ(switches.limitStep(0, 5e-3), 2e-3);
+    switches.clear();
+    EXPECT_EQ(switches.limitStep(0, 5e-3), 5e-3);
+}
+
+}  // namespace
+}  // namespace graspsim::integration
