@@ -139,9 +139,11 @@ int ValidateCommand::run() const {
         std::cerr << "FAIL " << c.run << ": " << c.name << " = " << c.value << " " << c.unit << " (bound " << c.relation << " "
                   << c.bound << ")\n";
     }
+    std::size_t constantLoads = 0;
+    for (const validation::CapacityRow& row : results.capacity) constantLoads += row.overload.method.empty() ? 0 : 1;
     std::cout << "validation: " << results.runs.size() << " runs, " << results.checks.size() << " checks, " << failed
-              << " failed, " << results.capacity.size() << " capacity ramps, " << plots.size() << " plots; report in " << o.out
-              << "/report.md\n";
+              << " failed, " << results.capacity.size() << " capacity ramps, " << constantLoads << " constant loads, "
+              << plots.size() << " plots; report in " << o.out << "/report.md\n";
     return failed == 0 ? 0 : 4;
 }
 
