@@ -86,10 +86,16 @@ void runOverload(const scenario::Scenario& scenario, const Load& load, const Cap
     row.overloadTimeDifference = (f.slipOnsetTime - reference.slipOnsetTime) / reference.slipOnsetTime;
 }
 
+// Why a run stopped before its object slipped: the approximation not engaged when the load began
+// (capacity::makeGraspRuns refuses to load it), or the integrator's failure.
+std::string describeFailure(const std::string& failure) {
+    return failure.find("not engaged") != std::string::npos ? "not engaged at the load's start" : "failed (integrator)";
+}
+
 std::string describeSlip(const CapacityRow& row) {
     const capacity::CapacityFigures& f = row.measured.trace.figures;
     const std::string unit = row.measured.torque ? " N m" : " N";
-    if (!row.measured.trace.failure.empty() && !f.slipped) return "failed (integrator)";
+    if (!row.measured.trace.failure.empty() && !f.slipped) return describeFailure(row.measured.trace.failure);
     if (!f.slipped) return "no slip";
     std::string text = formatBriefNumber(f.slipOnsetLoad) + unit;
     if (row.hasReference) text += " (" + std::string(row.relativeDifference >= 0 ? "+" : "") + formatBriefNumber(100 * row.relativeDifference) + " %)";
@@ -101,7 +107,7 @@ std::string describeSlip(const CapacityRow& row) {
 std::string describeOverload(const CapacityRow& row) {
     if (row.overload.method.empty()) return "-";
     const capacity::OverloadFigures f = findOverloadTimes(row.overload);
-    if (!row.overload.trace.failure.empty() && !f.slipped) return "failed (integrator)";
+    if (!row.overload.trace.failure.empty() && !f.slipped) return describeFailure(row.overload.trace.failure);
     if (!f.slipped) return "no slip";
     std::string text = formatBriefNumber(1000 * f.slipOnsetTime) + " ms";
     if (row.hasOverloadReference) {
