@@ -4,7 +4,8 @@
 Issue 17 (docs/capacity.md, "Constant loads above capacity"). For each thesis scenario and each load
 (six axis forces, three axis torques): full contact's ramp slip onset F, then a constant load of
 1.25 F held 1 s in full contact, on the default approximation (bushing, merged, thesis limits) and
-with the compliance limits, all on the linearly implicit stepper at 3e-4 (`graspsim capacity`).
+with the compliance limits and with the thesis limits released at the compliance model's limits
+(`--release-at compliance`), all on the linearly implicit stepper at 3e-4 (`graspsim capacity`).
 
 Usage: analysis/overload_times.py [GRASPSIM [OUT]]   (default build/bin/graspsim, out/overload)
 Prints one Markdown table per scenario; every run's capacity.json/.csv stays under OUT.
@@ -17,7 +18,8 @@ GRASPSIM = sys.argv[1] if len(sys.argv) > 1 else "build/bin/graspsim"
 OUT = sys.argv[2] if len(sys.argv) > 2 else "out/overload"
 COMMON = ["--integrator", "implicit", "--accuracy", "3e-4"]
 FACTOR = 1.25
-VARIANTS = [("full", []), ("approx", ["--mode", "approx"]), ("compliance", ["--mode", "approx", "--limits", "compliance"])]
+VARIANTS = [("full", []), ("approx", ["--mode", "approx"]), ("compliance", ["--mode", "approx", "--limits", "compliance"]),
+            ("release", ["--mode", "approx", "--release-at", "compliance"])]
 
 
 def measure(scenario, args, out):
@@ -46,8 +48,8 @@ def difference(m, full):
 
 for scenario in ["ball-clutch", "phone-pinch"]:
     print("#### %s\n" % scenario)
-    print("| load | ramp onset | constant load | full | approx | diff | approx, compliance limits | diff |")
-    print("|---|---|---|---|---|---|---|---|")
+    print("| load | ramp onset | constant load | full | approx | diff | approx, compliance limits | diff | approx, release at compliance | diff |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
     for name in ["x", "-x", "y", "-y", "z", "-z", "torque x", "torque y", "torque z"]:
         torque = name.startswith("torque ")
         args = ["--direction", name.split()[-1]] + (["--torque"] if torque else [])
@@ -55,11 +57,12 @@ for scenario in ["ball-clutch", "phone-pinch"]:
         folder = "%s/%s/%s" % (OUT, scenario, name.replace(" ", "-"))
         onset = measure(scenario, args, folder + "/ramp")["slip_onset_" + unit]
         if onset is None:
-            print("| %s | no slip | | | | | | |" % name)
+            print("| %s | no slip | | | | | | | | |" % name)
             continue
         load = "%.6g" % (FACTOR * onset)
         runs = {v: measure(scenario, args + ["--method", "constant", "--load", load] + extra, folder + "/" + v) for v, extra in VARIANTS}
-        print("| %s | %.4g | %s | %s | %s | %s | %s | %s |" % (
+        print("| %s | %.4g | %s | %s | %s | %s | %s | %s | %s | %s |" % (
             name, onset, load, cell(runs["full"]), cell(runs["approx"]), difference(runs["approx"], runs["full"]),
-            cell(runs["compliance"]), difference(runs["compliance"], runs["full"])))
+            cell(runs["compliance"]), difference(runs["compliance"], runs["full"]),
+            cell(runs["release"]), difference(runs["release"], runs["full"])))
     print()

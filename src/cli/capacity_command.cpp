@@ -38,6 +38,7 @@ struct CapacityCommand::Options {
     std::string qMinimum;
     std::string limitsFriction;
     std::string limits = "thesis";
+    std::string releaseAt = "none";
     std::string accuracy;
     std::string integrator = "auto";
     std::string stepSize;
@@ -95,6 +96,9 @@ CapacityCommand::CapacityCommand(CLI::App& app) : options_(std::make_shared<Opti
     command_->add_option("--limits", o.limits,
                          "approx: the constraint's friction limits, thesis (default: one box), contact (per axis) or "
                          "compliance (two-sided per axis, from the grasp's compliance model; bushing, merged)");
+    command_->add_option("--release-at", o.releaseAt,
+                         "approx: an extra release rule, none (default) or compliance (release once the constraint's "
+                         "reaction reaches the grasp's compliance-model limit on any axis side; bushing, merged)");
     command_->add_option("--out", o.out, "output folder; receives capacity.json and capacity.csv (default: none written)");
 }
 
@@ -183,6 +187,7 @@ CapacityCommand::Plan CapacityCommand::makePlan() const {
     }
     if (!o.limitsFriction.empty()) plan.simulation.approx.staticFrictionLimits = o.limitsFriction == "static";
     plan.simulation.approx.limitModel = grasp::parseFrictionLimitModel(o.limits, "--limits");
+    plan.simulation.approx.releaseTrigger = simulation::parseApproxReleaseTrigger(o.releaseAt, "--release-at");
     if (o.method != "ramp" && o.method != "bisection" && o.method != "constant" && o.method != "compliance") {
         throw InputError("--method: value '" + o.method + "' is not accepted; use ramp, bisection, constant or compliance");
     }

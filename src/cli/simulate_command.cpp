@@ -36,6 +36,7 @@ struct SimulateCommand::Options {
     std::string stepSize;
     std::string qThreshold, qMinimum;
     std::string limits = "thesis";
+    std::string releaseAt = "none";
     std::string out = "out";
     bool view = false;
     bool quiet = false;
@@ -71,6 +72,9 @@ SimulateCommand::SimulateCommand(CLI::App& app) : options_(std::make_shared<Opti
                          "approx: the constraint's friction limits, thesis (default: one box, eq. 4.1-4.3), contact "
                          "(per axis, from each contact's normal and position) or compliance (two-sided per axis, "
                          "from the grasp's compliance model; bushing, merged)");
+    command_->add_option("--release-at", o.releaseAt,
+                         "approx: an extra release rule, none (default) or compliance (release once the constraint's "
+                         "reaction reaches the grasp's compliance-model limit on any axis side; bushing, merged)");
     command_->add_option("--out", o.out,
                          "output folder (default out); receives trajectory.csv, contacts.csv, summary.json, scenario.yaml, "
                          "model.urdf, provenance.json (and events.csv, constraint.csv in approx mode), and for OpenSim "
@@ -152,6 +156,7 @@ simulation::SimulationOptions SimulateCommand::parseOptions() const {
     options.approx.qThreshold = parseQuality(o.qThreshold, "--q-threshold");
     options.approx.qMinimum = parseQuality(o.qMinimum, "--q-minimum");
     options.approx.limitModel = grasp::parseFrictionLimitModel(o.limits, "--limits");
+    options.approx.releaseTrigger = simulation::parseApproxReleaseTrigger(o.releaseAt, "--release-at");
     if (options.approx.qThreshold > 0 && options.approx.qMinimum >= options.approx.qThreshold) {
         throw InputError("--q-minimum: value " + o.qMinimum + " is not accepted; Q_M must be below --q-threshold " + o.qThreshold);
     }
@@ -192,6 +197,9 @@ results::RunProvenance makeRunProvenance(const std::vector<std::string>& command
         run.run["q_threshold_n"] = formatOverride(options.approx.qThreshold);
         run.run["q_minimum_n"] = formatOverride(options.approx.qMinimum);
         run.run["limits"] = grasp::toString(options.approx.limitModel);
+        if (options.approx.releaseTrigger != simulation::ApproxReleaseTrigger::None) {
+            run.run["release_at"] = simulation::toString(options.approx.releaseTrigger);
+        }
     }
     return run;
 }

@@ -93,6 +93,7 @@ GraspApproximation::GraspApproximation(GraspScene& scene, const ApproxOptions& o
     switch_ = new GraspSwitch(*context_, model.updForces(), options);
     model.updSystem().addEventHandler(switch_);
     if (SimTK::TriggeredEventHandler* witness = switch_->makeDetachWitness()) model.updSystem().addEventHandler(witness);
+    if (SimTK::TriggeredEventHandler* witness = switch_->makeReleaseWitness()) model.updSystem().addEventHandler(witness);
 }
 
 }  // namespace graspsim::simulation

@@ -3,6 +3,7 @@
 #include "graspsim/error.h"
 #include "graspsim/grasp/compliance_limits.h"
 #include "graspsim/grasp/limited_bushing_law.h"
+#include "graspsim/simulation/compliance_release.h"
 #include "graspsim/simulation/contact_grasp_quality.h"
 #include "graspsim/simulation/finger_compliance.h"
 #include "graspsim/simulation/multi_attachment_switch.h"
@@ -64,9 +65,9 @@ SimTK::Vec6 calcContactGeometryLimits(const std::vector<contact::ContactReport>&
 // model of the grasp at engagement (grasp/compliance_limits.h), rotation first. A side the model
 // never lets go of is capped at four times the thesis's box on its axis, so that the bushing,
 // stiffened for its larger side, stays as stiff as the thesis's would be within a small factor.
-void setComplianceLimits(const ApproximationContext& context, const SimTK::State& state,
-                         const std::vector<contact::ContactReport>& reports, double mu, const SimTK::Rotation& R_GM,
-                         const SimTK::Vec3& p_GM, grasp::AttachmentEngagement& engagement) {
+ComplianceReleaseLimits calcComplianceLimits(const ApproximationContext& context, const SimTK::State& state,
+                                             const std::vector<contact::ContactReport>& reports, double mu,
+                                             const SimTK::Rotation& R_GM, const SimTK::Vec3& p_GM) {
     const FingerCompliance fingers(context.model, context.fingerMobilizers, context.jointImpedances, context.goals.getEndEffectors());
     const std::vector<grasp::CompliantContact> contacts = fingers.findCompliantContacts(state, reports, {});
     grasp::ComplianceLimitOptions options;
@@ -75,13 +76,21 @@ void setComplianceLimits(const ApproximationContext& context, const SimTK::State
     for (int k = 0; k < 6; ++k) options.maxLoads[k] = std::max(4 * box[k], 1e-9);
     const grasp::TwoSidedLimits limits =
         grasp::calcComplianceLimits(contacts, system::toEigenMatrix(R_GM), system::toEigenVector(p_GM), options);
-    SimTK::Vec6 lower;
+    ComplianceReleaseLimits result;
     for (int k = 0; k < 6; ++k) {
-        lower[k] = limits.lower[k];
-        engagement.limits[k] = limits.upper[k];
+        result.lower[k] = limits.lower[k];
+        result.upper[k] = limits.upper[k];
     }
-    engagement.lowerLimits = lower;
+    return result;
 }
+
+// " [-L-, L+] N, ..." for the six axes, translation first (the engage event's text).
+std::string describeTwoSided(const SimTK::Vec6& lower, const SimTK::Vec6& upper) {
+    std::string text;
+    for (int k : {3, 4, 5, 0, 1, 2}) text += format(" [-%.6g, %.6g]", lower[k], upper[k]) + (k == 5 ? " N," : k == 2 ? " N m" : "");
+    return text;
+}
+
 
 // Centroid of the contact points (Ground, m): where the friction acts, so where the constraint does.
 SimTK::Vec3 findContactCentroid(const std::vector<contact::ContactReport>& reports) {
@@ -156,7 +165,7 @@ private:
 GraspSwitch::GraspSwitch(const ApproximationContext& context, SimTK::GeneralForceSubsystem& forces,
                          const ApproxOptions& options)
     : SimTK::PeriodicEventHandler(context.ikInterval), context_(context), options_(options) {
-    GraspSwitchRecord initial{options_.qThreshold, 0, SimTK::Transform(), {}, EngagedGraspTracker(context)};
+    GraspSwitchRecord initial{options_.qThreshold, 0, SimTK::Transform(), {}, EngagedGraspTracker(context), std::nullopt};
     initial.qMinimum = options_.qMinimum > 0 ? options_.qMinimum : options_.hysteresisFraction * initial.qThreshold;
     auto* keeper = new RecordKeeper(forces, std::move(initial));
     SimTK::Force::Custom(forces, keeper);
@@ -194,6 +203,33 @@ private:
 };
 
 SimTK::TriggeredEventHandler* GraspSwitch::makeDetachWitness() const { return multi_ ? new DetachWitness(*this) : nullptr; }
+
+// See makeReleaseWitness(). Velocity stage: the bushing's reaction depends on the relative velocity.
+class GraspSwitch::ReleaseWitness : public SimTK::TriggeredEventHandler {
+public:
+    explicit ReleaseWitness(const GraspSwitch& grasp) : SimTK::TriggeredEventHandler(SimTK::Stage::Velocity), grasp_(grasp) {
+        getTriggerInfo().setTriggerOnRisingSignTransition(false);
+        getTriggerInfo().setTriggerOnFallingSignTransition(true);
+    }
+
+    SimTK::Real getValue(const SimTK::State& state) const override {
+        const std::optional<ComplianceReleaseLimits>& limits = grasp_.getRecord(state).releaseLimits;
+        if (!limits || !grasp_.isEngaged(state)) return 1.0;
+        return findLimitMargin(grasp_.findReactionInO(state), *limits);
+    }
+
+    void handleEvent(SimTK::State& state, SimTK::Real, bool& shouldTerminate) const override {
+        shouldTerminate = false;
+        if (grasp_.isEngaged(state)) grasp_.checkRelease(state);
+    }
+
+private:
+    const GraspSwitch& grasp_;
+};
+
+SimTK::TriggeredEventHandler* GraspSwitch::makeReleaseWitness() const {
+    return !multi_ && options_.releaseTrigger == ApproxReleaseTrigger::Compliance ? new ReleaseWitness(*this) : nullptr;
+}
 
 bool GraspSwitch::isEngaged(const SimTK::State& state) const { return context_.attachment.isEngaged(state); }
 
@@ -267,7 +303,13 @@ void GraspSwitch::checkEngage(SimTK::State& state) const {
     // restored still carry the pre-release state, and would re-engage what just failed.
     const std::vector<GraspEvent>& events = getRecord(state).events;
     if (!events.empty() && events.back().kind == GraspEventKind::Release && !(state.getTime() > events.back().time)) return;
-    if (q > 0 && q >= getRecord(state).qThreshold) engage(state, q, reports);
+    if (!(q > 0 && q >= getRecord(state).qThreshold)) return;
+    // Not while the grasp already carries the compliance limits of the first engagement: handed
+    // back because the load reached them, the grasp stays in full contact, which decides the slip
+    // (re-engaging under the load, with limits re-computed there, counted the model's 2 mm afresh).
+    const std::optional<ComplianceReleaseLimits>& limits = getRecord(state).releaseLimits;
+    if (limits && !findAxisAtLimit(calcContactWrenchInO(context_, state, reports), *limits).empty()) return;
+    engage(state, q, reports);
 }
 
 // The engage event's text: the threshold and the limits (one force and one torque for the thesis's
@@ -275,11 +317,7 @@ void GraspSwitch::checkEngage(SimTK::State& state) const {
 std::string GraspSwitch::describeEngagement(double qThreshold, const grasp::AttachmentEngagement& engagement) const {
     const SimTK::Vec6& limits = engagement.limits;
     if (engagement.lowerLimits) {
-        std::string text = format("Q >= Q_Th = %.6g N; compliance limits", qThreshold);
-        for (int k : {3, 4, 5, 0, 1, 2}) {
-            text += format(" [-%.6g, %.6g]", (*engagement.lowerLimits)[k], limits[k]) + (k == 5 ? " N," : k == 2 ? " N m" : "");
-        }
-        return text;
+        return format("Q >= Q_Th = %.6g N; compliance limits", qThreshold) + describeTwoSided(*engagement.lowerLimits, limits);
     }
     if (options_.limitModel == grasp::FrictionLimitModel::Thesis) {
         return format("Q >= Q_Th = %.6g N; limits %.6g N", qThreshold, limits[3]) + format(", %.6g N m", limits[0]);
@@ -308,7 +346,10 @@ void GraspSwitch::engage(SimTK::State& state, double quality, const std::vector<
     if (options_.limitModel == grasp::FrictionLimitModel::Thesis) {
         engagement.limits = calcFrictionLimits(reports, mu);
     } else if (compliance) {
-        setComplianceLimits(context_, state, reports, mu, context_.object.getBodyTransform(state).R(), p_GM, engagement);
+        const ComplianceReleaseLimits limits =
+            calcComplianceLimits(context_, state, reports, mu, context_.object.getBodyTransform(state).R(), p_GM);
+        engagement.limits = limits.upper;
+        engagement.lowerLimits = limits.lower;
     } else {
         engagement.limits = calcContactGeometryLimits(reports, mu, context_.object.getBodyTransform(state).R(), p_GM);
     }
@@ -319,9 +360,24 @@ void GraspSwitch::engage(SimTK::State& state, double quality, const std::vector<
     setFingersMerged(state, true);                                                        // (c)
     context_.attachment.engage(state, engagement);                                                // (d)
     const SimTK::Transform X_HO = ~context_.palm.getBodyTransform(state) * context_.object.getBodyTransform(state);
+    std::string text = describeEngagement(qThreshold, engagement);
+    std::optional<ComplianceReleaseLimits> releaseLimits;
+    if (getRecord(state).releaseLimits) {
+        releaseLimits = getRecord(state).releaseLimits;
+        text += "; release at the first engagement's compliance limits";
+    } else if (options_.releaseTrigger == ApproxReleaseTrigger::Compliance) {
+        // As --limits compliance computes them (static friction unless told otherwise, M at O's
+        // origin with O's orientation), whatever the constraint's own limits are; at the first
+        // engagement only, on the unloaded grasp, and kept for the run.
+        const double muRelease = options_.staticFrictionLimits.value_or(true) ? pair.staticFriction : pair.dynamicFriction;
+        const SimTK::Transform& X_GO = context_.object.getBodyTransform(state);
+        releaseLimits = calcComplianceLimits(context_, state, reports, muRelease, X_GO.R(), X_GO.p());
+        text += "; release at compliance limits" + describeTwoSided(releaseLimits->lower, releaseLimits->upper);
+    }
     GraspSwitchRecord& record = updRecord(state);
     record.X_HO_engaged = X_HO;
-    record.events.push_back({state.getTime(), GraspEventKind::Engage, quality, describeEngagement(qThreshold, engagement)});  // (e)
+    record.releaseLimits = releaseLimits;
+    record.events.push_back({state.getTime(), GraspEventKind::Engage, quality, text});  // (e)
 }
 
 // F on the palm and M on the object coincide at the contact centroid, with O's orientation.
@@ -375,7 +431,24 @@ std::string GraspSwitch::describeRelease(const SimTK::State& state, double quali
     const double tolerance = context_.heldTolerance;
     if (distance > tolerance) return format("fingertip %.6g m from its goal (held tolerance %.6g m)", distance, tolerance);
     if (quality < record.qMinimum) return format("Q < Q_M = %.6g N", record.qMinimum);
+    if (record.releaseLimits) return describeComplianceRelease(state, *record.releaseLimits);
     return {};
+}
+
+// The first axis side on which the constraint's reaction on the object (about O's origin, in O:
+// the frame of the limits) has reached the compliance model's limit; empty if none has.
+std::string GraspSwitch::describeComplianceRelease(const SimTK::State& state, const ComplianceReleaseLimits& limits) const {
+    context_.model.getSystem().realize(state, context_.attachment.getReactionStage());
+    return findAxisAtLimit(findReactionInO(state), limits);
+}
+
+SimTK::Vec6 GraspSwitch::findReactionInO(const SimTK::State& state) const {
+    const SimTK::SpatialVec wrench_G = context_.attachment.findReactionOnObject(state);
+    const SimTK::Rotation R_OG = ~context_.object.getBodyTransform(state).R();
+    const SimTK::Vec3 moment_O = R_OG * wrench_G[0], force_O = R_OG * wrench_G[1];
+    SimTK::Vec6 reaction;
+    for (int k = 0; k < 3; ++k) reaction[k] = moment_O[k], reaction[k + 3] = force_O[k];
+    return reaction;
 }
 
 void GraspSwitch::release(SimTK::State& state, double quality, const std::string& reason) const {

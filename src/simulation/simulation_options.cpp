@@ -53,6 +53,14 @@ ApproxAttach parseApproxAttach(const std::string& text, const std::string& sourc
 }
 
 std::string toString(ApproxAttach attach) { return attach == ApproxAttach::Merged ? "merged" : "multi"; }
+
+ApproxReleaseTrigger parseApproxReleaseTrigger(const std::string& text, const std::string& source) {
+    if (text == "none") return ApproxReleaseTrigger::None;
+    if (text == "compliance") return ApproxReleaseTrigger::Compliance;
+    throw InputError(source + ": release trigger '" + text + "' is not accepted; use none or compliance");
+}
+
+std::string toString(ApproxReleaseTrigger trigger) { return trigger == ApproxReleaseTrigger::None ? "none" : "compliance"; }
 std::string toString(SimulationMode mode) { return mode == SimulationMode::Full ? "full" : "approx"; }
 
 void checkApproxAttach(const scenario::Scenario& scenario, const SimulationOptions& options) {
@@ -63,6 +71,13 @@ void checkApproxAttach(const scenario::Scenario& scenario, const SimulationOptio
                          " --attach " + toString(options.approx.attach) +
                          " (its limits are two-sided, which only the merged bushing takes); use --constraint bushing "
                          "--attach merged or another --limits");
+    }
+    if (options.approx.releaseTrigger == ApproxReleaseTrigger::Compliance &&
+        (options.approx.constraint != ApproxConstraint::Bushing || options.approx.attach != ApproxAttach::Merged)) {
+        throw InputError("--release-at: 'compliance' is not available with --constraint " + toString(options.approx.constraint) +
+                         " --attach " + toString(options.approx.attach) +
+                         " (it watches the one palm-object bushing's reaction); use --constraint bushing --attach merged "
+                         "or --release-at none");
     }
     if (options.approx.attach != ApproxAttach::Multi) return;
     if (options.approx.constraint != ApproxConstraint::Bushing) {

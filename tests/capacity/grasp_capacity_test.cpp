@@ -1,4 +1,5 @@
 #include "graspsim/capacity/grasp_capacity.h"
+#include "graspsim/capacity/overload.h"
 
 #include "graspsim/error.h"
 #include "graspsim/scenario/scenario_file.h"
@@ -44,6 +45,49 @@ TEST(GraspCapacity, TorqueAboutThePinchLineIsRefusedAcrossItIsMeasured) {
     force.torque = false;
     EXPECT_NO_THROW(checkLoadResistible(pinch, force));
     EXPECT_NO_THROW(checkLoadResistible(scenario::findBuiltinScenario("ball-clutch"), makeTorque(SimTK::Vec3(0, 0, 1))));
+}
+
+// --release-at compliance along the ball's -x, where the thesis's box holds 14.0 N against full
+// contact's 6.3 N (+122 %, docs/capacity.md): the approximation hands back when its reaction reaches
+// the compliance model's -x side, and full contact, from there, decides the slip. Oracle: full
+// contact's own ramp (the second method), same rate, stepper and accuracy; bound 10 %, the issue's
+// criterion (measured +3.6 %: 6.53 N against 6.31 N).
+TEST(GraspCapacity, ReleaseAtComplianceLimitsGivesFullContactsOnsetAlongBallMinusX) {
+    const scenario::Scenario ball = scenario::findBuiltinScenario("ball-clutch");
+    GraspCapacityRequest request;
+    request.direction = SimTK::UnitVec3(-1, 0, 0);
+    request.directionName = "-x";
+    request.rate = 6;
+    request.maxRampDuration = 3.5;
+    simulation::SimulationOptions options;
+    options.integrator = simulation::IntegratorChoice::LinearlyImplicit;
+    options.accuracy = 3e-4;
+    const GraspCapacity full = measureGraspCapacityRamp(ball, options, request);
+    options.mode = simulation::SimulationMode::Approx;
+    options.approx.releaseTrigger = simulation::ApproxReleaseTrigger::Compliance;
+    const GraspCapacity approx = measureGraspCapacityRamp(ball, options, request);
+    ASSERT_TRUE(full.trace.figures.slipped);
+    ASSERT_TRUE(approx.trace.figures.slipped);
+    ASSERT_TRUE(approx.trace.figures.released);
+    EXPECT_NE(approx.trace.releaseReason.find("translation x"), std::string::npos) << approx.trace.releaseReason;
+    EXPECT_NE(approx.trace.releaseReason.find("compliance limit"), std::string::npos) << approx.trace.releaseReason;
+    EXPECT_NEAR(approx.trace.figures.slipOnsetLoad, full.trace.figures.slipOnsetLoad, 0.1 * full.trace.figures.slipOnsetLoad);
+    // Above capacity (the must-show's second half): 1.25 x full contact's onset held, as
+    // analysis/overload_times.py does. The release witness hands back within a step of the load,
+    // so the slip-onset time is full contact's within 10 % (measured 18.6 ms both; with only the
+    // 10 ms check it was 28.2 ms, +51 %; the box alone never slips).
+    const double load = 1.25 * full.trace.figures.slipOnsetLoad;
+    options.mode = simulation::SimulationMode::Full;
+    const GraspCapacity fullHeld = measureGraspCapacityConstant(ball, options, request, load, 0.2);
+    options.mode = simulation::SimulationMode::Approx;
+    const GraspCapacity approxHeld = measureGraspCapacityConstant(ball, options, request, load, 0.2);
+    const OverloadFigures a = findOverloadFigures(approxHeld.trace.figures, approxHeld.start);
+    const OverloadFigures f = findOverloadFigures(fullHeld.trace.figures, fullHeld.start);
+    ASSERT_TRUE(f.slipped);
+    ASSERT_TRUE(a.slipped);
+    ASSERT_TRUE(a.released);
+    EXPECT_LT(a.releaseTime, a.slipOnsetTime);
+    EXPECT_NEAR(a.slipOnsetTime, f.slipOnsetTime, 0.1 * f.slipOnsetTime);
 }
 
 }  // namespace

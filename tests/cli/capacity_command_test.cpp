@@ -39,6 +39,8 @@ TEST_F(CapacityCommand, BadInputIsOneLineAndWritesNothing) {
     expectRejected("--integrator implicit --step-size 0", "--step-size");
     expectRejected("--contact rigid --integrator implicit", "--integrator");  // rigid has its own stepper
     expectRejected("--mode approx --constraint weld --limits compliance", "--limits");
+    expectRejected("--mode approx --release-at always", "--release-at");
+    expectRejected("--mode approx --attach multi --release-at compliance", "--release-at");
     expectRejected("--method constant", "--load");  // the load is required
     expectRejected("--method constant --load 0", "--load");
     expectRejected("--method constant --load=-2", "--load");

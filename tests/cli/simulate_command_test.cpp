@@ -181,6 +181,10 @@ TEST_F(SimulateCommand, RejectsBadOptionsWithoutTouchingTheOutputFolder) {
                    {"--limits", "compliance", "weld", "two-sided", "--constraint bushing"});
     expectBadInput("simulate ball-clutch --mode approx --attach multi --limits compliance" + out, {"--limits", "compliance", "multi"});
     expectBadInput("simulate ball-clutch --mode approx --constraint weld --attach multi" + out, {"--attach", "multi", "weld"});
+    expectBadInput("simulate ball-clutch --mode approx --release-at slip" + out, {"--release-at", "slip", "none or compliance"});
+    expectBadInput("simulate ball-clutch --mode approx --constraint weld --release-at compliance" + out,
+                   {"--release-at", "compliance", "weld", "--constraint bushing"});
+    expectBadInput("simulate ball-clutch --mode approx --attach multi --release-at compliance" + out, {"--release-at", "multi"});
     EXPECT_FALSE(fs::exists(dir_ / "out"));
 }
 

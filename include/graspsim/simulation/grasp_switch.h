@@ -57,7 +57,13 @@
 ///    locked finger), when the object's centre of mass has moved more
 ///    than releaseSlideDistance relative to the palm since engagement, when a fingertip is
 ///    farther than the scenario's held tolerance from its goal on the object, or when that Q <
-///    Q_M. Nothing at the release changes a velocity (the constraint and the locks are switched
+///    Q_M; and with ApproxOptions::releaseTrigger Compliance (`--release-at compliance`), when the
+///    constraint's reaction on the object (about O's origin, along O's axes) reaches, on any axis
+///    side, the two-sided limit of the grasp's compliance model computed at engagement as for the
+///    compliance limits (with the thesis's box still the constraint's own limits, nothing slides
+///    before that; full contact, restored from the same state, then decides whether the object
+///    slips). The limits are those of the first engagement, kept for the run, and the switch does
+///    not engage again while the contacts' wrench on the object is outside them). Nothing at the release changes a velocity (the constraint and the locks are switched
 ///    off, contact comes back as a force), so the object's velocity is continuous; the event
 ///    records the measured jump (GraspEvent::velocityJump) to show it.
 ///
@@ -74,12 +80,14 @@
 /// carries its own history.
 
 #include "graspsim/simulation/approximation_context.h"
+#include "graspsim/simulation/compliance_release.h"
 #include "graspsim/simulation/engaged_grasp_tracker.h"
 #include "graspsim/simulation/simulation_options.h"
 
 #include "graspsim/simbody.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -115,6 +123,10 @@ struct GraspSwitchRecord {
     SimTK::Transform X_HO_engaged;   ///< object frame O in the palm frame H at the last engagement (m)
     std::vector<GraspEvent> events;  ///< the switches so far, in time order
     EngagedGraspTracker tracker;     ///< the contacts tracked while engaged, the penetration so far
+    /// With ApproxReleaseTrigger::Compliance, the limits computed at the first engagement (on the
+    /// unloaded grasp, kept for the run) at which the switch releases, and outside which it does not
+    /// engage again; unset otherwise.
+    std::optional<ComplianceReleaseLimits> releaseLimits;
 };
 
 /// The periodic event handler described in the file comment (owned by the System once added).
@@ -136,6 +148,13 @@ public:
     /// handler, which must outlive it. (Only this cheap condition is a witness: a witness is
     /// evaluated at every dynamics evaluation, and Q there would cost more than the checks save.)
     SimTK::TriggeredEventHandler* makeDetachWitness() const;
+    /// With ApproxOptions::releaseTrigger Compliance (merged), a new triggered event handler that
+    /// runs the engaged check where the constraint's reaction passes a compliance limit (the
+    /// smallest margin, findLimitMargin, falling through zero), found by the integrator's event
+    /// detection at the end of the step that crosses it, so that the release does not wait for the
+    /// next periodic check (up to ik_interval, 10 ms: as long as full contact's slip onset under a
+    /// constant load above capacity); nullptr otherwise. Added as makeDetachWitness()'s.
+    SimTK::TriggeredEventHandler* makeReleaseWitness() const;
 
     /// Whether the approximation is engaged in `state`.
     bool isEngaged(const SimTK::State& state) const;
@@ -162,6 +181,7 @@ public:
 
 private:
     class DetachWitness;
+    class ReleaseWitness;
     class RecordKeeper;
     GraspSwitchRecord& updRecord(SimTK::State& state) const;
     void checkEngage(SimTK::State& state) const;
@@ -175,6 +195,8 @@ private:
     void release(SimTK::State& state, double quality, const std::string& reason) const;
     void setFingersMerged(SimTK::State& state, bool merged) const;
     std::string describeRelease(const SimTK::State& state, double quality) const;
+    std::string describeComplianceRelease(const SimTK::State& state, const ComplianceReleaseLimits& limits) const;
+    SimTK::Vec6 findReactionInO(const SimTK::State& state) const;
     std::string describeEngagement(double qThreshold, const grasp::AttachmentEngagement& engagement) const;
     double findVelocityJump(SimTK::State& state, const SimTK::Vec3& v_before) const;
 

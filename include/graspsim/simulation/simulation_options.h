@@ -55,6 +55,15 @@ enum class ApproxAttach {
     Multi    ///< one element spanning the object and every fingertip, fingers free (grasp::MultiAttachment)
 };
 
+/// An extra rule for releasing the approximation (`--release-at`; grasp_switch.h).
+enum class ApproxReleaseTrigger {
+    None,       ///< the default: only the switch's own rules (slide, penetration, goal distance, Q < Q_M)
+    /// also release once the constraint's reaction reaches, on any axis side, the two-sided limit
+    /// the grasp's compliance model predicts at engagement (grasp/compliance_limits.h, computed as
+    /// for --limits compliance); the constraint keeps its own limits. Bushing and merged only.
+    Compliance
+};
+
 /// Settings of the grasp switch of `--mode approx` (thesis Figure 4.1; see grasp_switch.h).
 /// Defaults are this project's choices, documented where they are used.
 struct ApproxOptions {
@@ -105,6 +114,8 @@ struct ApproxOptions {
     /// order, rotation x, y, z then translation x, y, z of the object frame. Unset (default): the
     /// scenario's approximation.relaxed_axes (whose default is all six).
     std::optional<std::array<bool, 6>> relaxedAxes;
+    /// An extra release rule (default none: the switch behaves as without this field).
+    ApproxReleaseTrigger releaseTrigger = ApproxReleaseTrigger::None;
 };
 
 /// Per-run choices. Defaults: compliant full contact, no perturbation, the scenario's duration.
@@ -140,12 +151,15 @@ std::string toString(SimulationMode mode);
 /// Parses "merged" or "multi". @throws graspsim::InputError naming `source`, the value and the choices.
 ApproxAttach parseApproxAttach(const std::string& text, const std::string& source);
 std::string toString(ApproxAttach attach);
+/// Parses "none" or "compliance". @throws graspsim::InputError naming `source`, the value and the choices.
+ApproxReleaseTrigger parseApproxReleaseTrigger(const std::string& text, const std::string& source);
+std::string toString(ApproxReleaseTrigger trigger);
 
 /// Whether the scene of `scenario` supports `options.approx.attach` in approx mode: multi needs
 /// the bushing realization, and every goal end-effector on a body with contact geometry; and
 /// whether the limit model fits the attachment: compliance limits are two-sided, which only the
-/// merged bushing takes. Call before anything is written.
-/// @throws graspsim::InputError naming --attach or --limits otherwise.
+/// merged bushing takes; so does the compliance release trigger. Call before anything is written.
+/// @throws graspsim::InputError naming --attach, --limits or --release-at otherwise.
 void checkApproxAttach(const scenario::Scenario& scenario, const SimulationOptions& options);
 
 /// Largest step / anchor_relaxation_time of the fixed-step linearly implicit integrator with the

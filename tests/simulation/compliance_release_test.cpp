@@ -1,0 +1,112 @@
+// --release-at compliance (ApproxReleaseTrigger::Compliance): the approximation keeps the thesis's
+// box as its limits and hands the object back to full contact once the constraint's reaction
+// reaches the grasp's compliance-model limit on an axis side. Oracle: the full-contact run of the
+// same scenario (the second method), and, where the trigger never fires, the run without it.
+#include "graspsim/simulation/grasp_simulation.h"
+#include "graspsim/simulation/compliance_release.h"
+#include "graspsim/simulation/grasp_switch.h"
+#include "graspsim/simulation/simulation_options.h"
+#include "graspsim/error.h"
+#include "graspsim/scenario/scenario_file.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+
+using namespace graspsim;
+
+namespace {
+
+simulation::SimulationOptions makeOptions(simulation::SimulationMode mode, const std::string& perturbation, bool release) {
+    simulation::SimulationOptions options;
+    options.mode = mode;
+    options.perturbation = perturbation;
+    if (release) options.approx.releaseTrigger = simulation::ApproxReleaseTrigger::Compliance;
+    return options;
+}
+
+// Largest distance (m) between the two runs' objects at their common sample times.
+double findLargestDistance(const simulation::SimulationResult& a, const simulation::SimulationResult& b) {
+    EXPECT_EQ(a.trajectory.size(), b.trajectory.size());
+    double worst = 0;
+    for (std::size_t k = 0; k < std::min(a.trajectory.size(), b.trajectory.size()); ++k) {
+        worst = std::max(worst, (a.trajectory[k].p_GO - b.trajectory[k].p_GO).norm());
+    }
+    return worst;
+}
+
+}  // namespace
+
+// Ball f1 pushes the ball with more than the compliance model's +y side (11.13 N) allows, less
+// than the thesis's box (13.7 N): the trigger releases during the push (the model's limit named in
+// the reason), the switch engages again only after it (the contacts' wrench back inside the first
+// engagement's limits), and the object stays within 2 mm of full contact's over the whole run
+// (the must-show's bound; measured 0.59 mm, the thesis's box alone 1.23 mm).
+TEST(GraspSwitchRelease, BallF1ReleasesAtTheComplianceLimitAndStaysWithFullContact) {
+    const scenario::Scenario s = scenario::findBuiltinScenario("ball-clutch");
+    const auto full = simulation::runGraspSimulation(s, makeOptions(simulation::SimulationMode::Full, "f1", false));
+    const auto approx = simulation::runGraspSimulation(s, makeOptions(simulation::SimulationMode::Approx, "f1", true));
+    ASSERT_TRUE(full.summary.complete) << full.summary.failure;
+    ASSERT_TRUE(approx.summary.complete) << approx.summary.failure;
+    ASSERT_GE(approx.events.size(), 2u);
+    EXPECT_EQ(approx.events[1].kind, simulation::GraspEventKind::Release);
+    EXPECT_NE(approx.events[1].reason.find("reached the compliance limit"), std::string::npos) << approx.events[1].reason;
+    EXPECT_NE(approx.events[1].reason.find("translation y"), std::string::npos) << approx.events[1].reason;
+    EXPECT_EQ(approx.summary.held, full.summary.held);
+    const double gap = findLargestDistance(approx, full);
+    EXPECT_LT(gap, 0.002) << "approx object " << gap << " m from the full-contact object";
+}
+
+// Without a perturbation nothing reaches the model's limits: the switch engages once, never
+// releases, and the run is the one without the trigger sample for sample (the trigger only reads).
+TEST(GraspSwitchRelease, UnperturbedRunIsTheRunWithoutTheTrigger) {
+    for (const std::string name : {"ball-clutch", "phone-pinch"}) {
+        SCOPED_TRACE(name);
+        const scenario::Scenario s = scenario::findBuiltinScenario(name);
+        const auto plain = simulation::runGraspSimulation(s, makeOptions(simulation::SimulationMode::Approx, "none", false));
+        const auto watched = simulation::runGraspSimulation(s, makeOptions(simulation::SimulationMode::Approx, "none", true));
+        ASSERT_TRUE(watched.summary.complete) << watched.summary.failure;
+        ASSERT_EQ(watched.events.size(), 1u) << watched.events.back().reason;
+        EXPECT_NE(watched.events[0].reason.find("release at compliance limits"), std::string::npos);
+        ASSERT_EQ(plain.trajectory.size(), watched.trajectory.size());
+        for (std::size_t k = 0; k < plain.trajectory.size(); ++k) {
+            ASSERT_EQ(plain.trajectory[k].p_GO, watched.trajectory[k].p_GO) << "t = " << plain.trajectory[k].time;
+        }
+    }
+}
+
+TEST(GraspSwitchRelease, ParsesAndRefusesOtherAttachments) {
+    EXPECT_EQ(simulation::parseApproxReleaseTrigger("none", "--release-at"), simulation::ApproxReleaseTrigger::None);
+    EXPECT_EQ(simulation::parseApproxReleaseTrigger("compliance", "--release-at"), simulation::ApproxReleaseTrigger::Compliance);
+    EXPECT_THROW(simulation::parseApproxReleaseTrigger("slip", "--release-at"), InputError);
+    const scenario::Scenario s = scenario::findBuiltinScenario("ball-clutch");
+    simulation::SimulationOptions options = makeOptions(simulation::SimulationMode::Approx, "none", true);
+    EXPECT_NO_THROW(simulation::checkApproxAttach(s, options));
+    options.approx.constraint = simulation::ApproxConstraint::Weld;
+    try {
+        simulation::checkApproxAttach(s, options);
+        ADD_FAILURE() << "weld accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("--release-at"), std::string::npos) << e.what();
+    }
+    options.approx.constraint = simulation::ApproxConstraint::Bushing;
+    options.approx.attach = simulation::ApproxAttach::Multi;
+    EXPECT_THROW(simulation::checkApproxAttach(s, options), InputError);
+    options.mode = simulation::SimulationMode::Full;  // full contact ignores the approximation's options
+    EXPECT_NO_THROW(simulation::checkApproxAttach(s, options));
+}
+
+// The inside test of the engage rule and the trigger, on a hand-made wrench: a side is reached
+// at its own limit (the upper for a positive component, the lower for a negative one).
+TEST(GraspSwitchRelease, FindAxisAtLimitUsesEachSide) {
+    simulation::ComplianceReleaseLimits limits;
+    limits.lower = SimTK::Vec6(1, 1, 1, 8, 8, 8);
+    limits.upper = SimTK::Vec6(1, 1, 1, 6, 11, 7);
+    EXPECT_TRUE(simulation::findAxisAtLimit(SimTK::Vec6(0, 0, 0, 5.9, -7.9, 6.9), limits).empty());
+    const std::string x = simulation::findAxisAtLimit(SimTK::Vec6(0, 0, 0, 6.1, 0, 0), limits);
+    EXPECT_NE(x.find("translation x 6.1 N reached the compliance limit 6 N"), std::string::npos) << x;
+    const std::string y = simulation::findAxisAtLimit(SimTK::Vec6(0, 0, 0, 0, -8.2, 0), limits);
+    EXPECT_NE(y.find("translation y -8.2 N reached the compliance limit -8 N"), std::string::npos) << y;
+    EXPECT_NE(simulation::findAxisAtLimit(SimTK::Vec6(0, -1.5, 0, 0, 0, 0), limits).find("rotation y"), std::string::npos);
+}
