@@ -44,10 +44,12 @@ std::vector<std::string> listVariants(const CapacityPlan& plan) {
         // Quick: the default realization only, unless variants were named.
         if (plan.quick && plan.variants.empty() && variants.size() == 2) break;
     }
-    // The other friction-limit models on the default realization, so that the report compares
-    // them with the thesis's box (issue 17 item 3).
+    // The other friction-limit models on the default realization, and the box released at the
+    // compliance limits, so that the report compares them with the thesis's box (issue 17 item 3).
     if (!plan.quick && plan.variants.empty()) {
-        for (const char* v : {"approx-bushing-merged-contact", "approx-bushing-merged-compliance"}) variants.push_back(v);
+        for (const char* v : {"approx-bushing-merged-contact", "approx-bushing-merged-compliance", "approx-bushing-merged-release"}) {
+            variants.push_back(v);
+        }
     }
     return variants;
 }

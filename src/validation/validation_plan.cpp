@@ -49,6 +49,7 @@ simulation::SimulationOptions makeVariantOptions(const std::string& variant, con
     if (variant.find("-multi") != std::string::npos) options.approx.attach = simulation::ApproxAttach::Multi;
     if (variant.find("-merged-contact") != std::string::npos) options.approx.limitModel = grasp::FrictionLimitModel::ContactGeometry;
     if (variant.find("-merged-compliance") != std::string::npos) options.approx.limitModel = grasp::FrictionLimitModel::Compliance;
+    if (variant.find("-merged-release") != std::string::npos) options.approx.releaseTrigger = simulation::ApproxReleaseTrigger::Compliance;
     options.perturbation = perturbation;
     options.duration = duration;
     return options;

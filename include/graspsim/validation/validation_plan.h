@@ -35,7 +35,8 @@ struct PlanOptions {
 constexpr double kReferenceAccuracy = 1e-6;
 
 /// The run options of a variant ("full", "full-cvode", "full-rigid", "approx-<constraint>-<attach>",
-/// and "approx-bushing-merged-contact" / "-compliance" for the other friction-limit models) with the
+/// "approx-bushing-merged-contact" / "-compliance" for the other friction-limit models, and
+/// "approx-bushing-merged-release" for the thesis's box released at the compliance limits) with the
 /// given perturbation ("none" or the scenario's) and duration (s; 0 = the scenario's).
 simulation::SimulationOptions makeVariantOptions(const std::string& variant, const std::string& perturbation, double duration);
 
