@@ -72,8 +72,8 @@ CapacityCommand::CapacityCommand(CLI::App& app) : options_(std::make_shared<Opti
                          "model from full contact at the load's start; docs/capacity.md)");
     command_->add_option("--accuracy", o.accuracy, "integrator relative accuracy in (0, 1) (default: the scenario's)");
     command_->add_option("--integrator", o.integrator,
-                         "compliant contact: auto (default: implicit, but simbody for --constraint weld and --attach "
-                         "multi), simbody (CPodes BDF), cvode, implicit (linearly implicit, error-controlled steps up to "
+                         "compliant contact: auto (default: implicit, but simbody for --constraint weld, --attach "
+                         "multi and the scenario's anchor friction), simbody (CPodes BDF), cvode, implicit (linearly implicit, error-controlled steps up to "
                          "--step-size) or implicit-fixed");
     command_->add_option("--step-size", o.stepSize,
                          "implicit: longest step, implicit-fixed: the step, in s, > 0 (default: the scenario's simulation.step_size)");

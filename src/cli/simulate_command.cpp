@@ -59,7 +59,8 @@ SimulateCommand::SimulateCommand(CLI::App& app) : options_(std::make_shared<Opti
     command_->add_option("--perturbation", o.perturbation, "none (default) or a perturbation of the scenario (f1, f2)");
     command_->add_option("--duration", o.duration, "simulated time in s (default: the scenario's)");
     command_->add_option("--integrator", o.integrator,
-                         "auto (default: implicit, but simbody for --constraint weld and --attach multi), simbody "
+                         "auto (default: implicit, but simbody for --constraint weld, --attach multi and --friction "
+                         "anchor), simbody "
                          "(Simbody's CPodes BDF), cvode (the SUNDIALS CVODE BDF reference), implicit (linearly implicit "
                          "Rosenbrock with analytic contact Jacobians, error-controlled steps up to --step-size; compliant "
                          "contact) or implicit-fixed (the same at fixed steps)");

@@ -35,12 +35,17 @@ double findLimitMargin(const SimTK::Vec6& wrench, const ComplianceReleaseLimits&
     return margin;
 }
 
+// The wrench needs the contacts' points and forces only, not the fingers' compliance (a Jacobian
+// and a solve per contact, at every check after a release).
 SimTK::Vec6 calcContactWrenchInO(const ApproximationContext& context, const SimTK::State& state,
                                  const std::vector<contact::ContactReport>& reports) {
-    const FingerCompliance fingers(context.model, context.fingerMobilizers, context.jointImpedances, context.goals.getEndEffectors());
+    std::vector<grasp::CompliantContact> contacts;
+    for (const contact::ContactReport& r : reports) {
+        if (const std::optional<grasp::CompliantContact> c = findPressingContact(r, {})) contacts.push_back(*c);
+    }
     const SimTK::Transform& X_GO = context.object.getBodyTransform(state);
-    const Eigen::Matrix<double, 6, 1> w = grasp::calcContactWrenchInM(fingers.findCompliantContacts(state, reports, {}),
-                                                                      system::toEigenMatrix(X_GO.R()), system::toEigenVector(X_GO.p()));
+    const Eigen::Matrix<double, 6, 1> w =
+        grasp::calcContactWrenchInM(contacts, system::toEigenMatrix(X_GO.R()), system::toEigenVector(X_GO.p()));
     SimTK::Vec6 result;
     for (int k = 0; k < 6; ++k) result[k] = w[k];
     return result;

@@ -90,17 +90,23 @@ std::vector<grasp::CompliantContact> FingerCompliance::findCompliantContacts(con
     const Eigen::MatrixXd jointStiffness = calcJointStiffness(state, settings.ikFollowsNullSpace);
     std::vector<grasp::CompliantContact> contacts;
     for (const contact::ContactReport& r : reports) {
-        if (!(r.normalForce > 0) || !(r.depth > 0)) continue;
-        grasp::CompliantContact c;
-        c.p_GC = system::toEigenVector(r.p_G);
-        c.n_G = system::toEigenVector(SimTK::Vec3(r.n_G));
-        c.force_G = r.normalForce * c.n_G + system::toEigenVector(r.frictionForce_G);
-        c.normalStiffness = 1.5 * r.normalForce / r.depth;
-        c.tangentialStiffness = settings.tangentialStiffnessRatio * c.normalStiffness;
-        c.fingerCompliance_G = calcCompliance(state, jointStiffness, r.bodyA, r.p_G);
-        contacts.push_back(c);
+        std::optional<grasp::CompliantContact> c = findPressingContact(r, settings);
+        if (!c) continue;
+        c->fingerCompliance_G = calcCompliance(state, jointStiffness, r.bodyA, r.p_G);
+        contacts.push_back(*c);
     }
     return contacts;
+}
+
+std::optional<grasp::CompliantContact> findPressingContact(const contact::ContactReport& r, const FingerComplianceSettings& settings) {
+    if (!(r.normalForce > 0) || !(r.depth > 0)) return std::nullopt;
+    grasp::CompliantContact c;
+    c.p_GC = system::toEigenVector(r.p_G);
+    c.n_G = system::toEigenVector(SimTK::Vec3(r.n_G));
+    c.force_G = r.normalForce * c.n_G + system::toEigenVector(r.frictionForce_G);
+    c.normalStiffness = 1.5 * r.normalForce / r.depth;
+    c.tangentialStiffness = settings.tangentialStiffnessRatio * c.normalStiffness;
+    return c;
 }
 
 FingerCompliance makeFingerCompliance(const GraspScene& scene) {

@@ -33,7 +33,8 @@ double findLimitMargin(const SimTK::Vec6& wrench, const ComplianceReleaseLimits&
 
 /// The contacts' (`reports`) wrench on the object about O's origin, along O's axes (moment first,
 /// N m, N), as the compliance limits' W0 (grasp::calcContactWrenchInM of the compliance model's
-/// contacts): what the constraint would carry if it engaged in `state`. Needs Stage::Position.
+/// pressing contacts, simulation::findPressingContact): what the constraint would carry if it
+/// engaged in `state`. Needs Stage::Position.
 SimTK::Vec6 calcContactWrenchInO(const ApproximationContext& context, const SimTK::State& state,
                                  const std::vector<contact::ContactReport>& reports);
 

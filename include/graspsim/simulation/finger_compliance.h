@@ -30,6 +30,7 @@
 
 #include <Eigen/Core>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,13 @@ struct FingerComplianceSettings {
     /// Whether the PD targets follow the finger along its IK null space (file comment).
     bool ikFollowsNullSpace = true;
 };
+
+/// The compliance model's contact for one contact report that presses (normal force and depth
+/// > 0): point, inward normal, force (normal and friction) and the contact's own stiffnesses; the
+/// finger's compliance left zero (FingerCompliance::findCompliantContacts adds it). nullopt for a
+/// report that does not press.
+std::optional<grasp::CompliantContact> findPressingContact(const contact::ContactReport& report,
+                                                           const FingerComplianceSettings& settings);
 
 /// The fingers of a scene, as the compliance model needs them. Holds a reference to `model`,
 /// which must outlive it.
