@@ -91,6 +91,11 @@ std::string describeTwoSided(const SimTK::Vec6& lower, const SimTK::Vec6& upper)
     return text;
 }
 
+// The friction coefficient of limits computed from the contacts: static or dynamic as the options
+// ask (--limits-friction), else static where `staticByDefault`.
+double findLimitFriction(const contact::ContactParameters& pair, const ApproxOptions& options, bool staticByDefault) {
+    return options.staticFrictionLimits.value_or(staticByDefault) ? pair.staticFriction : pair.dynamicFriction;
+}
 
 // Centroid of the contact points (Ground, m): where the friction acts, so where the constraint does.
 SimTK::Vec3 findContactCentroid(const std::vector<contact::ContactReport>& reports) {
@@ -337,7 +342,7 @@ void GraspSwitch::engage(SimTK::State& state, double quality, const std::vector<
     grasp::AttachmentEngagement engagement;
     const contact::ContactParameters& pair = context_.contactParameters;
     const bool compliance = options_.limitModel == grasp::FrictionLimitModel::Compliance;
-    const double mu = options_.staticFrictionLimits.value_or(compliance) ? pair.staticFriction : pair.dynamicFriction;
+    const double mu = findLimitFriction(pair, options_, compliance);
     // M at the contact centroid, where the friction acts; for the compliance limits, which are the
     // model's capacities for loads through M's origin, at the object's centre of mass (O's origin),
     // where the loads an object carries act (its weight and inertia, the capacity protocol's ramp).
@@ -369,9 +374,8 @@ void GraspSwitch::engage(SimTK::State& state, double quality, const std::vector<
         // As --limits compliance computes them (static friction unless told otherwise, M at O's
         // origin with O's orientation), whatever the constraint's own limits are; at the first
         // engagement only, on the unloaded grasp, and kept for the run.
-        const double muRelease = options_.staticFrictionLimits.value_or(true) ? pair.staticFriction : pair.dynamicFriction;
         const SimTK::Transform& X_GO = context_.object.getBodyTransform(state);
-        releaseLimits = calcComplianceLimits(context_, state, reports, muRelease, X_GO.R(), X_GO.p());
+        releaseLimits = calcComplianceLimits(context_, state, reports, findLimitFriction(pair, options_, true), X_GO.R(), X_GO.p());
         text += "; release at compliance limits" + describeTwoSided(releaseLimits->lower, releaseLimits->upper);
     }
     GraspSwitchRecord& record = updRecord(state);
