@@ -135,7 +135,9 @@ GraspCapacity makeHeader(const simulation::SimulationOptions& options, const Gra
     c.contact = options.contact;
     c.mode = options.mode;
     if (options.mode == simulation::SimulationMode::Approx) {
-        c.realization = simulation::toString(options.approx.constraint) + " " + simulation::toString(options.approx.attach);
+        const simulation::ApproxOptions approx = simulation::resolveApproxOptions(options.approx, scenario.approximation);
+        c.realization = simulation::toString(approx.constraint) + " " + simulation::toString(approx.attach) + ", limits " +
+                        grasp::toString(approx.limitModel) + ", release at " + simulation::toString(approx.releaseTrigger);
     }
     c.start = findLoadStart(scenario);
     c.criteria = request.criteria;

@@ -38,7 +38,7 @@ struct CapacityCommand::Options {
     std::string qMinimum;
     std::string limitsFriction;
     std::string limits = "thesis";
-    std::string releaseAt = "none";
+    std::string releaseAt = "auto";
     std::string accuracy;
     std::string integrator = "auto";
     std::string stepSize;
@@ -97,8 +97,9 @@ CapacityCommand::CapacityCommand(CLI::App& app) : options_(std::make_shared<Opti
                          "approx: the constraint's friction limits, thesis (default: one box), contact (per axis) or "
                          "compliance (two-sided per axis, from the grasp's compliance model; bushing, merged)");
     command_->add_option("--release-at", o.releaseAt,
-                         "approx: an extra release rule, none (default) or compliance (release once the constraint's "
-                         "reaction reaches the grasp's compliance-model limit on any axis side; bushing, merged)");
+                         "approx: an extra release rule: compliance (release once the constraint's reaction reaches the "
+                         "grasp's compliance-model limit on any axis side; bushing, merged), none (the thesis's rules "
+                         "only) or auto (default: compliance on the merged bushing, none otherwise)");
     command_->add_option("--out", o.out, "output folder; receives capacity.json and capacity.csv (default: none written)");
 }
 

@@ -36,7 +36,7 @@ struct SimulateCommand::Options {
     std::string stepSize;
     std::string qThreshold, qMinimum;
     std::string limits = "thesis";
-    std::string releaseAt = "none";
+    std::string releaseAt = "auto";
     std::string out = "out";
     bool view = false;
     bool quiet = false;
@@ -74,8 +74,9 @@ SimulateCommand::SimulateCommand(CLI::App& app) : options_(std::make_shared<Opti
                          "(per axis, from each contact's normal and position) or compliance (two-sided per axis, "
                          "from the grasp's compliance model; bushing, merged)");
     command_->add_option("--release-at", o.releaseAt,
-                         "approx: an extra release rule, none (default) or compliance (release once the constraint's "
-                         "reaction reaches the grasp's compliance-model limit on any axis side; bushing, merged)");
+                         "approx: an extra release rule: compliance (release once the constraint's reaction reaches the "
+                         "grasp's compliance-model limit on any axis side; bushing, merged), none (the thesis's rules "
+                         "only) or auto (default: compliance on the merged bushing, none otherwise)");
     command_->add_option("--out", o.out,
                          "output folder (default out); receives trajectory.csv, contacts.csv, summary.json, scenario.yaml, "
                          "model.urdf, provenance.json (and events.csv, constraint.csv in approx mode), and for OpenSim "
@@ -198,9 +199,7 @@ results::RunProvenance makeRunProvenance(const std::vector<std::string>& command
         run.run["q_threshold_n"] = formatOverride(options.approx.qThreshold);
         run.run["q_minimum_n"] = formatOverride(options.approx.qMinimum);
         run.run["limits"] = grasp::toString(options.approx.limitModel);
-        if (options.approx.releaseTrigger != simulation::ApproxReleaseTrigger::None) {
-            run.run["release_at"] = simulation::toString(options.approx.releaseTrigger);
-        }
+        run.run["release_at"] = simulation::toString(simulation::resolveApproxOptions(options.approx, scenario.approximation).releaseTrigger);
     }
     return run;
 }

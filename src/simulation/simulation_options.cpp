@@ -55,12 +55,20 @@ ApproxAttach parseApproxAttach(const std::string& text, const std::string& sourc
 std::string toString(ApproxAttach attach) { return attach == ApproxAttach::Merged ? "merged" : "multi"; }
 
 ApproxReleaseTrigger parseApproxReleaseTrigger(const std::string& text, const std::string& source) {
+    if (text == "auto") return ApproxReleaseTrigger::Automatic;
     if (text == "none") return ApproxReleaseTrigger::None;
     if (text == "compliance") return ApproxReleaseTrigger::Compliance;
-    throw InputError(source + ": release trigger '" + text + "' is not accepted; use none or compliance");
+    throw InputError(source + ": release trigger '" + text + "' is not accepted; use auto, none or compliance");
 }
 
-std::string toString(ApproxReleaseTrigger trigger) { return trigger == ApproxReleaseTrigger::None ? "none" : "compliance"; }
+std::string toString(ApproxReleaseTrigger trigger) {
+    switch (trigger) {
+    case ApproxReleaseTrigger::Automatic: return "auto";
+    case ApproxReleaseTrigger::None: return "none";
+    case ApproxReleaseTrigger::Compliance: return "compliance";
+    }
+    return "compliance";
+}
 std::string toString(SimulationMode mode) { return mode == SimulationMode::Full ? "full" : "approx"; }
 
 void checkApproxAttach(const scenario::Scenario& scenario, const SimulationOptions& options) {
@@ -138,6 +146,10 @@ ApproxOptions resolveApproxOptions(const ApproxOptions& given, const scenario::A
     if (options.qThreshold == 0) options.qThreshold = scenario.qThreshold;
     if (options.qMinimum == 0) options.qMinimum = scenario.qMinimum;
     if (!options.relaxedAxes) options.relaxedAxes = scenario.relaxedAxes;
+    if (options.releaseTrigger == ApproxReleaseTrigger::Automatic) {
+        const bool mergedBushing = options.constraint == ApproxConstraint::Bushing && options.attach == ApproxAttach::Merged;
+        options.releaseTrigger = mergedBushing ? ApproxReleaseTrigger::Compliance : ApproxReleaseTrigger::None;
+    }
     if (!(options.qThreshold >= 0) || !(options.qMinimum >= 0)) {
         throw InputError("approx: the quality thresholds Q_Th and Q_M must be >= 0 (0 = automatic)");
     }

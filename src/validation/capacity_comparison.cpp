@@ -44,10 +44,10 @@ std::vector<std::string> listVariants(const CapacityPlan& plan) {
         // Quick: the default realization only, unless variants were named.
         if (plan.quick && plan.variants.empty() && variants.size() == 2) break;
     }
-    // The other friction-limit models on the default realization, and the box released at the
-    // compliance limits, so that the report compares them with the thesis's box (issue 17 item 3).
+    // The default realization on the thesis's switch (its box alone, no compliance release) and the
+    // other friction-limit models, so that the report compares them with the default (issue 17 item 3).
     if (!plan.quick && plan.variants.empty()) {
-        for (const char* v : {"approx-bushing-merged-contact", "approx-bushing-merged-compliance", "approx-bushing-merged-release"}) {
+        for (const char* v : {"approx-bushing-merged-thesis", "approx-bushing-merged-contact", "approx-bushing-merged-compliance"}) {
             variants.push_back(v);
         }
     }
@@ -233,7 +233,10 @@ std::string formatCapacityMarkdown(const std::vector<CapacityRow>& rows) {
     md << "\n## Holding capacity: full contact against the approximation\n\n"
        << "Slip onset of a load ramped from the settled grasp (graspsim capacity; the difference to full contact's in "
           "parentheses; \"released first\": the approximation let go at or before that load, and the slip was then full "
-          "contact's). Every ramp's figures are in capacity.csv.\n";
+          "contact's). approx-bushing-merged, the default, also releases at the compliance model's limits; the other "
+          "variants are on the thesis's switch: -thesis is the default's box limits alone, -contact and -compliance "
+          "those limit models alone. "
+          "Every ramp's figures are in capacity.csv.\n";
     md << formatTables(rows, "###", describeSlip);
     md << "\n### Slip-onset times under a constant load above capacity\n\n"
        << "A constant load of " << formatBriefNumber(kOverloadFactor) << " x full contact's ramp slip onset (column \"constant load\"), "

@@ -47,9 +47,12 @@ simulation::SimulationOptions makeVariantOptions(const std::string& variant, con
     }
     if (variant.find("-weld") != std::string::npos) options.approx.constraint = simulation::ApproxConstraint::Weld;
     if (variant.find("-multi") != std::string::npos) options.approx.attach = simulation::ApproxAttach::Multi;
+    // The other limit models and the thesis's box are compared on the thesis's switch (no compliance
+    // release), so that each shows its own limits.
+    const bool limitVariant = variant.find("-merged-contact") != std::string::npos || variant.find("-merged-compliance") != std::string::npos;
+    if (limitVariant || variant.find("-merged-thesis") != std::string::npos) options.approx.releaseTrigger = simulation::ApproxReleaseTrigger::None;
     if (variant.find("-merged-contact") != std::string::npos) options.approx.limitModel = grasp::FrictionLimitModel::ContactGeometry;
     if (variant.find("-merged-compliance") != std::string::npos) options.approx.limitModel = grasp::FrictionLimitModel::Compliance;
-    if (variant.find("-merged-release") != std::string::npos) options.approx.releaseTrigger = simulation::ApproxReleaseTrigger::Compliance;
     options.perturbation = perturbation;
     options.duration = duration;
     return options;

@@ -22,7 +22,7 @@ simulation::SimulationOptions makeOptions(simulation::SimulationMode mode, const
     simulation::SimulationOptions options;
     options.mode = mode;
     options.perturbation = perturbation;
-    if (release) options.approx.releaseTrigger = simulation::ApproxReleaseTrigger::Compliance;
+    options.approx.releaseTrigger = release ? simulation::ApproxReleaseTrigger::Compliance : simulation::ApproxReleaseTrigger::None;
     return options;
 }
 
@@ -95,6 +95,24 @@ TEST(GraspSwitchRelease, ParsesAndRefusesOtherAttachments) {
     EXPECT_THROW(simulation::checkApproxAttach(s, options), InputError);
     options.mode = simulation::SimulationMode::Full;  // full contact ignores the approximation's options
     EXPECT_NO_THROW(simulation::checkApproxAttach(s, options));
+}
+
+// The default: the trigger on the merged bushing, the thesis's switch on the weld and multi (which
+// the compliance trigger does not take); an explicit choice is kept.
+TEST(GraspSwitchRelease, AutomaticIsComplianceOnTheMergedBushingOnly) {
+    EXPECT_EQ(simulation::parseApproxReleaseTrigger("auto", "--release-at"), simulation::ApproxReleaseTrigger::Automatic);
+    EXPECT_EQ(simulation::ApproxOptions{}.releaseTrigger, simulation::ApproxReleaseTrigger::Automatic);
+    const scenario::ApproximationSpec spec;
+    simulation::ApproxOptions options;
+    EXPECT_EQ(simulation::resolveApproxOptions(options, spec).releaseTrigger, simulation::ApproxReleaseTrigger::Compliance);
+    options.constraint = simulation::ApproxConstraint::Weld;
+    EXPECT_EQ(simulation::resolveApproxOptions(options, spec).releaseTrigger, simulation::ApproxReleaseTrigger::None);
+    options.constraint = simulation::ApproxConstraint::Bushing;
+    options.attach = simulation::ApproxAttach::Multi;
+    EXPECT_EQ(simulation::resolveApproxOptions(options, spec).releaseTrigger, simulation::ApproxReleaseTrigger::None);
+    options.attach = simulation::ApproxAttach::Merged;
+    options.releaseTrigger = simulation::ApproxReleaseTrigger::None;
+    EXPECT_EQ(simulation::resolveApproxOptions(options, spec).releaseTrigger, simulation::ApproxReleaseTrigger::None);
 }
 
 // The inside test of the engage rule and the trigger, on a hand-made wrench: a side is reached

@@ -338,7 +338,7 @@ TEST(GraspSwitch, OverloadReleaseHandsBackAnObjectFullContactHolds) {
 }
 
 // Phone f1 overloads the pinch (2 N, mostly along the pinch axis, unloads one finger: the engaged
-// Q falls below Q_M). The release hands back to contact with the object's velocity unchanged:
+// Q falls below Q_M, after the default's compliance trigger has fired). The release hands back to contact with the object's velocity unchanged:
 // the jump measured across the switch (before it, and in the state the integrator restarts
 // from) stays below 1e-3 m/s; the fingertips never sink more than the bound into the phone.
 TEST(GraspSwitch, OverloadReleaseHandsBackToContactWithoutAVelocityJump) {
@@ -354,7 +354,10 @@ TEST(GraspSwitch, OverloadReleaseHandsBackToContactWithoutAVelocityJump) {
         ASSERT_GE(r.events.size(), 2u);
         EXPECT_EQ(r.events[1].kind, simulation::GraspEventKind::Release);
         EXPECT_GE(r.events[1].time, p->start - 1e-9);
-        EXPECT_NE(r.events[1].reason.find("Q < Q_M"), std::string::npos) << r.events[1].reason;
+        // The default bushing's compliance trigger sees the overload first (torque y; 1.5003 s); the
+        // weld, on the thesis's switch, at the quality check.
+        const char* rule = constraint == simulation::ApproxConstraint::Bushing ? "reached the compliance limit" : "Q < Q_M";
+        EXPECT_NE(r.events[1].reason.find(rule), std::string::npos) << r.events[1].reason;
         for (const simulation::GraspEvent& e : r.events) EXPECT_LT(e.velocityJump, 1e-3) << simulation::toString(e.kind) << " at " << e.time;
         // The phone slips out of the pinch after the release: sliding contacts are no firm grasp,
         // so the switch must not re-engage (it used to, 10 ms later, and drag the sliding phone

@@ -65,7 +65,7 @@ struct GraspCapacity {
     std::string method;       ///< "ramp", "bisection" or "constant"
     simulation::ContactModel contact = simulation::ContactModel::Compliant;
     simulation::SimulationMode mode = simulation::SimulationMode::Full;
-    std::string realization;  ///< "" in full mode, else e.g. "bushing merged"
+    std::string realization;  ///< "" in full mode, else e.g. "bushing merged, limits thesis, release at compliance"
     double start = 0;         ///< load start (s)
     double rate = 0;          ///< N/s or N m/s (ramp)
     double load = 0;          ///< N or N m (constant)

@@ -57,7 +57,10 @@ enum class ApproxAttach {
 
 /// An extra rule for releasing the approximation (`--release-at`; grasp_switch.h).
 enum class ApproxReleaseTrigger {
-    None,       ///< the default: only the switch's own rules (slide, penetration, goal distance, Q < Q_M)
+    /// The default: Compliance where it applies (the merged bushing), None elsewhere
+    /// (resolveApproxOptions decides).
+    Automatic,
+    None,  ///< only the switch's own rules (slide, penetration, goal distance, Q < Q_M): the thesis's
     /// also release once the constraint's reaction reaches, on any axis side, the two-sided limit
     /// the grasp's compliance model predicts at engagement (grasp/compliance_limits.h, computed as
     /// for --limits compliance); the constraint keeps its own limits. Bushing and merged only.
@@ -114,8 +117,10 @@ struct ApproxOptions {
     /// order, rotation x, y, z then translation x, y, z of the object frame. Unset (default): the
     /// scenario's approximation.relaxed_axes (whose default is all six).
     std::optional<std::array<bool, 6>> relaxedAxes;
-    /// An extra release rule (default none: the switch behaves as without this field).
-    ApproxReleaseTrigger releaseTrigger = ApproxReleaseTrigger::None;
+    /// An extra release rule. Automatic (default): the compliance trigger on the merged bushing, where
+    /// it brings the approximation's holding capacity to full contact's (docs/capacity.md), none on the
+    /// weld and multi; None is the thesis's switch.
+    ApproxReleaseTrigger releaseTrigger = ApproxReleaseTrigger::Automatic;
 };
 
 /// Per-run choices. Defaults: compliant full contact, no perturbation, the scenario's duration.
@@ -151,7 +156,7 @@ std::string toString(SimulationMode mode);
 /// Parses "merged" or "multi". @throws graspsim::InputError naming `source`, the value and the choices.
 ApproxAttach parseApproxAttach(const std::string& text, const std::string& source);
 std::string toString(ApproxAttach attach);
-/// Parses "none" or "compliance". @throws graspsim::InputError naming `source`, the value and the choices.
+/// Parses "auto", "none" or "compliance". @throws graspsim::InputError naming `source`, the value and the choices.
 ApproxReleaseTrigger parseApproxReleaseTrigger(const std::string& text, const std::string& source);
 std::string toString(ApproxReleaseTrigger trigger);
 
@@ -191,6 +196,7 @@ void checkIntegratorChoice(const scenario::Scenario& scenario, const SimulationO
 /// The approximation's options of a run: `given` over the scenario's `approximation:` section (a
 /// threshold or relaxed axes given to the run win; 0 / unset take the scenario's), checked, before
 /// anything is built (grasp_approximation.h takes only resolved options).
+/// An Automatic release trigger becomes Compliance on the merged bushing and None otherwise.
 /// @throws graspsim::InputError for a negative threshold, Q_M not below a given Q_Th, or a slide
 ///         distance or penetration bound <= 0.
 ApproxOptions resolveApproxOptions(const ApproxOptions& given, const scenario::ApproximationSpec& scenario);

@@ -34,10 +34,11 @@ struct PlanOptions {
 /// the scenarios' 1e-3, so that its own error is negligible next to the difference it measures.
 constexpr double kReferenceAccuracy = 1e-6;
 
-/// The run options of a variant ("full", "full-cvode", "full-rigid", "approx-<constraint>-<attach>",
-/// "approx-bushing-merged-contact" / "-compliance" for the other friction-limit models, and
-/// "approx-bushing-merged-release" for the thesis's box released at the compliance limits) with the
-/// given perturbation ("none" or the scenario's) and duration (s; 0 = the scenario's).
+/// The run options of a variant ("full", "full-cvode", "full-rigid", "approx-<constraint>-<attach>"
+/// with the default release trigger, "approx-bushing-merged-thesis" for the thesis's switch (its box
+/// without the compliance release), "approx-bushing-merged-contact" / "-compliance" for the other
+/// friction-limit models, on the thesis's switch too) with the given perturbation ("none" or the
+/// scenario's) and duration (s; 0 = the scenario's).
 simulation::SimulationOptions makeVariantOptions(const std::string& variant, const std::string& perturbation, double duration);
 
 /// The experiments of the thesis (chapter 5): "ball-clutch", "phone-pinch".
