@@ -93,7 +93,8 @@ std::vector<CompliancePrediction> predictGraspCapacities(const scenario::Scenari
         CompliancePrediction p{r, {}, {}, {}};
         o.mu = scenario.contact.dynamicFriction;
         p.dynamicFriction = grasp::calcCompliantCapacity(start.contacts, start.p_GO, toLoadDirection(r), o);
-        o.mu = scenario.contact.staticFriction;
+        o.mu = scenario.contact.staticFriction;  // breaks loose at mu_s, slides at mu_d
+        o.kineticMu = std::min(scenario.contact.dynamicFriction, o.mu);
         p.staticFriction = grasp::calcCompliantCapacity(start.contacts, start.p_GO, toLoadDirection(r), o);
         p.creep = runCreepRamp(scenario, start, r, settings);
         predictions.push_back(p);
@@ -120,7 +121,7 @@ std::string describePrediction(const CompliancePrediction& p) {
                events + ")";
     };
     return p.request.directionName + (p.request.torque ? " torque" : " force") + " (compliance model): mu_d: " +
-           describe(p.dynamicFriction) + "; mu_s: " + describe(p.staticFriction) + "; creep ramp: " + describe(p.creep.capacity);
+           describe(p.dynamicFriction) + "; mu_s (sliding at mu_d): " + describe(p.staticFriction) + "; creep ramp: " + describe(p.creep.capacity);
 }
 
 }  // namespace graspsim::capacity

@@ -37,6 +37,7 @@ TwoSidedLimits calcComplianceLimits(const std::vector<CompliantContact>& contact
     for (int k = 0; k < 6; ++k) {
         CompliantCapacityOptions o;
         o.mu = options.mu;
+        o.kineticMu = options.kineticMu;
         o.slipDistance = options.slipDistance;
         o.maxLoad = options.maxLoads[k];
         double onset[2];  // loads along +e_k, -e_k

@@ -72,6 +72,7 @@ ComplianceReleaseLimits calcComplianceLimits(const ApproximationContext& context
     const std::vector<grasp::CompliantContact> contacts = fingers.findCompliantContacts(state, reports, {});
     grasp::ComplianceLimitOptions options;
     options.mu = mu;
+    options.kineticMu = std::min(mu, context.contactParameters.dynamicFriction);  // broken loose, a contact slides at mu_d
     const SimTK::Vec6 box = calcFrictionLimits(reports, mu);
     for (int k = 0; k < 6; ++k) options.maxLoads[k] = std::max(4 * box[k], 1e-9);
     const grasp::TwoSidedLimits limits =

@@ -36,7 +36,7 @@ struct CompliancePredictionSettings {
 struct CompliancePrediction {
     GraspCapacityRequest request;
     grasp::CompliantCapacity dynamicFriction;  ///< with mu_d
-    grasp::CompliantCapacity staticFriction;   ///< with mu_s (the regularized law's peak)
+    grasp::CompliantCapacity staticFriction;   ///< breaking loose at mu_s (the regularized law's peak), sliding at mu_d
     /// The creep ramp at the request's rate (the default rate if 0), with the scenario's friction law.
     grasp::CompliantRamp creep;
 };
