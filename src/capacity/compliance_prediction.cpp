@@ -78,6 +78,8 @@ LoadStartGrasp findLoadStartGrasp(const scenario::Scenario& scenario, simulation
     }
     if (start.contacts.empty()) throw NumericalError("compliance prediction: no contact at the load's start");
     start.p_GO = system::toEigenVector(scene.getObject().findMassCenterLocationInGround(state));
+    const SimTK::Transform& X_GO = scene.getObject().getBodyTransform(state);
+    for (const SimTK::Vec3& p_OT : scene.getSurfaceGoals()) start.goals_G.push_back(system::toEigenVector(X_GO * p_OT));
     return start;
 }
 
@@ -90,6 +92,7 @@ std::vector<CompliancePrediction> predictGraspCapacities(const scenario::Scenari
     for (const GraspCapacityRequest& r : requests) {
         grasp::CompliantCapacityOptions o;
         o.slipDistance = settings.slipDistance;
+        o.slipPoints_G = start.goals_G;  // where the ramp measures the slip
         CompliancePrediction p{r, {}, {}, {}};
         o.mu = scenario.contact.dynamicFriction;
         p.dynamicFriction = grasp::calcCompliantCapacity(start.contacts, start.p_GO, toLoadDirection(r), o);

@@ -119,6 +119,9 @@ void checkDirection(const Vector6& direction_G, const CompliantCapacityOptions& 
     if (!unitTorque && !unitForce) {
         throw InputError("compliant grasp capacity: the load direction must be one unit torque or one unit force");
     }
+    for (const Eigen::Vector3d& p : options.slipPoints_G) {
+        if (!p.allFinite()) throw InputError("compliant grasp capacity: slip points must be finite");
+    }
     if (!(options.mu >= 0) || !(options.slipDistance > 0) || !(options.maxLoad > 0)) {
         throw InputError("compliant grasp capacity: mu must be >= 0, slipDistance and maxLoad > 0");
     }
@@ -252,6 +255,9 @@ CompliantCapacity calcCompliantCapacity(const std::vector<CompliantContact>& con
         checkContact(contacts[i], i);
         maps.push_back(calcContactWrenchMap(contacts[i].p_GC - p_GO, 1.0));  // force first, moment in N m
     }
+    std::vector<Map63> slipMaps;  // of the points whose displacement is the slip
+    for (const Eigen::Vector3d& p_GS : options.slipPoints_G) slipMaps.push_back(calcContactWrenchMap(p_GS - p_GO, 1.0));
+    if (slipMaps.empty()) slipMaps = maps;
     const Vector6 direction = reorderToForceFirst(direction_G);
     const double mu = options.mu, kineticMu = findKineticMu(options);
     CompliantCapacity result{kInfinity, kInfinity, kInfinity, {}, {}};
@@ -276,7 +282,7 @@ CompliantCapacity calcCompliantCapacity(const std::vector<CompliantContact>& con
         std::vector<CompliantCapacityEvent> events;
         const double step = findNextEvent(contacts, p, rates, mu, takingUp ? 1.0 : options.maxLoad - p.load, events);
         if (!std::isfinite(result.onset)) {
-            const double s = findOnsetStep(maps, p.displacement, rate, options.slipDistance, step);
+            const double s = findOnsetStep(slipMaps, p.displacement, rate, options.slipDistance, step);
             if (s < step) result.onset = p.load + (takingUp ? 0.0 : s);  // taking up happens at the present load
         }
         if (takingUp) {

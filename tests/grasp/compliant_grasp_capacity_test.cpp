@@ -217,6 +217,29 @@ TEST(CompliantGraspCapacity, KineticFrictionEqualToMuChangesNothing) {
     }
 }
 
+// Where the slip is measured: a torque T about z twists the pinch (contacts at x = +-d) by
+// theta = T / (2 k d^2), k = 1 / (c_f + 1 / k_t) each contact's tangential stiffness along y, and moves
+// a material point at distance rho from the z axis by rho theta. At the contacts (rho = d) the
+// onset is 2 k d s; at a goal point twice as far out, k d s; on the axis the slip never comes.
+TEST(CompliantGraspCapacity, OnsetIsMeasuredAtTheSlipPoints) {
+    const double N = 5, kn = 4000, cf = 3e-4, d = 0.02;
+    const double k = 1 / (cf + 1 / (2.0 / 3.0 * kn));
+    CompliantCapacityOptions options;
+    options.mu = 5;  // no contact slides before the onsets below
+    options.slipDistance = 1e-3;
+    const auto pinch = makePinch(N, kn, kn, cf, cf);
+    EXPECT_NEAR(calcCompliantCapacity(pinch, Eigen::Vector3d::Zero(), torque({0, 0, 1}), options).onset,
+                2 * k * d * options.slipDistance, 1e-12);
+    options.slipPoints_G = {Eigen::Vector3d(0, 2 * d, 0.01)};
+    EXPECT_NEAR(calcCompliantCapacity(pinch, Eigen::Vector3d::Zero(), torque({0, 0, 1}), options).onset,
+                k * d * options.slipDistance, 1e-12);
+    // On the axis the slip never comes: the onset is the ultimate, both contacts at their cones.
+    options.slipPoints_G = {Eigen::Vector3d(0, 0, 0.03)};
+    const CompliantCapacity onAxis = calcCompliantCapacity(pinch, Eigen::Vector3d::Zero(), torque({0, 0, 1}), options);
+    EXPECT_NEAR(onAxis.ultimate, 2 * options.mu * N * d, 1e-12);
+    EXPECT_EQ(onAxis.onset, onAxis.ultimate);
+}
+
 TEST(CompliantGraspCapacity, RejectsBadInput) {
     auto pinch = makePinch(5, 4000, 4000, 0, 0);
     CompliantCapacityOptions options;

@@ -49,6 +49,7 @@ struct LoadStartGrasp {
     std::vector<grasp::CompliantContact> contacts;
     std::vector<std::string> bodies;  ///< the finger segment of each contact
     Eigen::Vector3d p_GO = Eigen::Vector3d::Zero();  ///< the object's centre of mass (m, in G)
+    std::vector<Eigen::Vector3d> goals_G;  ///< the grasp goals' material points (m, in G)
 };
 
 /// Runs `scenario` in full compliant contact (the mode and contact of `options` are overridden;

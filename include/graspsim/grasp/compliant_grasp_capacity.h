@@ -78,6 +78,10 @@ struct CompliantCapacityOptions {
     /// the grasp takes that up at the same load (file comment).
     double kineticMu = std::numeric_limits<double>::quiet_NaN();
     double slipDistance = 2e-3;   ///< m: the displacement that counts as slip onset (the ramp's)
+    /// The object's material points whose largest displacement measures the onset (m, in G, at
+    /// the load's start): the grasp goals, where the capacity ramp measures it. Empty: the contact
+    /// points.
+    std::vector<Eigen::Vector3d> slipPoints_G;
     double maxLoad = 1e3;         ///< N or N m: the model is followed this far at most
 };
 
@@ -86,8 +90,9 @@ struct CompliantCapacityOptions {
 struct CompliantCapacity {
     /// The first contact reaches its friction cone.
     double firstSlip = 0;
-    /// The largest displacement of a contact point's material point reaches slipDistance (the
-    /// figure comparable to the ramp's slip onset, which measures at the grasp goals).
+    /// The largest displacement of the material points at the options' slipPoints_G (or at the
+    /// contacts) reaches slipDistance: the figure comparable to the ramp's slip onset, which
+    /// measures at the grasp goals.
     double onset = 0;
     /// The grasp can carry no more along the direction.
     double ultimate = 0;
