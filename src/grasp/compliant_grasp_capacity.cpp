@@ -229,6 +229,26 @@ bool solvePiece(const std::vector<CompliantContact>& contacts, const std::vector
     return true;
 }
 
+// The maps of the material points whose displacement is the slip: the options' slip points, or
+// the contacts' (`contactMaps`).
+std::vector<Map63> makeSlipMaps(const CompliantCapacityOptions& options, const Eigen::Vector3d& p_GO,
+                                const std::vector<Map63>& contactMaps) {
+    if (options.slipPoints_G.empty()) return contactMaps;
+    std::vector<Map63> maps;
+    for (const Eigen::Vector3d& p_GS : options.slipPoints_G) maps.push_back(calcContactWrenchMap(p_GS - p_GO, 1.0));
+    return maps;
+}
+
+// Contacts outside their cone at the start slide from the start.
+void recordStartSliding(const Progress& p, CompliantCapacity& result) {
+    for (std::size_t i = 0; i < p.states.size(); ++i) {
+        if (p.states[i] == CompliantContactState::Sliding) {
+            result.firstSlip = 0;
+            result.events.push_back({0, int(i), CompliantContactState::Sliding});
+        }
+    }
+}
+
 void applyEvents(const std::vector<CompliantContact>& contacts, const std::vector<Map63>& maps, double mu, double kineticMu,
                  const std::vector<CompliantCapacityEvent>& events, Progress& p, CompliantCapacity& result) {
     for (CompliantCapacityEvent e : events) {
@@ -255,19 +275,12 @@ CompliantCapacity calcCompliantCapacity(const std::vector<CompliantContact>& con
         checkContact(contacts[i], i);
         maps.push_back(calcContactWrenchMap(contacts[i].p_GC - p_GO, 1.0));  // force first, moment in N m
     }
-    std::vector<Map63> slipMaps;  // of the points whose displacement is the slip
-    for (const Eigen::Vector3d& p_GS : options.slipPoints_G) slipMaps.push_back(calcContactWrenchMap(p_GS - p_GO, 1.0));
-    if (slipMaps.empty()) slipMaps = maps;
+    const std::vector<Map63> slipMaps = makeSlipMaps(options, p_GO, maps);
     const Vector6 direction = reorderToForceFirst(direction_G);
     const double mu = options.mu, kineticMu = findKineticMu(options);
     CompliantCapacity result{kInfinity, kInfinity, kInfinity, {}, {}};
     Progress p = startProgress(contacts, mu);
-    for (std::size_t i = 0; i < contacts.size(); ++i) {
-        if (p.states[i] == CompliantContactState::Sliding) {
-            result.firstSlip = 0;
-            result.events.push_back({0, int(i), CompliantContactState::Sliding});
-        }
-    }
+    recordStartSliding(p, result);
     // Each piece ends at a contact's change of state (at most two per contact), at maxLoad, or
     // with the pending wrench taken up (once per break-loose).
     for (int piece = 0; piece < 8 * int(contacts.size()) + 4; ++piece) {
