@@ -78,6 +78,8 @@ LoadStartGrasp findLoadStartGrasp(const scenario::Scenario& scenario, simulation
     }
     if (start.contacts.empty()) throw NumericalError("compliance prediction: no contact at the load's start");
     start.p_GO = system::toEigenVector(scene.getObject().findMassCenterLocationInGround(state));
+    const SimTK::Transform& X_GO = scene.getObject().getBodyTransform(state);
+    for (const SimTK::Vec3& p_OT : scene.getSurfaceGoals()) start.goals_G.push_back(system::toEigenVector(X_GO * p_OT));
     return start;
 }
 
@@ -90,10 +92,12 @@ std::vector<CompliancePrediction> predictGraspCapacities(const scenario::Scenari
     for (const GraspCapacityRequest& r : requests) {
         grasp::CompliantCapacityOptions o;
         o.slipDistance = settings.slipDistance;
+        o.slipPoints_G = start.goals_G;  // where the ramp measures the slip
         CompliancePrediction p{r, {}, {}, {}};
         o.mu = scenario.contact.dynamicFriction;
         p.dynamicFriction = grasp::calcCompliantCapacity(start.contacts, start.p_GO, toLoadDirection(r), o);
-        o.mu = scenario.contact.staticFriction;
+        o.mu = scenario.contact.staticFriction;  // breaks loose at mu_s, slides at mu_d
+        o.kineticMu = std::min(scenario.contact.dynamicFriction, o.mu);
         p.staticFriction = grasp::calcCompliantCapacity(start.contacts, start.p_GO, toLoadDirection(r), o);
         p.creep = runCreepRamp(scenario, start, r, settings);
         predictions.push_back(p);
@@ -120,7 +124,7 @@ std::string describePrediction(const CompliancePrediction& p) {
                events + ")";
     };
     return p.request.directionName + (p.request.torque ? " torque" : " force") + " (compliance model): mu_d: " +
-           describe(p.dynamicFriction) + "; mu_s: " + describe(p.staticFriction) + "; creep ramp: " + describe(p.creep.capacity);
+           describe(p.dynamicFriction) + "; mu_s (sliding at mu_d): " + describe(p.staticFriction) + "; creep ramp: " + describe(p.creep.capacity);
 }
 
 }  // namespace graspsim::capacity

@@ -37,7 +37,9 @@ TwoSidedLimits calcComplianceLimits(const std::vector<CompliantContact>& contact
     for (int k = 0; k < 6; ++k) {
         CompliantCapacityOptions o;
         o.mu = options.mu;
+        o.kineticMu = options.kineticMu;
         o.slipDistance = options.slipDistance;
+        o.slipPoints_G = options.slipPoints_G;
         o.maxLoad = options.maxLoads[k];
         double onset[2];  // loads along +e_k, -e_k
         for (int side = 0; side < 2; ++side) {

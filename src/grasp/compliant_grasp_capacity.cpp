@@ -41,12 +41,15 @@ struct Progress {
     std::vector<Eigen::Vector3d> tangents;
     Vector6 displacement = Vector6::Zero();  // [dp ; theta] of the object since the start
     double load = 0;
+    // Force-first wrench on the object left unbalanced by friction that dropped from mu to the
+    // kinetic coefficient at a break-loose, still to be taken up by the grasp at the present load.
+    Vector6 pending = Vector6::Zero();
 };
 
-Eigen::Matrix3d findStiffness(const CompliantContact& c, const Progress& p, std::size_t i, double mu) {
+Eigen::Matrix3d findStiffness(const CompliantContact& c, const Progress& p, std::size_t i, double kineticMu) {
     switch (p.states[i]) {
         case CompliantContactState::Sticking: return calcStickingStiffness(c);
-        case CompliantContactState::Sliding: return calcSlidingStiffness(c, p.tangents[i], mu);
+        case CompliantContactState::Sliding: return calcSlidingStiffness(c, p.tangents[i], kineticMu);
         case CompliantContactState::Open: break;
     }
     return Eigen::Matrix3d::Zero();
@@ -116,8 +119,14 @@ void checkDirection(const Vector6& direction_G, const CompliantCapacityOptions& 
     if (!unitTorque && !unitForce) {
         throw InputError("compliant grasp capacity: the load direction must be one unit torque or one unit force");
     }
+    for (const Eigen::Vector3d& p : options.slipPoints_G) {
+        if (!p.allFinite()) throw InputError("compliant grasp capacity: slip points must be finite");
+    }
     if (!(options.mu >= 0) || !(options.slipDistance > 0) || !(options.maxLoad > 0)) {
         throw InputError("compliant grasp capacity: mu must be >= 0, slipDistance and maxLoad > 0");
+    }
+    if (!std::isnan(options.kineticMu) && !(options.kineticMu >= 0 && options.kineticMu <= options.mu)) {
+        throw InputError("compliant grasp capacity: kineticMu must be in [0, mu] (or NaN: mu)");
     }
 }
 
@@ -184,6 +193,79 @@ Eigen::Matrix3d calcStickingStiffness(const CompliantContact& c) {
     return compliance.inverse();
 }
 
+namespace {
+
+// The kinetic friction coefficient of a sliding contact: the options' kineticMu, or mu if unset.
+double findKineticMu(const CompliantCapacityOptions& options) {
+    return std::isnan(options.kineticMu) ? options.mu : options.kineticMu;
+}
+
+// A contact breaks loose: it slides from now on along its tangential force, which drops from the
+// cone at mu to the cone at kineticMu; the friction it sheds is added to the wrench the grasp must
+// still take up at the present load.
+void breakLoose(const CompliantContact& c, const Map63& map, double mu, double kineticMu, std::size_t i, Progress& p) {
+    const double fn = p.forces[i].dot(c.n_G);
+    const Eigen::Vector3d ft = p.forces[i] - fn * c.n_G;
+    if (ft.norm() > 0) p.tangents[i] = ft.normalized();
+    if (!(kineticMu < mu) || !(fn > 0) || !(kineticMu * fn < ft.norm())) return;
+    const Eigen::Vector3d after = fn * c.n_G + kineticMu * fn * p.tangents[i];
+    p.pending += map * (after - p.forces[i]);
+    p.forces[i] = after;
+}
+
+// One piece of the path: the object's displacement rate per unit of the driving parameter (the
+// load, or the fraction of the pending wrench taken up), or false outside the stiffness's range.
+bool solvePiece(const std::vector<CompliantContact>& contacts, const std::vector<Map63>& maps, const Progress& p,
+                double kineticMu, const Vector6& driving, Vector6& rate, std::vector<Eigen::Vector3d>& rates) {
+    std::vector<Eigen::Matrix3d> stiffness;
+    Matrix6 total = Matrix6::Zero();
+    for (std::size_t i = 0; i < contacts.size(); ++i) {
+        stiffness.push_back(findStiffness(contacts[i], p, i, kineticMu));
+        total += maps[i] * stiffness[i] * maps[i].transpose();
+    }
+    if (!solveRate(total, driving, rate)) return false;
+    rates.clear();
+    for (std::size_t i = 0; i < contacts.size(); ++i) rates.push_back(-stiffness[i] * (maps[i].transpose() * rate));
+    return true;
+}
+
+// The maps of the material points whose displacement is the slip: the options' slip points, or
+// the contacts' (`contactMaps`).
+std::vector<Map63> makeSlipMaps(const CompliantCapacityOptions& options, const Eigen::Vector3d& p_GO,
+                                const std::vector<Map63>& contactMaps) {
+    if (options.slipPoints_G.empty()) return contactMaps;
+    std::vector<Map63> maps;
+    for (const Eigen::Vector3d& p_GS : options.slipPoints_G) maps.push_back(calcContactWrenchMap(p_GS - p_GO, 1.0));
+    return maps;
+}
+
+// Contacts outside their cone at the start slide from the start.
+void recordStartSliding(const Progress& p, CompliantCapacity& result) {
+    for (std::size_t i = 0; i < p.states.size(); ++i) {
+        if (p.states[i] == CompliantContactState::Sliding) {
+            result.firstSlip = 0;
+            result.events.push_back({0, int(i), CompliantContactState::Sliding});
+        }
+    }
+}
+
+void applyEvents(const std::vector<CompliantContact>& contacts, const std::vector<Map63>& maps, double mu, double kineticMu,
+                 const std::vector<CompliantCapacityEvent>& events, Progress& p, CompliantCapacity& result) {
+    for (CompliantCapacityEvent e : events) {
+        const std::size_t i = std::size_t(e.contact);
+        e.load = p.load;
+        p.states[i] = e.state;
+        if (e.state == CompliantContactState::Open) p.forces[i].setZero();
+        if (e.state == CompliantContactState::Sliding) {
+            breakLoose(contacts[i], maps[i], mu, kineticMu, i, p);
+            result.firstSlip = std::min(result.firstSlip, p.load);
+        }
+        result.events.push_back(e);
+    }
+}
+
+}  // namespace
+
 CompliantCapacity calcCompliantCapacity(const std::vector<CompliantContact>& contacts, const Eigen::Vector3d& p_GO,
                                         const Eigen::Matrix<double, 6, 1>& direction_G,
                                         const CompliantCapacityOptions& options) {
@@ -193,51 +275,37 @@ CompliantCapacity calcCompliantCapacity(const std::vector<CompliantContact>& con
         checkContact(contacts[i], i);
         maps.push_back(calcContactWrenchMap(contacts[i].p_GC - p_GO, 1.0));  // force first, moment in N m
     }
+    const std::vector<Map63> slipMaps = makeSlipMaps(options, p_GO, maps);
     const Vector6 direction = reorderToForceFirst(direction_G);
-    const double mu = options.mu;
+    const double mu = options.mu, kineticMu = findKineticMu(options);
     CompliantCapacity result{kInfinity, kInfinity, kInfinity, {}, {}};
     Progress p = startProgress(contacts, mu);
-    for (std::size_t i = 0; i < contacts.size(); ++i) {
-        if (p.states[i] == CompliantContactState::Sliding) {
-            result.firstSlip = 0;
-            result.events.push_back({0, int(i), CompliantContactState::Sliding});
-        }
-    }
-    for (int piece = 0; piece < 4 * int(contacts.size()) + 4 && p.load < options.maxLoad; ++piece) {
-        std::vector<Eigen::Matrix3d> stiffness;
-        Matrix6 total = Matrix6::Zero();
-        for (std::size_t i = 0; i < contacts.size(); ++i) {
-            stiffness.push_back(findStiffness(contacts[i], p, i, mu));
-            total += maps[i] * stiffness[i] * maps[i].transpose();
-        }
+    recordStartSliding(p, result);
+    // Each piece ends at a contact's change of state (at most two per contact), at maxLoad, or
+    // with the pending wrench taken up (once per break-loose).
+    for (int piece = 0; piece < 8 * int(contacts.size()) + 4; ++piece) {
+        const bool takingUp = !p.pending.isZero(0);
+        if (!takingUp && !(p.load < options.maxLoad)) break;
         Vector6 rate;
-        if (!solveRate(total, direction, rate)) {
-            result.ultimate = p.load;
+        std::vector<Eigen::Vector3d> rates;
+        if (!solvePiece(contacts, maps, p, kineticMu, takingUp ? p.pending : direction, rate, rates)) {
+            result.ultimate = p.load;  // the grasp cannot take up the load (or the friction it shed)
             break;
         }
-        std::vector<Eigen::Vector3d> rates;
-        for (std::size_t i = 0; i < contacts.size(); ++i) rates.push_back(-stiffness[i] * (maps[i].transpose() * rate));
         std::vector<CompliantCapacityEvent> events;
-        const double step = findNextEvent(contacts, p, rates, mu, options.maxLoad - p.load, events);
+        const double step = findNextEvent(contacts, p, rates, mu, takingUp ? 1.0 : options.maxLoad - p.load, events);
         if (!std::isfinite(result.onset)) {
-            const double s = findOnsetStep(maps, p.displacement, rate, options.slipDistance, step);
-            if (s < step) result.onset = p.load + s;
+            const double s = findOnsetStep(slipMaps, p.displacement, rate, options.slipDistance, step);
+            if (s < step) result.onset = p.load + (takingUp ? 0.0 : s);  // taking up happens at the present load
         }
-        p.load += step;
+        if (takingUp) {
+            p.pending *= events.empty() ? 0.0 : 1 - step;
+        } else {
+            p.load += step;
+        }
         p.displacement += step * rate;
         for (std::size_t i = 0; i < contacts.size(); ++i) p.forces[i] += step * rates[i];
-        for (CompliantCapacityEvent e : events) {
-            const std::size_t i = std::size_t(e.contact);
-            e.load = p.load;
-            p.states[i] = e.state;
-            if (e.state == CompliantContactState::Open) p.forces[i].setZero();
-            if (e.state == CompliantContactState::Sliding) {
-                const Eigen::Vector3d ft = p.forces[i] - p.forces[i].dot(contacts[i].n_G) * contacts[i].n_G;
-                if (ft.norm() > 0) p.tangents[i] = ft.normalized();
-                result.firstSlip = std::min(result.firstSlip, p.load);
-            }
-            result.events.push_back(e);
-        }
+        applyEvents(contacts, maps, mu, kineticMu, events, p, result);
     }
     if (std::isfinite(result.ultimate)) result.onset = std::min(result.onset, result.ultimate);
     result.forces_G = p.forces;

@@ -74,6 +74,17 @@ TEST(ComplianceLimits, PinchAcrossItsAxisGivesTwiceMuNOnBothSidesWhateverTheWeig
     EXPECT_EQ(limits.upper[0], 0);
 }
 
+// With kinetic friction below static the pinch's sides across its axis stay 2 mu_s N: its two
+// contacts reach the cone at the same load (equal shares), both break loose together, and the
+// 2 mu_d N left cannot take up what they shed, so the grasp goes where mu_s says.
+TEST(ComplianceLimits, PinchContactsBreakingLooseTogetherKeepTheStaticLimit) {
+    ComplianceLimitOptions o = makeOptions();
+    o.kineticMu = 0.5 * kMu;
+    const TwoSidedLimits limits = calcComplianceLimits(makeStiffPinch(), Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero(), o);
+    EXPECT_NEAR(limits.lower[4], 2 * kMu * kN, 1e-9);
+    EXPECT_NEAR(limits.upper[4], 2 * kMu * kN, 1e-9);
+}
+
 TEST(ComplianceLimits, PinchAlongItsAxisIsAsymmetric) {
     const TwoSidedLimits limits = calcComplianceLimits(makeSoftPinch(), Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero(), makeOptions());
     // A load +x needs the force -s on the object: the lower side; a load -x the upper one.

@@ -148,6 +148,98 @@ TEST(CompliantGraspCapacity, RingOnsetFromSeriesStiffness) {
     EXPECT_NEAR(c.ultimate, 4 * 0.9 * N, 1e-9);
 }
 
+// Static and kinetic friction (break loose at mu_s, slide at mu_d): a ring of four contacts in the
+// xz-plane, a weak opposite pair (N_a, on x) and a strong one (N_b, on z), all with the same
+// tangential stiffness k = 1 / (c_f + 1 / k_t), loaded along its axis y (tangent everywhere, so no
+// normal force changes). Closed forms: equal shares F / 4 while all stick, so the weak pair breaks
+// loose at F1 = 4 mu_s N_a; its friction drops to mu_d N_a, and the strong pair takes up the
+// 2 (mu_s - mu_d) N_a it shed at the same load (the ring jumps (mu_s - mu_d) N_a / k); from there
+// the strong pair alone carries the load beyond the weak pair's 2 mu_d N_a and breaks loose at
+// F2 = 2 mu_d N_a + 2 mu_s N_b, after which the ring holds only 2 mu_d (N_a + N_b) < F2: the
+// ultimate. If the take-up alone brings the strong pair to its cone (mu_s N_a + (mu_s - mu_d) N_a
+// >= mu_s N_b), everything goes at F1.
+std::vector<CompliantContact> makeTwoLevelRing(double weak, double strong, double kn, double cf) {
+    const double R = 0.04;
+    std::vector<CompliantContact> ring;
+    for (int k = 0; k < 4; ++k) {
+        const double angle = 0.5 * kPi * k;
+        const Eigen::Vector3d p(R * std::cos(angle), 0, R * std::sin(angle));
+        ring.push_back(makeContact(p, -p, k % 2 == 0 ? weak : strong, kn, cf));
+    }
+    return ring;
+}
+
+TEST(CompliantGraspCapacity, KineticFrictionSheddingIsTakenUpAtTheSameLoad) {
+    const double muS = 0.9, muD = 0.6, Na = 2, Nb = 5, kn = 6000, cf = 4e-4;
+    const double k = 1 / (cf + 1 / (2.0 / 3.0 * kn));
+    const double F1 = 4 * muS * Na, F2 = 2 * muD * Na + 2 * muS * Nb;  // 7.2 N, 11.4 N
+    const double atF1 = F1 / (4 * k), jump = (muS - muD) * Na / k;  // 1.17 mm, 0.39 mm
+    CompliantCapacityOptions options;
+    options.mu = muS;
+    options.kineticMu = muD;
+    options.slipDistance = 2e-3;  // after the jump: x = atF1 + jump + (F - F1) / (2 k)
+    const auto ring = makeTwoLevelRing(Na, Nb, kn, cf);
+    const CompliantCapacity c = calcCompliantCapacity(ring, Eigen::Vector3d::Zero(), force({0, -1, 0}), options);
+    EXPECT_NEAR(c.firstSlip, F1, 1e-9);
+    EXPECT_NEAR(c.ultimate, F2, 1e-9);
+    EXPECT_NEAR(c.onset, F1 + (options.slipDistance - atF1 - jump) * 2 * k, 1e-9);  // 8.55 N
+    options.slipDistance = 0.5 * (2 * atF1 + jump);  // reached during the take-up: at F1
+    EXPECT_NEAR(calcCompliantCapacity(ring, Eigen::Vector3d::Zero(), force({0, -1, 0}), options).onset, F1, 1e-9);
+    // Without the drop (kineticMu = mu, or unset) all four slide only at mu_s (N_a + N_b) each pair.
+    options.kineticMu = muS;
+    EXPECT_NEAR(calcCompliantCapacity(ring, Eigen::Vector3d::Zero(), force({0, -1, 0}), options).ultimate, 2 * muS * (Na + Nb), 1e-9);
+    // A strong pair too weak for the take-up (mu_s Na + (mu_s - mu_d) Na = 2.4 N >= mu_s Nb = 2.25 N)
+    // breaks loose during it: the cascade ends the grasp at F1.
+    options.kineticMu = muD;
+    const CompliantCapacity cascade = calcCompliantCapacity(makeTwoLevelRing(Na, 2.5, kn, cf), Eigen::Vector3d::Zero(), force({0, -1, 0}), options);
+    EXPECT_NEAR(cascade.ultimate, F1, 1e-9);
+    EXPECT_EQ(cascade.events.size(), 4u);
+}
+
+// kineticMu equal to mu is the single-coefficient model bit for bit, on a grasp where contacts slide
+// one after another and open (the ring of six with unequal forces, loaded across its axis).
+TEST(CompliantGraspCapacity, KineticFrictionEqualToMuChangesNothing) {
+    std::vector<CompliantContact> ring;
+    for (int k = 0; k < 6; ++k) {
+        const double angle = 2 * kPi * k / 6 + 0.3;
+        const Eigen::Vector3d p(0.04 * std::cos(angle), 0.01 * k, 0.04 * std::sin(angle));
+        ring.push_back(makeContact(p, -Eigen::Vector3d(p.x(), 0, p.z()), 2 + k, 4000 + 500 * k, 3e-4));
+    }
+    for (const Vector6& load : {force({1, 0, 0}), force({0, 0, -1}), torque({0, 1, 0}), torque({1, 0, 0})}) {
+        CompliantCapacityOptions options;
+        options.mu = 0.8;
+        const CompliantCapacity single = calcCompliantCapacity(ring, Eigen::Vector3d::Zero(), load, options);
+        options.kineticMu = 0.8;
+        const CompliantCapacity both = calcCompliantCapacity(ring, Eigen::Vector3d::Zero(), load, options);
+        EXPECT_EQ(single.onset, both.onset);
+        EXPECT_EQ(single.ultimate, both.ultimate);
+        EXPECT_EQ(single.events.size(), both.events.size());
+    }
+}
+
+// Where the slip is measured: a torque T about z twists the pinch (contacts at x = +-d) by
+// theta = T / (2 k d^2), k = 1 / (c_f + 1 / k_t) each contact's tangential stiffness along y, and moves
+// a material point at distance rho from the z axis by rho theta. At the contacts (rho = d) the
+// onset is 2 k d s; at a goal point twice as far out, k d s; on the axis the slip never comes.
+TEST(CompliantGraspCapacity, OnsetIsMeasuredAtTheSlipPoints) {
+    const double N = 5, kn = 4000, cf = 3e-4, d = 0.02;
+    const double k = 1 / (cf + 1 / (2.0 / 3.0 * kn));
+    CompliantCapacityOptions options;
+    options.mu = 5;  // no contact slides before the onsets below
+    options.slipDistance = 1e-3;
+    const auto pinch = makePinch(N, kn, kn, cf, cf);
+    EXPECT_NEAR(calcCompliantCapacity(pinch, Eigen::Vector3d::Zero(), torque({0, 0, 1}), options).onset,
+                2 * k * d * options.slipDistance, 1e-12);
+    options.slipPoints_G = {Eigen::Vector3d(0, 2 * d, 0.01)};
+    EXPECT_NEAR(calcCompliantCapacity(pinch, Eigen::Vector3d::Zero(), torque({0, 0, 1}), options).onset,
+                k * d * options.slipDistance, 1e-12);
+    // On the axis the slip never comes: the onset is the ultimate, both contacts at their cones.
+    options.slipPoints_G = {Eigen::Vector3d(0, 0, 0.03)};
+    const CompliantCapacity onAxis = calcCompliantCapacity(pinch, Eigen::Vector3d::Zero(), torque({0, 0, 1}), options);
+    EXPECT_NEAR(onAxis.ultimate, 2 * options.mu * N * d, 1e-12);
+    EXPECT_EQ(onAxis.onset, onAxis.ultimate);
+}
+
 TEST(CompliantGraspCapacity, RejectsBadInput) {
     auto pinch = makePinch(5, 4000, 4000, 0, 0);
     CompliantCapacityOptions options;
@@ -161,6 +253,8 @@ TEST(CompliantGraspCapacity, RejectsBadInput) {
     CompliantContact rigid = makeContact({0, 0, 0}, {1, 0, 0}, 5, 4000, 0);
     rigid.tangentialStiffness = std::numeric_limits<double>::infinity();
     EXPECT_THROW(calcStickingStiffness(rigid), InputError);
+    options.kineticMu = options.mu + 0.1;  // kinetic friction above static
+    EXPECT_THROW(calcCompliantCapacity(makePinch(5, 4000, 4000, 0, 0), Eigen::Vector3d::Zero(), force({0, 1, 0}), options), InputError);
 }
 
 }  // namespace

@@ -36,7 +36,7 @@ struct CompliancePredictionSettings {
 struct CompliancePrediction {
     GraspCapacityRequest request;
     grasp::CompliantCapacity dynamicFriction;  ///< with mu_d
-    grasp::CompliantCapacity staticFriction;   ///< with mu_s (the regularized law's peak)
+    grasp::CompliantCapacity staticFriction;   ///< breaking loose at mu_s (the regularized law's peak), sliding at mu_d
     /// The creep ramp at the request's rate (the default rate if 0), with the scenario's friction law.
     grasp::CompliantRamp creep;
 };
@@ -49,6 +49,7 @@ struct LoadStartGrasp {
     std::vector<grasp::CompliantContact> contacts;
     std::vector<std::string> bodies;  ///< the finger segment of each contact
     Eigen::Vector3d p_GO = Eigen::Vector3d::Zero();  ///< the object's centre of mass (m, in G)
+    std::vector<Eigen::Vector3d> goals_G;  ///< the grasp goals' material points (m, in G)
 };
 
 /// Runs `scenario` in full compliant contact (the mode and contact of `options` are overridden;

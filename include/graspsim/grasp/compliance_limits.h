@@ -27,14 +27,21 @@
 
 #include <Eigen/Core>
 
+#include <limits>
 #include <vector>
 
 namespace graspsim::grasp {
 
 /// Options of calcComplianceLimits.
 struct ComplianceLimitOptions {
-    double mu = 0.7;             ///< friction coefficient of every contact's cone (>= 0)
+    double mu = 0.7;             ///< friction coefficient of every contact's cone (>= 0): where it breaks loose
+    /// Kinetic friction coefficient of a contact once it slides, in [0, mu]; NaN (default): mu
+    /// (CompliantCapacityOptions::kineticMu).
+    double kineticMu = std::numeric_limits<double>::quiet_NaN();
     double slipDistance = 2e-3;  ///< m (> 0): the displacement that counts as slip onset
+    /// Where the slip is measured (m, in G; CompliantCapacityOptions::slipPoints_G): the grasp
+    /// goals; empty: the contact points.
+    std::vector<Eigen::Vector3d> slipPoints_G;
     /// Per axis (N m for 0-2, N for 3-5; each > 0): the most a side's limit can be.
     Eigen::Matrix<double, 6, 1> maxLoads = Eigen::Matrix<double, 6, 1>::Constant(1e3);
 };

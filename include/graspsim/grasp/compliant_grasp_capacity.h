@@ -12,17 +12,24 @@
 /// this file's solver) moves C_i's material point by u_i = dp + theta x r_i and changes
 ///
 ///     sticking:  df_i = -K_i u_i,   K_i = (C_f,i + n n^T / k_n + (1 - n n^T) / k_t)^-1
-///     sliding:   df_i = -a_i (n_i . u_i) / (1 / k_n + n_i^T C_f,i a_i),  a_i = n_i + mu t_i
-///                (friction at the cone's edge along the fixed unit tangent t_i; only the
+///     sliding:   df_i = -a_i (n_i . u_i) / (1 / k_n + n_i^T C_f,i a_i),  a_i = n_i + mu_k t_i
+///                (friction at the kinetic cone's edge along the fixed unit tangent t_i; only the
 ///                normal spring resists)
 ///     open:      f_i = 0.
+///
+/// Static and kinetic friction: a contact breaks loose at the cone mu (static) and slides at
+/// mu_k = kineticMu <= mu, as Coulomb's two coefficients and full contact's regularized law (its
+/// peak mu_s at the transition speed, mu_d beyond) have it. At the break-loose its friction drops
+/// from mu f_n to mu_k f_n; the grasp takes up the shed force at the same load (the object moves
+/// by K^-1 D_i (f_after - f_before)), which can bring further contacts to their cones (a cascade)
+/// or leave the stiffness's range: the grasp gives way at that load.
 ///
 /// A load s d (d a unit force or a unit torque about O's origin) is balanced when
 /// sum_i D_i K_i D_i^T delta = d s (D_i = [I ; r_i^], the contact's wrench map). The solver
 /// follows the load piecewise linearly: in each piece it solves for d delta / ds, finds the next
 /// event (a sticking contact reaching its friction cone |f_t| = mu f_n: it slides from then on
-/// with its friction along the tangential force it had; or a contact's normal force reaching
-/// zero: it opens), and goes on with the new states. The grasp can carry no more when the load
+/// with its friction, mu_k f_n, along the tangential force it had; or a contact's normal force
+/// reaching zero: it opens), takes up what a break-loose shed, and goes on with the new states. The grasp can carry no more when the load
 /// direction leaves the range of the stiffness matrix (the remaining contacts let the object move
 /// freely along it): that load is the ultimate capacity.
 ///
@@ -34,6 +41,7 @@
 
 #include <Eigen/Core>
 
+#include <limits>
 #include <vector>
 
 namespace graspsim::grasp {
@@ -64,8 +72,16 @@ struct CompliantCapacityEvent {
 
 /// Options of calcCompliantCapacity.
 struct CompliantCapacityOptions {
-    double mu = 0.7;              ///< friction coefficient of every contact (>= 0)
+    double mu = 0.7;              ///< friction coefficient of every contact (>= 0): where it breaks loose
+    /// Kinetic friction coefficient of a contact once it slides, in [0, mu]; NaN (default): mu.
+    /// Below mu, a contact that breaks loose sheds (mu - kineticMu) f_n of friction at once, and
+    /// the grasp takes that up at the same load (file comment).
+    double kineticMu = std::numeric_limits<double>::quiet_NaN();
     double slipDistance = 2e-3;   ///< m: the displacement that counts as slip onset (the ramp's)
+    /// The object's material points whose largest displacement measures the onset (m, in G, at
+    /// the load's start): the grasp goals, where the capacity ramp measures it. Empty: the contact
+    /// points.
+    std::vector<Eigen::Vector3d> slipPoints_G;
     double maxLoad = 1e3;         ///< N or N m: the model is followed this far at most
 };
 
@@ -74,8 +90,9 @@ struct CompliantCapacityOptions {
 struct CompliantCapacity {
     /// The first contact reaches its friction cone.
     double firstSlip = 0;
-    /// The largest displacement of a contact point's material point reaches slipDistance (the
-    /// figure comparable to the ramp's slip onset, which measures at the grasp goals).
+    /// The largest displacement of the material points at the options' slipPoints_G (or at the
+    /// contacts) reaches slipDistance: the figure comparable to the ramp's slip onset, which
+    /// measures at the grasp goals.
     double onset = 0;
     /// The grasp can carry no more along the direction.
     double ultimate = 0;
