@@ -316,8 +316,7 @@ void GraspSwitch::checkEngage(SimTK::State& state) const {
     // back because the load reached them, the grasp stays in full contact, which decides the slip
     // (re-engaging under the load, with limits re-computed there, counted the model's 2 mm afresh).
     const std::optional<ComplianceReleaseLimits>& limits = getRecord(state).releaseLimits;
-    if (limits) context_.model.getSystem().realize(state, SimTK::Stage::Acceleration);
-    if (limits && !findAxisAtLimit(calcHeldWrenchInO(context_, state, reports), *limits).empty()) return;
+    if (limits && !findAxisAtLimit(calcContactWrenchInO(context_, state, reports), *limits).empty()) return;
     engage(state, q, reports);
 }
 
