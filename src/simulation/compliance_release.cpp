@@ -89,9 +89,9 @@ std::string findReengageObstacle(const ApproximationContext& context, const SimT
     }
     context.model.getSystem().realize(state, SimTK::Stage::Acceleration);
     // Engaging takes the held wrench off the contacts at once and the bushing picks it up from
-    // zero force, critically damped: its reaction k x + c v then peaks at (1 + e^-2) times the
-    // wrench (at omega t = 2), and a grasp re-engaged within that of a limit was released again
-    // by its own pick-up (the ball's x ramp: every 10 ms from 3.56 s, each 0.7 ms later).
+    // zero force, critically damped: its reaction k x + c v peaks at (1 + e^-2) times the wrench
+    // (at omega t = 2), so a grasp engaged within that of a limit would be released by its own
+    // pick-up.
     const double pickUpPeak = 1 + std::exp(-2.0);
     return findAxisAtLimit(pickUpPeak * calcHeldWrenchInO(context, state, reports), limits);
 }

@@ -58,10 +58,11 @@ double findGoalSpeedInPalm(const ApproximationContext& context, const SimTK::Sta
 /// load near the limits it was released at: the object still moves in the palm faster than the
 /// contacts' transition velocity (the grasp is still taking up its load, the give after the
 /// hand-back, and is not firm), or the wrench the attachment would hold (calcHeldWrenchInO),
-/// times the peak of the critically damped bushing's pick-up of it (1 + e^-2), is outside `limits`. Without them the switch re-engaged during the give, where the contacts'
-/// wrench lags the load, and released again at the next check, 5 to 19 times; each time the
-/// contacts got the load anew as a step (docs/capacity.md, "The hand-back's step"). Realizes
-/// `state` to Stage::Acceleration.
+/// times the peak of the critically damped bushing's pick-up of it (1 + e^-2), is outside
+/// `limits`. Re-engaged during the give, where the contacts' wrench lags the load, the bushing
+/// took the whole load, passed the limits and released again, and each release gave the contacts
+/// the load anew as a step (docs/capacity.md, "The hand-back's step"). Realizes `state` to
+/// Stage::Acceleration.
 std::string findReengageObstacle(const ApproximationContext& context, const SimTK::State& state,
                                  const std::vector<contact::ContactReport>& reports, const ComplianceReleaseLimits& limits);
 
