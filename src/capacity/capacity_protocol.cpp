@@ -65,7 +65,7 @@ CapacityTrace runLoadedScene(const LoadedRunFactory& makeRun, const simulation::
 }
 
 CapacityTrace runRamp(const LoadedRunFactory& makeRun, const RampProtocol& p) {
-    const simulation::LoadRampSpec spec{p.direction, p.torque, p.start, 0.0, p.rate};
+    const simulation::LoadRampSpec spec{p.direction, p.torque, p.start, p.initial, p.rate};
     return runLoadedScene(makeRun, spec, p.start + p.maxDuration, p.sampleInterval, p.criteria);
 }
 

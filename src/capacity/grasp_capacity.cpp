@@ -198,6 +198,7 @@ GraspCapacity measureGraspCapacityRamp(const scenario::Scenario& scenario, const
     protocol.torque = request.torque;
     protocol.start = c.start;
     protocol.rate = c.rate;
+    protocol.initial = request.initialLoad;
     protocol.maxDuration = request.maxRampDuration;
     protocol.sampleInterval = request.sampleInterval;
     protocol.criteria = request.criteria;

@@ -26,6 +26,7 @@ struct CapacityCommand::Options {
     std::string rate;
     std::string method = "ramp";
     std::string maxDuration = "4";
+    std::string initialLoad;
     std::string hold = "1";
     std::string load;
     std::string guess;
@@ -78,6 +79,8 @@ CapacityCommand::CapacityCommand(CLI::App& app) : options_(std::make_shared<Opti
     command_->add_option("--step-size", o.stepSize,
                          "implicit: longest step, implicit-fixed: the step, in s, > 0 (default: the scenario's simulation.step_size)");
     command_->add_option("--max-duration", o.maxDuration, "ramp: longest ramp, s (default 4)");
+    command_->add_option("--initial-load", o.initialLoad,
+                         "ramp: a load applied at once at the ramp's start, from which the ramp grows (N, N m with --torque; default 0)");
     command_->add_option("--hold", o.hold, "bisection, constant: how long each constant load is held, s (default 1)");
     command_->add_option("--load", o.load, "constant: the load, N (N m with --torque), > 0, applied at once at the load's start");
     command_->add_option("--guess", o.guess, "bisection: first load to try, N or N m (default: rate x 1 s)");
@@ -200,12 +203,15 @@ CapacityCommand::Plan CapacityCommand::makePlan() const {
     if (plan.compliance && !o.out.empty()) throw InputError("--out: --method compliance writes no files; leave --out out");
     const double rate = parsePositive(o.rate, "--rate", "the rate", 0);
     const double maxDuration = parsePositive(o.maxDuration, "--max-duration", "the ramp's duration (s)", 4);
+    const double initialLoad = parsePositive(o.initialLoad, "--initial-load", "the initial load", 0);
+    if (initialLoad > 0 && o.method != "ramp") throw InputError("--initial-load: only with --method ramp (its step before the ramp)");
     plan.hold = parsePositive(o.hold, "--hold", "the hold (s)", 1);
     plan.guess = parsePositive(o.guess, "--guess", "the first load", 0);
     plan.requests = makeRequests(o.direction, o.torque);
     for (capacity::GraspCapacityRequest& r : plan.requests) {
         r.rate = rate;
         r.maxRampDuration = maxDuration;
+        r.initialLoad = initialLoad;
     }
     plan.torqueRateFromForceRate = o.direction == "all";
     return plan;

@@ -51,4 +51,49 @@ SimTK::Vec6 calcContactWrenchInO(const ApproximationContext& context, const SimT
     return result;
 }
 
+SimTK::Vec6 calcHeldWrenchInO(const ApproximationContext& context, const SimTK::State& state,
+                              const std::vector<contact::ContactReport>& reports) {
+    const SimTK::MobilizedBody& object = context.object;
+    const SimTK::MobilizedBody& palm = context.palm;
+    const SimTK::Transform& X_GO = object.getBodyTransform(state);
+    const SimTK::Vec3 p_HO = palm.findStationAtGroundPoint(state, X_GO.p());
+    const SimTK::Vec3 a_rel_G = object.getBodyOriginAcceleration(state) - palm.findStationAccelerationInGround(state, p_HO);
+    const SimTK::Vec3 alpha_rel_G = object.getBodyAngularAcceleration(state) - palm.getBodyAngularAcceleration(state);
+    const SimTK::MassProperties& mp = object.getBodyMassProperties(state);  // about O's origin, in O
+    const SimTK::Vec3 force_O = mp.getMass() * (~X_GO.R() * a_rel_G);
+    const SimTK::Vec3 moment_O = mp.getUnitInertia().asSymMat33() * mp.getMass() * (~X_GO.R() * alpha_rel_G);
+    SimTK::Vec6 held = calcContactWrenchInO(context, state, reports);
+    for (int k = 0; k < 3; ++k) held[k] -= moment_O[k], held[k + 3] -= force_O[k];
+    return held;
+}
+
+double findGoalSpeedInPalm(const ApproximationContext& context, const SimTK::State& state) {
+    double fastest = 0;
+    for (const SimTK::Vec3& p_OT : context.goals.getSurfacePoints()) {
+        const SimTK::Vec3 p_GT = context.object.findStationLocationInGround(state, p_OT);
+        const SimTK::Vec3 p_HT = context.palm.findStationAtGroundPoint(state, p_GT);
+        const SimTK::Vec3 v = context.object.findStationVelocityInGround(state, p_OT) - context.palm.findStationVelocityInGround(state, p_HT);
+        fastest = std::max(fastest, v.norm());
+    }
+    return fastest;
+}
+
+std::string findReengageObstacle(const ApproximationContext& context, const SimTK::State& state,
+                                 const std::vector<contact::ContactReport>& reports, const ComplianceReleaseLimits& limits) {
+    context.model.getSystem().realize(state, SimTK::Stage::Velocity);
+    const double speed = findGoalSpeedInPalm(context, state), sticking = context.contactParameters.transitionVelocity;
+    if (speed >= sticking) {
+        char text[120];
+        std::snprintf(text, sizeof text, "object moving in the palm at %.6g m/s (transition velocity %.6g m/s)", speed, sticking);
+        return text;
+    }
+    context.model.getSystem().realize(state, SimTK::Stage::Acceleration);
+    // Engaging takes the held wrench off the contacts at once and the bushing picks it up from
+    // zero force, critically damped: its reaction k x + c v peaks at (1 + e^-2) times the wrench
+    // (at omega t = 2), so a grasp engaged within that of a limit would be released by its own
+    // pick-up.
+    const double pickUpPeak = 1 + std::exp(-2.0);
+    return findAxisAtLimit(pickUpPeak * calcHeldWrenchInO(context, state, reports), limits);
+}
+
 }  // namespace graspsim::simulation

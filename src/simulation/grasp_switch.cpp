@@ -312,11 +312,11 @@ void GraspSwitch::checkEngage(SimTK::State& state) const {
     const std::vector<GraspEvent>& events = getRecord(state).events;
     if (!events.empty() && events.back().kind == GraspEventKind::Release && !(state.getTime() > events.back().time)) return;
     if (!(q > 0 && q >= getRecord(state).qThreshold)) return;
-    // Not while the grasp already carries the compliance limits of the first engagement: handed
-    // back because the load reached them, the grasp stays in full contact, which decides the slip
-    // (re-engaging under the load, with limits re-computed there, counted the model's 2 mm afresh).
+    // Not while the grasp already carries the compliance limits of the first engagement, nor while
+    // it is still taking up its load (findReengageObstacle): handed back because the load reached
+    // them, the grasp stays in full contact, which decides the slip.
     const std::optional<ComplianceReleaseLimits>& limits = getRecord(state).releaseLimits;
-    if (limits && !findAxisAtLimit(calcContactWrenchInO(context_, state, reports), *limits).empty()) return;
+    if (limits && !findReengageObstacle(context_, state, reports, *limits).empty()) return;
     engage(state, q, reports);
 }
 

@@ -43,6 +43,9 @@ struct RampProtocol {
     bool torque = false;
     double start = 0;           ///< s
     double rate = 1;            ///< N/s or N m/s, > 0
+    /// N or N m applied at once at `start`, from which the ramp grows (a step load followed by the
+    /// ramp: how the grasp approximation's hand-back gives the contacts the load it carried)
+    double initial = 0;
     double maxDuration = 4;     ///< s of ramp at most
     double sampleInterval = 0.005;  ///< s
     SlipCriteria criteria;

@@ -29,6 +29,7 @@ struct GraspCapacityRequest {
     bool torque = false;                  ///< a torque about the object's centre of mass instead of a force
     double rate = 0;                      ///< N/s or N m/s; 0: findDefaultRate
     double maxRampDuration = 4;           ///< s
+    double initialLoad = 0;               ///< ramp: N or N m applied at once at its start (RampProtocol::initial)
     double sampleInterval = 0.005;        ///< s
     SlipCriteria criteria;
 };

@@ -38,4 +38,32 @@ double findLimitMargin(const SimTK::Vec6& wrench, const ComplianceReleaseLimits&
 SimTK::Vec6 calcContactWrenchInO(const ApproximationContext& context, const SimTK::State& state,
                                  const std::vector<contact::ContactReport>& reports);
 
+/// The wrench the attachment would carry if it engaged in `state` and held the object at rest in
+/// the palm: the contacts' wrench (calcContactWrenchInO) less the object's inertial wrench
+/// relative to the palm, m (a_O - a_P) and I (alpha_O - alpha_H) with a_P the acceleration of the
+/// palm point at O's origin (frame and order as calcContactWrenchInO; velocity products left out).
+/// Object: m a_O = C + m g + E (contacts C, every other load E); held: m a_P = R + m g + E, so
+/// R = C - m (a_O - a_P). In a grasp at rest the two are the contacts' wrench; while the grasp
+/// is still taking up a load (the give after a release), the contacts' wrench alone lags the load
+/// and the inertial part makes up the rest. Needs Stage::Acceleration.
+SimTK::Vec6 calcHeldWrenchInO(const ApproximationContext& context, const SimTK::State& state,
+                              const std::vector<contact::ContactReport>& reports);
+
+/// The largest speed (m/s) relative to the palm of the object's material points at the grasp
+/// goals (the points the capacity protocol measures slip at). Needs Stage::Velocity.
+double findGoalSpeedInPalm(const ApproximationContext& context, const SimTK::State& state);
+
+/// Why the switch must not engage again in `state` after handing the object back at `limits`
+/// (the first engagement's); empty when it may. Two conditions, both about a grasp that carries a
+/// load near the limits it was released at: the object still moves in the palm faster than the
+/// contacts' transition velocity (the grasp is still taking up its load, the give after the
+/// hand-back, and is not firm), or the wrench the attachment would hold (calcHeldWrenchInO),
+/// times the peak of the critically damped bushing's pick-up of it (1 + e^-2), is outside
+/// `limits`. Re-engaged during the give, where the contacts' wrench lags the load, the bushing
+/// took the whole load, passed the limits and released again, and each release gave the contacts
+/// the load anew as a step (docs/capacity.md, "The hand-back's step"). Realizes `state` to
+/// Stage::Acceleration.
+std::string findReengageObstacle(const ApproximationContext& context, const SimTK::State& state,
+                                 const std::vector<contact::ContactReport>& reports, const ComplianceReleaseLimits& limits);
+
 }  // namespace graspsim::simulation

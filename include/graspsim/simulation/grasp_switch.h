@@ -63,7 +63,9 @@
 ///    compliance limits (with the thesis's box still the constraint's own limits, nothing slides
 ///    before that; full contact, restored from the same state, then decides whether the object
 ///    slips). The limits are those of the first engagement, kept for the run, and the switch does
-///    not engage again while the contacts' wrench on the object is outside them). Nothing at the release changes a velocity (the constraint and the locks are switched
+///    not engage again while the wrench it would hold is outside them, nor while the object still
+///    moves in the palm faster than the contacts' transition velocity: compliance_release.h,
+///    findReengageObstacle). Nothing at the release changes a velocity (the constraint and the locks are switched
 ///    off, contact comes back as a force), so the object's velocity is continuous; the event
 ///    records the measured jump (GraspEvent::velocityJump) to show it.
 ///
