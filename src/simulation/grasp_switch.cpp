@@ -73,8 +73,6 @@ ComplianceReleaseLimits calcComplianceLimits(const ApproximationContext& context
     grasp::ComplianceLimitOptions options;
     options.mu = mu;
     options.kineticMu = std::min(mu, context.contactParameters.dynamicFriction);  // broken loose, a contact slides at mu_d
-    const SimTK::Transform& X_GO = context.object.getBodyTransform(state);  // the slip as the capacity ramp measures it
-    for (const SimTK::Vec3& p_OT : context.goals.getSurfacePoints()) options.slipPoints_G.push_back(system::toEigenVector(X_GO * p_OT));
     const SimTK::Vec6 box = calcFrictionLimits(reports, mu);
     for (int k = 0; k < 6; ++k) options.maxLoads[k] = std::max(4 * box[k], 1e-9);
     const grasp::TwoSidedLimits limits =

@@ -47,11 +47,23 @@ TEST_F(ValidateQuick, PassesEveryBoundAndWritesReportTablesAndPlots) {
         return f;
     }();
     ASSERT_GT(fields.size(), 14u);
-    // The approximation's ramp slips, and its onset agrees with full contact's within 10 %
-    // (measured -0.09 % on the linearly implicit stepper at the comparison's accuracy 3e-4; the
-    // approximation released first, so the onset is full contact's after the hand-back).
+    // The default approximation hands the object back at the compliance model's limit, before full
+    // contact's slip onset (full contact's ramp is the oracle), and the hand-back does not let go
+    // of what full contact holds: its onset is not more than 10 % below full contact's (the
+    // issue's bound). Above it, +18 % at this rate: the bushing holds the ball without the grasp's
+    // give (0.03 mm where full contact has given 1.2 mm), so after the hand-back 2 mm comes later;
+    // a finding of the report's table (docs/capacity.md, "The default"), not a check.
     ASSERT_EQ(fields[5], "1") << rows[2];
-    EXPECT_LT(std::abs(std::stod(fields[12])), 0.10) << rows[2];  // relative_difference_to_full
+    ASSERT_EQ(fields[10], "1") << rows[2];  // released
+    EXPECT_NE(fields[13].find("compliance limit"), std::string::npos) << rows[2];
+    const double fullOnset = std::stod([&] {
+        std::istringstream in(rows[1]);
+        std::string cell;
+        for (int k = 0; k <= 6; ++k) std::getline(in, cell, ',');
+        return cell;
+    }());
+    EXPECT_LT(std::stod(fields[11]), fullOnset) << rows[2];  // release_load
+    EXPECT_GT(std::stod(fields[12]), -0.10) << rows[2];      // relative_difference_to_full
     EXPECT_NE(report.find("## Holding capacity"), std::string::npos);
     // The constant load at 1.25 x full contact's ramp onset slips on both (its columns are the last
     // eight: load, slipped, onset time, ...), and report.md has its table.
