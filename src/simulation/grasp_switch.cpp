@@ -310,12 +310,18 @@ void GraspSwitch::checkEngage(SimTK::State& state) const {
     const std::vector<GraspEvent>& events = getRecord(state).events;
     if (!events.empty() && events.back().kind == GraspEventKind::Release && !(state.getTime() > events.back().time)) return;
     if (!(q > 0 && q >= getRecord(state).qThreshold)) return;
-    // Not while the grasp already carries the compliance limits of the first engagement, nor while
-    // it is still taking up its load (findReengageObstacle): handed back because the load reached
-    // them, the grasp stays in full contact, which decides the slip.
-    const std::optional<ComplianceReleaseLimits>& limits = getRecord(state).releaseLimits;
+    // Not while the grasp carries a load at its compliance limits, nor while it is still taking up
+    // its load (findReengageObstacle): handed back because the load reached them, the grasp stays
+    // in full contact, which decides the slip. Before the first engagement the limits are this
+    // state's: a grasp that has not settled yet (a side still at zero) would be handed back at once.
+    std::optional<ComplianceReleaseLimits> limits = getRecord(state).releaseLimits;
+    if (!limits && !multi_ && options_.releaseTrigger == ApproxReleaseTrigger::Compliance) {
+        const SimTK::Transform& X_GO = context_.object.getBodyTransform(state);
+        const double mu = findLimitFriction(context_.contactParameters, options_, true);
+        limits = calcComplianceLimits(context_, state, reports, mu, X_GO.R(), X_GO.p());
+    }
     if (limits && !findReengageObstacle(context_, state, reports, *limits).empty()) return;
-    engage(state, q, reports);
+    engage(state, q, reports, limits);
 }
 
 // The engage event's text: the threshold and the limits (one force and one torque for the thesis's
@@ -332,7 +338,8 @@ std::string GraspSwitch::describeEngagement(double qThreshold, const grasp::Atta
            format(" %.6g N, ", limits[5]) + format("%.6g %.6g", limits[0], limits[1]) + format(" %.6g N m", limits[2]);
 }
 
-void GraspSwitch::engage(SimTK::State& state, double quality, const std::vector<contact::ContactReport>& reports) const {
+void GraspSwitch::engage(SimTK::State& state, double quality, const std::vector<contact::ContactReport>& reports,
+                         const std::optional<ComplianceReleaseLimits>& releaseLimits) const {
     updRecord(state).tracker.capture(state, reports);  // penetration, for both attachments; Q tracking is merged's
     const double qThreshold = getRecord(state).qThreshold;
     if (multi_) {
@@ -367,16 +374,12 @@ void GraspSwitch::engage(SimTK::State& state, double quality, const std::vector<
     context_.attachment.engage(state, engagement);                                                // (d)
     const SimTK::Transform X_HO = ~context_.palm.getBodyTransform(state) * context_.object.getBodyTransform(state);
     std::string text = describeEngagement(qThreshold, engagement);
-    std::optional<ComplianceReleaseLimits> releaseLimits;
+    // As --limits compliance computes them (static friction unless told otherwise, M at O's origin
+    // with O's orientation), whatever the constraint's own limits are; at the first engagement
+    // only, on the unloaded grasp, and kept for the run.
     if (getRecord(state).releaseLimits) {
-        releaseLimits = getRecord(state).releaseLimits;
         text += "; release at the first engagement's compliance limits";
-    } else if (options_.releaseTrigger == ApproxReleaseTrigger::Compliance) {
-        // As --limits compliance computes them (static friction unless told otherwise, M at O's
-        // origin with O's orientation), whatever the constraint's own limits are; at the first
-        // engagement only, on the unloaded grasp, and kept for the run.
-        const SimTK::Transform& X_GO = context_.object.getBodyTransform(state);
-        releaseLimits = calcComplianceLimits(context_, state, reports, findLimitFriction(pair, options_, true), X_GO.R(), X_GO.p());
+    } else if (releaseLimits) {
         text += "; release at compliance limits" + describeTwoSided(releaseLimits->lower, releaseLimits->upper);
     }
     GraspSwitchRecord& record = updRecord(state);
@@ -435,8 +438,11 @@ std::string GraspSwitch::describeRelease(const SimTK::State& state, double quali
     const double distance = context_.goals.findMaxDistance(state);
     const double tolerance = context_.heldTolerance;
     if (distance > tolerance) return format("fingertip %.6g m from its goal (held tolerance %.6g m)", distance, tolerance);
+    if (record.releaseLimits) {
+        std::string atLimit = describeComplianceRelease(state, *record.releaseLimits);
+        if (!atLimit.empty()) return atLimit;
+    }
     if (quality < record.qMinimum) return format("Q < Q_M = %.6g N", record.qMinimum);
-    if (record.releaseLimits) return describeComplianceRelease(state, *record.releaseLimits);
     return {};
 }
 

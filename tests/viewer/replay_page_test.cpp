@@ -53,10 +53,6 @@ protected:
         simulation::SimulationOptions options;
         options.mode = simulation::SimulationMode::Approx;
         options.duration = 0.4;
-        // The thesis's switch: settled for 0.15 s only, the grasp's compliance limits have zero
-        // sides, and the default trigger hands the phone back 0.13 ms after engaging; this test
-        // needs an engaged run to read back.
-        options.approx.releaseTrigger = simulation::ApproxReleaseTrigger::None;
         result_ = new simulation::SimulationResult(simulation::runGraspSimulation(*scenario_, options));
         results::writeResultFolder(folder_->string(), *scenario_, *result_, {{"graspsim", "simulate"}, {{"mode", "approx"}}});
     }
