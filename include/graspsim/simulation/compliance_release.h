@@ -53,8 +53,8 @@ SimTK::Vec6 calcHeldWrenchInO(const ApproximationContext& context, const SimTK::
 /// goals (the points the capacity protocol measures slip at). Needs Stage::Velocity.
 double findGoalSpeedInPalm(const ApproximationContext& context, const SimTK::State& state);
 
-/// Why the switch must not engage again in `state` after handing the object back at `limits`
-/// (the first engagement's); empty when it may. Two conditions, both about a grasp that carries a
+/// Why the switch must not engage in `state` at `limits` (after a hand-back, the first engagement's;
+/// before the first engagement, those it would engage with); empty when it may. Two conditions, both about a grasp that carries a
 /// load near the limits it was released at: the object still moves in the palm faster than the
 /// contacts' transition velocity (the grasp is still taking up its load, the give after the
 /// hand-back, and is not firm), or the wrench the attachment would hold (calcHeldWrenchInO),
