@@ -16,17 +16,60 @@ const char* const kAxisNames[6] = {"rotation x", "rotation y", "rotation z", "tr
 
 }  // namespace
 
+// A side the model never lets go of is capped at four times the thesis's box on its axis, so that
+// the bushing, stiffened for its larger side, stays as stiff as the thesis's would be within a
+// small factor.
+ComplianceReleaseLimits calcComplianceLimits(const ApproximationContext& context, const SimTK::State& state,
+                                             const std::vector<contact::ContactReport>& reports, double mu,
+                                             const SimTK::Vec6& box, const SimTK::Rotation& R_GM, const SimTK::Vec3& p_GM) {
+    const FingerCompliance fingers(context.model, context.fingerMobilizers, context.jointImpedances, context.goals.getEndEffectors());
+    const std::vector<grasp::CompliantContact> contacts = fingers.findCompliantContacts(state, reports, {});
+    grasp::ComplianceLimitOptions options;
+    options.mu = mu;
+    options.kineticMu = std::min(mu, context.contactParameters.dynamicFriction);  // broken loose, a contact slides at mu_d
+    for (int k = 0; k < 6; ++k) options.maxLoads[k] = std::max(4 * box[k], 1e-9);
+    const grasp::TwoSidedLimits limits =
+        grasp::calcComplianceLimits(contacts, system::toEigenMatrix(R_GM), system::toEigenVector(p_GM), options);
+    ComplianceReleaseLimits result;
+    for (int k = 0; k < 6; ++k) {
+        result.lower[k] = limits.lower[k];
+        result.upper[k] = limits.upper[k];
+    }
+    return result;
+}
+
 std::string findAxisAtLimit(const SimTK::Vec6& wrench, const ComplianceReleaseLimits& limits) {
     for (int k = 0; k < 6; ++k) {
         const double limit = wrench[k] >= 0 ? limits.upper[k] : -limits.lower[k];
         if (std::abs(wrench[k]) < std::abs(limit)) continue;
+        const bool atSlipOnset = wrench[k] >= 0 ? limits.upperAtSlipOnset[k] : limits.lowerAtSlipOnset[k];
         const char* unit = k < 3 ? "N m" : "N";
-        char text[160];
-        std::snprintf(text, sizeof text, "constraint reaction on %s %.6g %s reached the compliance limit %.6g %s",
-                      kAxisNames[k], wrench[k], unit, limit, unit);
+        char text[200];
+        std::snprintf(text, sizeof text, "constraint reaction on %s %.6g %s reached the %s %.6g %s", kAxisNames[k], wrench[k],
+                      unit, atSlipOnset ? "constraint's slip onset" : "compliance limit", limit, unit);
         return text;
     }
     return {};
+}
+
+void capAtSlipOnset(ComplianceReleaseLimits& limits, const SimTK::Vec6& lower, const SimTK::Vec6& upper,
+                    const std::array<bool, 6>& locked, double onsetFraction) {
+    for (int k = 3; k < 6; ++k) {
+        if (locked[k]) continue;
+        if (limits.lower[k] > onsetFraction * lower[k]) limits.lower[k] = onsetFraction * lower[k], limits.lowerAtSlipOnset[k] = true;
+        if (limits.upper[k] > onsetFraction * upper[k]) limits.upper[k] = onsetFraction * upper[k], limits.upperAtSlipOnset[k] = true;
+    }
+}
+
+std::string describeSlipOnsetSides(const ComplianceReleaseLimits& limits) {
+    std::string text;
+    for (int k = 0; k < 6; ++k) {
+        for (const bool upper : {false, true}) {
+            if (!(upper ? limits.upperAtSlipOnset[k] : limits.lowerAtSlipOnset[k])) continue;
+            text += std::string(" (") + kAxisNames[k] + (upper ? " upper" : " lower") + " side at the constraint's slip onset)";
+        }
+    }
+    return text;
 }
 
 double findLimitMargin(const SimTK::Vec6& wrench, const ComplianceReleaseLimits& limits) {

@@ -1,11 +1,9 @@
 #include "graspsim/simulation/grasp_switch.h"
 
 #include "graspsim/error.h"
-#include "graspsim/grasp/compliance_limits.h"
 #include "graspsim/grasp/limited_bushing_law.h"
 #include "graspsim/simulation/compliance_release.h"
 #include "graspsim/simulation/contact_grasp_quality.h"
-#include "graspsim/simulation/finger_compliance.h"
 #include "graspsim/simulation/multi_attachment_switch.h"
 #include "graspsim/system/simtk_conversion.h"
 
@@ -58,30 +56,6 @@ SimTK::Vec6 calcContactGeometryLimits(const std::vector<contact::ContactReport>&
         grasp::calcContactGeometryLimits(contacts, mu, system::toEigenMatrix(R_GM), system::toEigenVector(p_GM));
     SimTK::Vec6 result;
     for (int k = 0; k < 6; ++k) result[k] = limits[k];
-    return result;
-}
-
-// Two-sided limits of the constraint frame M (orientation R_GM, origin p_GM) from the compliance
-// model of the grasp at engagement (grasp/compliance_limits.h), rotation first. A side the model
-// never lets go of is capped at four times the thesis's box on its axis, so that the bushing,
-// stiffened for its larger side, stays as stiff as the thesis's would be within a small factor.
-ComplianceReleaseLimits calcComplianceLimits(const ApproximationContext& context, const SimTK::State& state,
-                                             const std::vector<contact::ContactReport>& reports, double mu,
-                                             const SimTK::Rotation& R_GM, const SimTK::Vec3& p_GM) {
-    const FingerCompliance fingers(context.model, context.fingerMobilizers, context.jointImpedances, context.goals.getEndEffectors());
-    const std::vector<grasp::CompliantContact> contacts = fingers.findCompliantContacts(state, reports, {});
-    grasp::ComplianceLimitOptions options;
-    options.mu = mu;
-    options.kineticMu = std::min(mu, context.contactParameters.dynamicFriction);  // broken loose, a contact slides at mu_d
-    const SimTK::Vec6 box = calcFrictionLimits(reports, mu);
-    for (int k = 0; k < 6; ++k) options.maxLoads[k] = std::max(4 * box[k], 1e-9);
-    const grasp::TwoSidedLimits limits =
-        grasp::calcComplianceLimits(contacts, system::toEigenMatrix(R_GM), system::toEigenVector(p_GM), options);
-    ComplianceReleaseLimits result;
-    for (int k = 0; k < 6; ++k) {
-        result.lower[k] = limits.lower[k];
-        result.upper[k] = limits.upper[k];
-    }
     return result;
 }
 
@@ -318,7 +292,7 @@ void GraspSwitch::checkEngage(SimTK::State& state) const {
     if (!limits && !multi_ && options_.releaseTrigger == ApproxReleaseTrigger::Compliance) {
         const SimTK::Transform& X_GO = context_.object.getBodyTransform(state);
         const double mu = findLimitFriction(context_.contactParameters, options_, true);
-        limits = calcComplianceLimits(context_, state, reports, mu, X_GO.R(), X_GO.p());
+        limits = calcComplianceLimits(context_, state, reports, mu, calcFrictionLimits(reports, mu), X_GO.R(), X_GO.p());
     }
     if (limits && !findReengageObstacle(context_, state, reports, *limits).empty()) return;
     engage(state, q, reports, limits);
@@ -339,7 +313,7 @@ std::string GraspSwitch::describeEngagement(double qThreshold, const grasp::Atta
 }
 
 void GraspSwitch::engage(SimTK::State& state, double quality, const std::vector<contact::ContactReport>& reports,
-                         const std::optional<ComplianceReleaseLimits>& releaseLimits) const {
+                         std::optional<ComplianceReleaseLimits> releaseLimits) const {
     updRecord(state).tracker.capture(state, reports);  // penetration, for both attachments; Q tracking is merged's
     const double qThreshold = getRecord(state).qThreshold;
     if (multi_) {
@@ -360,7 +334,7 @@ void GraspSwitch::engage(SimTK::State& state, double quality, const std::vector<
         engagement.limits = calcFrictionLimits(reports, mu);
     } else if (compliance) {
         const ComplianceReleaseLimits limits =
-            calcComplianceLimits(context_, state, reports, mu, context_.object.getBodyTransform(state).R(), p_GM);
+            calcComplianceLimits(context_, state, reports, mu, calcFrictionLimits(reports, mu), context_.object.getBodyTransform(state).R(), p_GM);
         engagement.limits = limits.upper;
         engagement.lowerLimits = limits.lower;
     } else {
@@ -380,7 +354,10 @@ void GraspSwitch::engage(SimTK::State& state, double quality, const std::vector<
     if (getRecord(state).releaseLimits) {
         text += "; release at the first engagement's compliance limits";
     } else if (releaseLimits) {
-        text += "; release at compliance limits" + describeTwoSided(releaseLimits->lower, releaseLimits->upper);
+        capAtSlipOnset(*releaseLimits, engagement.lowerLimits.value_or(engagement.limits), engagement.limits,
+                       engagement.lockedAxes, context_.attachment.getSlipOnsetFraction());
+        text += "; release at compliance limits" + describeTwoSided(releaseLimits->lower, releaseLimits->upper) +
+                describeSlipOnsetSides(*releaseLimits);
     }
     GraspSwitchRecord& record = updRecord(state);
     record.X_HO_engaged = X_HO;

@@ -166,3 +166,27 @@ TEST(GraspSwitchRelease, FindAxisAtLimitUsesEachSide) {
     EXPECT_NE(y.find("translation y -8.2 N reached the compliance limit -8 N"), std::string::npos) << y;
     EXPECT_NE(simulation::findAxisAtLimit(SimTK::Vec6(0, -1.5, 0, 0, 0, 0), limits).find("rotation y"), std::string::npos);
 }
+
+// Closed form: a force side beyond onset x the constraint's limit on that side is replaced by it
+// and flagged; sides inside it, moment sides (about another point) and locked axes are kept.
+TEST(GraspSwitchRelease, CapAtSlipOnsetCapsOnlyForceSidesBeyondTheConstraintsOnset) {
+    simulation::ComplianceReleaseLimits limits;
+    limits.lower = SimTK::Vec6(0.9, 0.1, 0.1, 15, 8, 7);
+    limits.upper = SimTK::Vec6(0.1, 0.1, 0.1, 6, 11, 20);
+    const SimTK::Vec6 box(0.5, 0.5, 0.5, 13.7, 13.7, 13.7);
+    std::array<bool, 6> locked{};
+    locked[5] = true;
+    simulation::capAtSlipOnset(limits, box, box, locked, 0.99);
+    EXPECT_DOUBLE_EQ(limits.lower[0], 0.9);  // a moment side, kept
+    EXPECT_FALSE(limits.lowerAtSlipOnset[0]);
+    EXPECT_DOUBLE_EQ(limits.lower[3], 0.99 * 13.7);
+    EXPECT_TRUE(limits.lowerAtSlipOnset[3]);
+    EXPECT_DOUBLE_EQ(limits.upper[3], 6);
+    EXPECT_FALSE(limits.upperAtSlipOnset[3]);
+    EXPECT_DOUBLE_EQ(limits.upper[4], 11);
+    EXPECT_DOUBLE_EQ(limits.upper[5], 20);  // locked: the constraint holds any load there
+    EXPECT_FALSE(limits.upperAtSlipOnset[5]);
+    const std::string reason = simulation::findAxisAtLimit(SimTK::Vec6(0, 0, 0, -13.6, 0, 0), limits);
+    EXPECT_NE(reason.find("translation x -13.6 N reached the constraint's slip onset"), std::string::npos) << reason;
+    EXPECT_EQ(simulation::describeSlipOnsetSides(limits), " (translation x lower side at the constraint's slip onset)");
+}

@@ -95,6 +95,9 @@ public:
     /// Whether `axis` slides (carries its limit while moving) in `state`, for the multi-attachment
     /// in any attached part (each along its own site axes). Needs Stage::Velocity.
     virtual bool isSliding(const SimTK::State& state, BushingAxis axis) const = 0;
+    /// The fraction of an axis's limit at which the axis begins to slide: 1 for a hard limit (the
+    /// default), 1 - w for the bushing's slip-onset band (LimitedBushing::getSlipOnsetWidth()).
+    virtual double getSlipOnsetFraction() const { return 1.0; }
     /// Frame, limits and reaction while engaged, for an attachment that is one palm-object
     /// constraint; nullopt while released and for attachments of several parts (the default).
     /// Needs getReactionStage().

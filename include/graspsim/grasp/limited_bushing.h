@@ -162,6 +162,7 @@ public:
     /// Whether `axis`'s anchor is slipping: enabled, loading (e_k r_k > 0) and the slip
     /// fraction s_k >= 0.5. Needs Stage::Velocity.
     bool isSliding(const SimTK::State& state, BushingAxis axis) const override;
+    double getSlipOnsetFraction() const override { return 1 - getSlipOnsetWidth(); }
 
     /// GraspAttachment: whether enabled.
     bool isEngaged(const SimTK::State& state) const override { return isEnabled(state); }

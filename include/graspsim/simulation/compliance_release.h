@@ -10,6 +10,7 @@
 
 #include "graspsim/simbody.h"
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -21,7 +22,27 @@ namespace graspsim::simulation {
 struct ComplianceReleaseLimits {
     SimTK::Vec6 lower{0};
     SimTK::Vec6 upper{0};
+    /// Per side, true where capAtSlipOnset() replaced the model's limit by the constraint's slip onset.
+    std::array<bool, 6> lowerAtSlipOnset{};
+    std::array<bool, 6> upperAtSlipOnset{};
 };
+/// Two-sided limits of the constraint frame M (orientation R_GM, origin p_GM, in G) from the
+/// compliance model of the grasp in `state` (its contacts `reports`, friction coefficient `mu`,
+/// kinetic mu_d from the contact parameters; grasp/compliance_limits.h), rotation first. A side the
+/// model never lets go of is capped at 4 `box` (the thesis's limits on that axis, N m and N).
+ComplianceReleaseLimits calcComplianceLimits(const ApproximationContext& context, const SimTK::State& state,
+                                             const std::vector<contact::ContactReport>& reports, double mu,
+                                             const SimTK::Vec6& box, const SimTK::Rotation& R_GM, const SimTK::Vec3& p_GM);
+/// Caps the force sides (axes 3-5) of `limits` at `onsetFraction` times the constraint's limits
+/// `lower` and `upper` (N, along the constraint frame M, which has O's orientation): where the
+/// model's side lies beyond the constraint's own limit, the constraint starts to slide before the
+/// reaction could reach it, and the reaction, clamped there, never would. The moment sides are
+/// left alone: the constraint's moment limits are about M's origin (the contact centroid for the
+/// thesis's box), the release limits about O's. Locked axes (`locked`, limit infinite) are left too.
+void capAtSlipOnset(ComplianceReleaseLimits& limits, const SimTK::Vec6& lower, const SimTK::Vec6& upper,
+                    const std::array<bool, 6>& locked, double onsetFraction);
+/// " (translation x lower side at the constraint's slip onset)" for each capped side; empty if none.
+std::string describeSlipOnsetSides(const ComplianceReleaseLimits& limits);
 
 /// The first axis side on which `wrench` (on the object about O's origin, along O's axes, moment
 /// first: N m, N) has reached `limits`, described with both numbers; empty if it is inside on every axis.

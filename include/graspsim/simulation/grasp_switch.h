@@ -192,7 +192,7 @@ private:
     bool isSticking(const std::vector<contact::ContactReport>& reports) const;
     double calcQualityOf(const SimTK::State& state, const std::vector<contact::ContactReport>& reports) const;
     void engage(SimTK::State& state, double quality, const std::vector<contact::ContactReport>& reports,
-                const std::optional<ComplianceReleaseLimits>& releaseLimits) const;
+                std::optional<ComplianceReleaseLimits> releaseLimits) const;
     void placeConstraintFrames(const SimTK::State& state, const SimTK::Vec3& p_GC,
                                grasp::AttachmentEngagement& engagement) const;
     void release(SimTK::State& state, double quality, const std::string& reason) const;
