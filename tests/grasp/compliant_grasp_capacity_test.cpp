@@ -257,5 +257,46 @@ TEST(CompliantGraspCapacity, RejectsBadInput) {
     EXPECT_THROW(calcCompliantCapacity(makePinch(5, 4000, 4000, 0, 0), Eigen::Vector3d::Zero(), force({0, 1, 0}), options), InputError);
 }
 
+// A pinch loaded in its tangent plane by a force that combines y and z: the two contacts' cones
+// bound the total friction force, 2 mu N in any tangential direction (Coulomb), so the load
+// (0, 1, 1) N goes at 2 mu N / sqrt(2) of it, while along y alone and along z alone each goes at
+// 2 mu N: per-axis limits would hold it up to 2 mu N of each part, sqrt(2) times as much.
+TEST(CompliantGraspCapacity, AlongAWrenchThatCombinesAxesSharesTheCones) {
+    const double mu = 0.6, N = 5;
+    CompliantCapacityOptions options;
+    options.mu = mu;
+    options.slipDistance = 1;  // onset = ultimate
+    const auto pinch = makePinch(N, 4000, 4000, 3e-4, 3e-4);
+    const CompliantCapacity oblique = calcCompliantCapacityAlong(pinch, Eigen::Vector3d::Zero(), force({0, 1, 1}), options);
+    EXPECT_NEAR(oblique.ultimate, 2 * mu * N / std::sqrt(2.0), 1e-9);
+    EXPECT_NEAR(oblique.onset, oblique.ultimate, 1e-12);
+    for (const Eigen::Vector3d& e : {Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(0, 0, 1)}) {
+        EXPECT_NEAR(calcCompliantCapacity(pinch, Eigen::Vector3d::Zero(), force(e), options).ultimate, 2 * mu * N, 1e-9);
+    }
+    // A unit direction gives the one-axis function's figure.
+    const Eigen::Vector3d unit = Eigen::Vector3d(0, 1, 1).normalized();
+    EXPECT_NEAR(calcCompliantCapacityAlong(pinch, Eigen::Vector3d::Zero(), force(unit), options).ultimate,
+                calcCompliantCapacity(pinch, Eigen::Vector3d::Zero(), force(unit), options).ultimate, 1e-12);
+}
+
+// A force F0 along y with a moment T0 about z on a pinch whose contacts sit at x = -d and +d:
+// statics gives the contacts' y forces (F0 - T0/d)/2 and (F0 + T0/d)/2 per unit of load, so the
+// one at +d reaches mu N at s = 2 mu N / (F0 + T0/d); the one left can turn the object about its
+// point (no torsional friction): that is the ultimate.
+TEST(CompliantGraspCapacity, AlongAForceWithAMomentReachesTheLoadedContactsCone) {
+    const double mu = 0.6, N = 5, d = 0.02, F0 = 1, T0 = 0.01;
+    CompliantCapacityOptions options;
+    options.mu = mu;
+    options.slipDistance = 1;
+    Vector6 load = force({0, F0, 0});
+    load[2] = T0;
+    const CompliantCapacity c =
+        calcCompliantCapacityAlong(makePinch(N, 4000, 4000, 3e-4, 3e-4), Eigen::Vector3d::Zero(), load, options);
+    EXPECT_NEAR(c.firstSlip, 2 * mu * N / (F0 + T0 / d), 1e-9);
+    EXPECT_NEAR(c.ultimate, c.firstSlip, 1e-9);
+    EXPECT_THROW(calcCompliantCapacityAlong(makePinch(N, 4000, 4000, 0, 0), Eigen::Vector3d::Zero(), Vector6::Zero(), options),
+                 InputError);
+}
+
 }  // namespace
 }  // namespace graspsim::grasp

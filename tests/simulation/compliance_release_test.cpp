@@ -128,3 +128,36 @@ TEST(GraspSwitchRelease, FindAxisAtLimitUsesEachSide) {
     EXPECT_NE(y.find("translation y -8.2 N reached the compliance limit -8 N"), std::string::npos) << y;
     EXPECT_NE(simulation::findAxisAtLimit(SimTK::Vec6(0, -1.5, 0, 0, 0, 0), limits).find("rotation y"), std::string::npos);
 }
+
+// The load's own direction (findDirectionAtLimit) on a hand-made stiff pinch (contacts at x = -d
+// and +d, each pressing with N, friction mu): its per-axis sides along y and z are 2 mu N each,
+// but the two cones bound the total tangential force, 2 mu N in any direction (Coulomb): a held
+// load of 4.5 N along y and z together (6.36 N) is inside both sides and past the cones; 4 N of
+// each (5.66 N) is inside both.
+TEST(GraspSwitchRelease, FindDirectionAtLimitSharesTheCones) {
+    const double mu = 0.6, N = 5, d = 0.02;
+    simulation::ComplianceReleaseLimits limits;
+    limits.lower = SimTK::Vec6(1, 1, 1, 100, 2 * mu * N, 2 * mu * N);
+    limits.upper = limits.lower;
+    for (double side : {-1.0, 1.0}) {
+        grasp::CompliantContact c;
+        c.p_GC = Eigen::Vector3d(side * d, 0, 0);
+        c.n_G = Eigen::Vector3d(-side, 0, 0);
+        c.force_G = N * c.n_G;
+        c.normalStiffness = 4e5;
+        c.tangentialStiffness = 4e5;
+        c.fingerCompliance_G = 1e-6 * Eigen::Matrix3d::Identity();
+        limits.contacts_O.push_back(c);
+    }
+    limits.mu = limits.kineticMu = mu;
+    const SimTK::Vec6 past(0, 0, 0, 0, -4.5, -4.5), inside(0, 0, 0, 0, -4, -4);  // reactions: the load's opposite
+    EXPECT_TRUE(simulation::findAxisAtLimit(past, limits).empty());
+    const std::string text = simulation::findComplianceLimitReached(past, limits);
+    EXPECT_NE(text.find("reached the compliance model's onset along it"), std::string::npos) << text;
+    EXPECT_TRUE(simulation::findComplianceLimitReached(inside, limits).empty());
+    // A side is reported first; without the contacts only the sides count.
+    EXPECT_NE(simulation::findComplianceLimitReached(SimTK::Vec6(0, 0, 0, 0, -6.1, 0), limits).find("translation y"),
+              std::string::npos);
+    limits.contacts_O.clear();
+    EXPECT_TRUE(simulation::findComplianceLimitReached(past, limits).empty());
+}

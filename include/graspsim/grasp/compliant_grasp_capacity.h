@@ -120,4 +120,15 @@ CompliantCapacity calcCompliantCapacity(const std::vector<CompliantContact>& con
                                         const Eigen::Matrix<double, 6, 1>& direction_G,
                                         const CompliantCapacityOptions& options);
 
+/// The same model along any load wrench `load_G` = [torque ; force] (rotation first, N m and N,
+/// about `p_GO`, in G; torque and force may be mixed), such as the wrench a constraint carries
+/// beyond what the contacts carried at the start. A load along one axis at a time, as the per-axis
+/// limits of compliance_limits.h take it, does not bound a load that combines axes: its parts
+/// draw on the same friction cones. Loads are in multiples of `load_G`: onset <= 1 means the grasp
+/// reaches its slip onset before the load reaches `load_G`.
+/// @throws graspsim::InputError for invalid contacts, a zero or non-finite load, or negative options.
+CompliantCapacity calcCompliantCapacityAlong(const std::vector<CompliantContact>& contacts, const Eigen::Vector3d& p_GO,
+                                             const Eigen::Matrix<double, 6, 1>& load_G,
+                                             const CompliantCapacityOptions& options);
+
 }  // namespace graspsim::grasp
