@@ -173,6 +173,21 @@ double findNextEvent(const std::vector<CompliantContact>& contacts, const Progre
 
 }  // namespace
 
+void setTangentialStiffnessByNormalForce(std::vector<CompliantContact>& contacts) {
+    const auto shares = [](const CompliantContact& c) {
+        return c.force_G.dot(c.n_G) > 0 && c.tangentialStiffness > 0 && std::isfinite(c.tangentialStiffness);
+    };
+    double stiffness = 0, normalForce = 0;
+    for (const CompliantContact& c : contacts) {
+        if (!shares(c)) continue;
+        stiffness += c.tangentialStiffness;
+        normalForce += c.force_G.dot(c.n_G);
+    }
+    for (CompliantContact& c : contacts) {
+        if (shares(c)) c.tangentialStiffness = stiffness * c.force_G.dot(c.n_G) / normalForce;
+    }
+}
+
 Eigen::Matrix3d calcSlidingStiffness(const CompliantContact& c, const Eigen::Vector3d& tangent, double mu) {
     const Eigen::Vector3d a = c.n_G + mu * tangent;
     const double compliance = 1 / c.normalStiffness + c.n_G.dot(c.fingerCompliance_G * a);

@@ -38,21 +38,21 @@ double findLargestDistance(const simulation::SimulationResult& a, const simulati
 
 }  // namespace
 
-// Ball f1 pushes the ball with more than the compliance model's +y side (11.13 N) allows, less
-// than the thesis's box (13.7 N): the trigger releases during the push (the model's limit named in
-// the reason), the switch engages again only after it (the contacts' wrench back inside the first
-// engagement's limits), and the object stays within 2 mm of full contact's over the whole run
-// (the must-show's bound; measured 0.59 mm, the thesis's box alone 1.23 mm).
-TEST(GraspSwitchRelease, BallF1ReleasesAtTheComplianceLimitAndStaysWithFullContact) {
+// Ball f1 pushes the ball along -y (the bushing's reaction peaks at 11.6 N), which full contact
+// holds, below the compliance model's side for it (13.45 N since the tangential stiffness is
+// shared by normal force; Hertz-Mindlin's sharing gave 11.12 N and released during the push):
+// the approximation holds the ball through the push, and the
+// object stays within 2 mm of full contact's over the whole run (the must-show's bound; measured
+// 1.23 mm, the thesis's box's figure: the bushing's missing give).
+TEST(GraspSwitchRelease, BallF1StaysEngagedAndWithFullContact) {
     const scenario::Scenario s = scenario::findBuiltinScenario("ball-clutch");
     const auto full = simulation::runGraspSimulation(s, makeOptions(simulation::SimulationMode::Full, "f1", false));
     const auto approx = simulation::runGraspSimulation(s, makeOptions(simulation::SimulationMode::Approx, "f1", true));
     ASSERT_TRUE(full.summary.complete) << full.summary.failure;
     ASSERT_TRUE(approx.summary.complete) << approx.summary.failure;
-    ASSERT_GE(approx.events.size(), 2u);
-    EXPECT_EQ(approx.events[1].kind, simulation::GraspEventKind::Release);
-    EXPECT_NE(approx.events[1].reason.find("reached the compliance limit"), std::string::npos) << approx.events[1].reason;
-    EXPECT_NE(approx.events[1].reason.find("translation y"), std::string::npos) << approx.events[1].reason;
+    for (const simulation::GraspEvent& e : approx.events) {
+        EXPECT_NE(e.kind, simulation::GraspEventKind::Release) << "released at " << e.time << " s: " << e.reason;
+    }
     EXPECT_EQ(approx.summary.held, full.summary.held);
     const double gap = findLargestDistance(approx, full);
     EXPECT_LT(gap, 0.002) << "approx object " << gap << " m from the full-contact object";

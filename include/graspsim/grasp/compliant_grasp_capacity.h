@@ -102,6 +102,18 @@ struct CompliantCapacity {
     std::vector<Eigen::Vector3d> forces_G;
 };
 
+/// Shares the contacts' total tangential stiffness in proportion to their normal forces:
+/// k_t,i = (sum_j k_t,j) f_n,i / sum_j f_n,j (f_n the force along the normal; N/m). Why: full
+/// contact's regularized friction has no tangential spring. A sticking contact creeps at the slip
+/// speed v where mu(v) f_n = |f_t|, so its friction ratio |f_t| / f_n is a function of its slip
+/// alone, whatever its normal force, and contacts that slip alike reach the cone together. A
+/// spring gives the ratio k_t u / f_n: a function of the slip u alone only when k_t is
+/// proportional to f_n. Hertz-Mindlin's k_t ~ f_n^(1/3) brings lightly pressed contacts to their
+/// cones first and centres the grasp's tangential stiffness away from the firmly pressed ones.
+/// The total is kept: the creep's absolute rate is not a stiffness, and only the sharing changes.
+/// Contacts without a positive normal force or a finite positive k_t are left out and as they are.
+void setTangentialStiffnessByNormalForce(std::vector<CompliantContact>& contacts);
+
 /// The sticking stiffness K = (C_f + n n^T / k_n + (1 - n n^T) / k_t)^-1 of a contact (N/m, in G).
 /// @throws graspsim::InputError for a non-positive stiffness or a normal that is not unit.
 Eigen::Matrix3d calcStickingStiffness(const CompliantContact& contact);
