@@ -57,6 +57,7 @@ simulation::FingerComplianceSettings toFingerSettings(const CompliancePrediction
     simulation::FingerComplianceSettings f;
     f.tangentialStiffnessRatio = settings.tangentialStiffnessRatio;
     f.ikFollowsNullSpace = settings.ikFollowsNullSpace;
+    f.tangentialByNormalForce = settings.tangentialByNormalForce;
     return f;
 }
 

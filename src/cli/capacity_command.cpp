@@ -101,8 +101,9 @@ CapacityCommand::CapacityCommand(CLI::App& app) : options_(std::make_shared<Opti
                          "compliance (two-sided per axis, from the grasp's compliance model; bushing, merged)");
     command_->add_option("--release-at", o.releaseAt,
                          "approx: an extra release rule: compliance (release once the constraint's reaction reaches the "
-                         "grasp's compliance-model limit on any axis side; bushing, merged), none (the thesis's rules "
-                         "only) or auto (default: compliance on the merged bushing, none otherwise)");
+                         "grasp's compliance-model limit on any axis side, or the model's onset along the load's own "
+                         "direction; bushing, merged), none (the thesis's rules only) or auto (default: compliance on the "
+                         "merged bushing, none otherwise)");
     command_->add_option("--out", o.out, "output folder; receives capacity.json and capacity.csv (default: none written)");
 }
 

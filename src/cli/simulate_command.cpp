@@ -75,8 +75,9 @@ SimulateCommand::SimulateCommand(CLI::App& app) : options_(std::make_shared<Opti
                          "from the grasp's compliance model; bushing, merged)");
     command_->add_option("--release-at", o.releaseAt,
                          "approx: an extra release rule: compliance (release once the constraint's reaction reaches the "
-                         "grasp's compliance-model limit on any axis side; bushing, merged), none (the thesis's rules "
-                         "only) or auto (default: compliance on the merged bushing, none otherwise)");
+                         "grasp's compliance-model limit on any axis side, or the model's onset along the load's own "
+                         "direction; bushing, merged), none (the thesis's rules only) or auto (default: compliance on the "
+                         "merged bushing, none otherwise)");
     command_->add_option("--out", o.out,
                          "output folder (default out); receives trajectory.csv, contacts.csv, summary.json, scenario.yaml, "
                          "model.urdf, provenance.json (and events.csv, constraint.csv in approx mode), and for OpenSim "

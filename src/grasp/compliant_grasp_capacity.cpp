@@ -173,6 +173,21 @@ double findNextEvent(const std::vector<CompliantContact>& contacts, const Progre
 
 }  // namespace
 
+void setTangentialStiffnessByNormalForce(std::vector<CompliantContact>& contacts) {
+    const auto shares = [](const CompliantContact& c) {
+        return c.force_G.dot(c.n_G) > 0 && c.tangentialStiffness > 0 && std::isfinite(c.tangentialStiffness);
+    };
+    double stiffness = 0, normalForce = 0;
+    for (const CompliantContact& c : contacts) {
+        if (!shares(c)) continue;
+        stiffness += c.tangentialStiffness;
+        normalForce += c.force_G.dot(c.n_G);
+    }
+    for (CompliantContact& c : contacts) {
+        if (shares(c)) c.tangentialStiffness = stiffness * c.force_G.dot(c.n_G) / normalForce;
+    }
+}
+
 Eigen::Matrix3d calcSlidingStiffness(const CompliantContact& c, const Eigen::Vector3d& tangent, double mu) {
     const Eigen::Vector3d a = c.n_G + mu * tangent;
     const double compliance = 1 / c.normalStiffness + c.n_G.dot(c.fingerCompliance_G * a);
@@ -266,10 +281,12 @@ void applyEvents(const std::vector<CompliantContact>& contacts, const std::vecto
 
 }  // namespace
 
-CompliantCapacity calcCompliantCapacity(const std::vector<CompliantContact>& contacts, const Eigen::Vector3d& p_GO,
-                                        const Eigen::Matrix<double, 6, 1>& direction_G,
-                                        const CompliantCapacityOptions& options) {
-    checkDirection(direction_G, options);
+namespace {
+
+// The piecewise-linear path of the file comment along `direction_G` (rotation first, any non-zero
+// wrench: the load is measured in multiples of it); the options are checked by the caller.
+CompliantCapacity followLoad(const std::vector<CompliantContact>& contacts, const Eigen::Vector3d& p_GO,
+                             const Vector6& direction_G, const CompliantCapacityOptions& options) {
     std::vector<Map63> maps;
     for (std::size_t i = 0; i < contacts.size(); ++i) {
         checkContact(contacts[i], i);
@@ -310,6 +327,26 @@ CompliantCapacity calcCompliantCapacity(const std::vector<CompliantContact>& con
     if (std::isfinite(result.ultimate)) result.onset = std::min(result.onset, result.ultimate);
     result.forces_G = p.forces;
     return result;
+}
+
+}  // namespace
+
+CompliantCapacity calcCompliantCapacity(const std::vector<CompliantContact>& contacts, const Eigen::Vector3d& p_GO,
+                                        const Eigen::Matrix<double, 6, 1>& direction_G,
+                                        const CompliantCapacityOptions& options) {
+    checkDirection(direction_G, options);
+    return followLoad(contacts, p_GO, direction_G, options);
+}
+
+CompliantCapacity calcCompliantCapacityAlong(const std::vector<CompliantContact>& contacts, const Eigen::Vector3d& p_GO,
+                                             const Eigen::Matrix<double, 6, 1>& load_G, const CompliantCapacityOptions& options) {
+    if (!load_G.allFinite() || load_G.isZero(0)) {
+        throw InputError("compliant grasp capacity: the load wrench must be finite and not zero");
+    }
+    Vector6 unitForce = Vector6::Zero();
+    unitForce[3] = 1;
+    checkDirection(unitForce, options);  // the options' checks
+    return followLoad(contacts, p_GO, load_G, options);
 }
 
 }  // namespace graspsim::grasp

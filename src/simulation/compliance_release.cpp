@@ -35,6 +35,7 @@ ComplianceReleaseLimits calcComplianceLimits(const ApproximationContext& context
         result.lower[k] = limits.lower[k];
         result.upper[k] = limits.upper[k];
     }
+    setDirectionModel(result, contacts, R_GM, p_GM, options);
     return result;
 }
 
@@ -70,6 +71,51 @@ std::string describeSlipOnsetSides(const ComplianceReleaseLimits& limits) {
         }
     }
     return text;
+}
+
+void setDirectionModel(ComplianceReleaseLimits& limits, const std::vector<grasp::CompliantContact>& contacts_G,
+                       const SimTK::Rotation& R_GO, const SimTK::Vec3& p_GO, const grasp::ComplianceLimitOptions& options) {
+    const Eigen::Matrix3d R_OG = system::toEigenMatrix(R_GO).transpose();
+    const Eigen::Vector3d p = system::toEigenVector(p_GO);
+    limits.contacts_O.clear();
+    for (grasp::CompliantContact c : contacts_G) {
+        c.p_GC = R_OG * (c.p_GC - p);
+        c.n_G = R_OG * c.n_G;
+        c.force_G = R_OG * c.force_G;
+        c.fingerCompliance_G = R_OG * c.fingerCompliance_G * R_OG.transpose();
+        limits.contacts_O.push_back(c);
+    }
+    const Eigen::Matrix<double, 6, 1> w0 = grasp::calcContactWrenchInM(contacts_G, R_OG.transpose(), p);
+    for (int k = 0; k < 6; ++k) limits.w0[k] = w0[k];
+    limits.slipPoints_O.clear();
+    for (const Eigen::Vector3d& p_GS : options.slipPoints_G) limits.slipPoints_O.push_back(R_OG * (p_GS - p));
+    limits.mu = options.mu;
+    limits.kineticMu = options.kineticMu;
+}
+
+std::string findDirectionAtLimit(const SimTK::Vec6& wrench, const ComplianceReleaseLimits& limits) {
+    if (limits.contacts_O.empty()) return {};
+    Eigen::Matrix<double, 6, 1> load;
+    for (int k = 0; k < 6; ++k) load[k] = limits.w0[k] - wrench[k];
+    if (load.isZero(0)) return {};
+    grasp::CompliantCapacityOptions options;
+    options.mu = limits.mu;
+    options.kineticMu = limits.kineticMu;
+    options.slipPoints_G = limits.slipPoints_O;  // O's origin as the model's origin: O is its G here
+    options.maxLoad = 1;
+    const double onset = grasp::calcCompliantCapacityAlong(limits.contacts_O, Eigen::Vector3d::Zero(), load, options).onset;
+    if (!(onset <= 1)) return {};
+    char text[240];
+    std::snprintf(text, sizeof text,
+                  "load beyond engagement [%.4g %.4g %.4g] N m, [%.4g %.4g %.4g] N reached the compliance model's onset "
+                  "along it (%.4g times it)",
+                  load[0], load[1], load[2], load[3], load[4], load[5], onset);
+    return text;
+}
+
+std::string findComplianceLimitReached(const SimTK::Vec6& wrench, const ComplianceReleaseLimits& limits) {
+    const std::string axis = findAxisAtLimit(wrench, limits);
+    return axis.empty() ? findDirectionAtLimit(wrench, limits) : axis;
 }
 
 double findLimitMargin(const SimTK::Vec6& wrench, const ComplianceReleaseLimits& limits) {
@@ -136,7 +182,7 @@ std::string findReengageObstacle(const ApproximationContext& context, const SimT
     // (at omega t = 2), so a grasp engaged within that of a limit would be released by its own
     // pick-up.
     const double pickUpPeak = 1 + std::exp(-2.0);
-    return findAxisAtLimit(pickUpPeak * calcHeldWrenchInO(context, state, reports), limits);
+    return findComplianceLimitReached(pickUpPeak * calcHeldWrenchInO(context, state, reports), limits);
 }
 
 }  // namespace graspsim::simulation

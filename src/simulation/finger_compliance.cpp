@@ -95,6 +95,7 @@ std::vector<grasp::CompliantContact> FingerCompliance::findCompliantContacts(con
         c->fingerCompliance_G = calcCompliance(state, jointStiffness, r.bodyA, r.p_G);
         contacts.push_back(*c);
     }
+    if (settings.tangentialByNormalForce) grasp::setTangentialStiffnessByNormalForce(contacts);
     return contacts;
 }
 

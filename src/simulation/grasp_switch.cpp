@@ -427,7 +427,7 @@ std::string GraspSwitch::describeRelease(const SimTK::State& state, double quali
 // the frame of the limits) has reached the compliance model's limit; empty if none has.
 std::string GraspSwitch::describeComplianceRelease(const SimTK::State& state, const ComplianceReleaseLimits& limits) const {
     context_.model.getSystem().realize(state, context_.attachment.getReactionStage());
-    return findAxisAtLimit(findReactionInO(state), limits);
+    return findComplianceLimitReached(findReactionInO(state), limits);
 }
 
 SimTK::Vec6 GraspSwitch::findReactionInO(const SimTK::State& state) const {

@@ -17,13 +17,18 @@ TEST(CompliancePrediction, LoadStartContactsCarryTheWeight) {
     ASSERT_GE(grasp.contacts.size(), 2u);
     EXPECT_EQ(grasp.bodies.size(), grasp.contacts.size());
     Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    double tangential = 0, normal = 0;
     for (const grasp::CompliantContact& c : grasp.contacts) {
         sum += c.force_G;
         EXPECT_GT(c.normalStiffness, 0);
-        EXPECT_NEAR(c.tangentialStiffness, 2.0 / 3.0 * c.normalStiffness, 1e-9 * c.normalStiffness);
+        // Shared by normal force (grasp::setTangentialStiffnessByNormalForce): k_t / f_n alike.
+        const double ratio = grasp.contacts[0].tangentialStiffness / grasp.contacts[0].force_G.dot(grasp.contacts[0].n_G);
+        EXPECT_NEAR(c.tangentialStiffness / c.force_G.dot(c.n_G), ratio, 1e-9 * ratio);
+        tangential += c.tangentialStiffness, normal += c.normalStiffness;
         EXPECT_LT((c.fingerCompliance_G - c.fingerCompliance_G.transpose()).norm(), 1e-12);
         EXPECT_GT(Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(c.fingerCompliance_G).eigenvalues().minCoeff(), -1e-12);
     }
+    EXPECT_NEAR(tangential, 2.0 / 3.0 * normal, 1e-9 * normal);  // Hertz-Mindlin's total
     const Eigen::Vector3d weight = pinch.object.mass * Eigen::Vector3d(pinch.world.gravity[0], pinch.world.gravity[1], pinch.world.gravity[2]);
     EXPECT_LT((sum + weight).norm(), 0.02 * weight.norm());
 }

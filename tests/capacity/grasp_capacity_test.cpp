@@ -101,10 +101,11 @@ TEST(GraspCapacity, ReleaseAtComplianceLimitsGivesFullContactsOnsetAlongBallMinu
     expectBallCellAgrees(makeBallRamp(SimTK::Vec3(-1, 0, 0), "-x"), {"translation x", "compliance limit"}, 0.2);
 }
 
-// --release-at compliance along the phone's -y, where the compliance model's z side is reached at a
-// third of full contact's capacity (0.67 N against 2.0 N): the figure must be full contact's own.
+// --release-at compliance along the phone's -y, where the compliance model lets go at a third of
+// full contact's capacity (along the load's own direction at 0.58 N, the z side at 0.67 N; full
+// contact 2.0 N): the figure must be full contact's own.
 // Oracle: full contact's ramp from rest (the second method), same rate, stepper and accuracy;
-// bound 10 %, the criterion (measured -0.4 %). The hand-back happens once: re-engaged
+// bound 10 %, the criterion (measured +1.0 %). The hand-back happens once: re-engaged
 // during the give that follows it, where the contacts' wrench lags the load, the switch released
 // again at the next check 9 times, the contacts took the load as a step at 1.04 N instead of
 // 0.67 N, and the onset came at 1.61 N (-19 %; full contact under that step: 1.62 N).
@@ -124,7 +125,7 @@ TEST(GraspCapacity, ReleaseAtComplianceLimitsWellBeforeCapacityGivesFullContacts
     ASSERT_TRUE(f.slipped);
     ASSERT_TRUE(a.slipped);
     ASSERT_TRUE(a.released);
-    EXPECT_NE(approx.trace.releaseReason.find("compliance limit"), std::string::npos) << approx.trace.releaseReason;
+    EXPECT_NE(approx.trace.releaseReason.find("reached the compliance"), std::string::npos) << approx.trace.releaseReason;
     ASSERT_LT(a.releaseLoad, 0.5 * f.slipOnsetLoad) << "the release must come well before capacity for full contact to decide";
     for (const CapacitySample& s : approx.trace.samples) {
         if (s.time >= a.releaseTime) EXPECT_EQ(s.engaged, 0) << "engaged again at t = " << s.time << " s";

@@ -1,6 +1,7 @@
 #include "graspsim/grasp/compliant_grasp_capacity.h"
 
 #include "graspsim/error.h"
+#include "graspsim/grasp/compliant_grasp_creep.h"
 #include "graspsim/grasp/friction_limits.h"
 
 #include <gtest/gtest.h>
@@ -255,6 +256,88 @@ TEST(CompliantGraspCapacity, RejectsBadInput) {
     EXPECT_THROW(calcStickingStiffness(rigid), InputError);
     options.kineticMu = options.mu + 0.1;  // kinetic friction above static
     EXPECT_THROW(calcCompliantCapacity(makePinch(5, 4000, 4000, 0, 0), Eigen::Vector3d::Zero(), force({0, 1, 0}), options), InputError);
+}
+
+// A ring about y (contacts at +-x pressing with N_a, at +-z with N_b, rigid fingers) loaded along
+// -y, tangent at every contact, so all four slip alike. Hertz-Mindlin's equal springs share the
+// load equally and the weak pair reaches its cone at 4 mu N_a; full contact's creep (its friction
+// ratio a function of the slip alone) brings all four to the cone together, at mu (2 N_a + 2 N_b):
+// the creep ramp of the regularized law (compliant_grasp_creep.h, a second method) and the
+// springs shared by normal force, whose total is kept, both give that.
+TEST(CompliantGraspCapacity, TangentialStiffnessByNormalForceSlipsAsCreep) {
+    const double mu = 0.9, Na = 1, Nb = 4, R = 0.04;
+    std::vector<CompliantContact> ring;
+    for (const auto& [p, N] : {std::pair{Eigen::Vector3d(R, 0, 0), Na}, {Eigen::Vector3d(-R, 0, 0), Na},
+                               {Eigen::Vector3d(0, 0, R), Nb}, {Eigen::Vector3d(0, 0, -R), Nb}}) {
+        ring.push_back(makeContact(p, -p, N, 4000, 0));
+    }
+    CompliantCapacityOptions options;
+    options.mu = mu;
+    options.slipDistance = 1;
+    EXPECT_NEAR(calcCompliantCapacity(ring, Eigen::Vector3d::Zero(), force({0, -1, 0}), options).firstSlip, 4 * mu * Na, 1e-9);
+    std::vector<CompliantContact> shared = ring;
+    setTangentialStiffnessByNormalForce(shared);
+    double before = 0, after = 0;
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+        before += ring[i].tangentialStiffness, after += shared[i].tangentialStiffness;
+        EXPECT_NEAR(shared[i].tangentialStiffness / shared[i].force_G.norm(), shared[0].tangentialStiffness / shared[0].force_G.norm(), 1e-9);
+    }
+    EXPECT_NEAR(after, before, 1e-9 * before);
+    const CompliantCapacity c = calcCompliantCapacity(shared, Eigen::Vector3d::Zero(), force({0, -1, 0}), options);
+    EXPECT_NEAR(c.firstSlip, mu * 2 * (Na + Nb), 1e-9);
+    EXPECT_NEAR(c.ultimate, mu * 2 * (Na + Nb), 1e-9);
+    // The creep ramp: the regularizing springs stiff (100 k_n) and equal, friction mu_s = mu_d.
+    for (CompliantContact& contact : ring) contact.tangentialStiffness = 100 * contact.normalStiffness;
+    contact::ContactParameters friction;
+    friction.staticFriction = friction.dynamicFriction = mu;
+    friction.transitionVelocity = 1e-3;
+    CompliantRampOptions ramp;
+    ramp.rate = 6;
+    ramp.maxLoad = 20;
+    ramp.timeStep = 1e-4;
+    const CompliantRamp creep = runCompliantRamp(ring, Eigen::Vector3d::Zero(), force({0, -1, 0}), friction, ramp);
+    EXPECT_NEAR(creep.capacity.firstSlip, mu * 2 * (Na + Nb), 0.01 * mu * 2 * (Na + Nb));
+}
+
+// A pinch loaded in its tangent plane by a force that combines y and z: the two contacts' cones
+// bound the total friction force, 2 mu N in any tangential direction (Coulomb), so the load
+// (0, 1, 1) N goes at 2 mu N / sqrt(2) of it, while along y alone and along z alone each goes at
+// 2 mu N: per-axis limits would hold it up to 2 mu N of each part, sqrt(2) times as much.
+TEST(CompliantGraspCapacity, AlongAWrenchThatCombinesAxesSharesTheCones) {
+    const double mu = 0.6, N = 5;
+    CompliantCapacityOptions options;
+    options.mu = mu;
+    options.slipDistance = 1;  // onset = ultimate
+    const auto pinch = makePinch(N, 4000, 4000, 3e-4, 3e-4);
+    const CompliantCapacity oblique = calcCompliantCapacityAlong(pinch, Eigen::Vector3d::Zero(), force({0, 1, 1}), options);
+    EXPECT_NEAR(oblique.ultimate, 2 * mu * N / std::sqrt(2.0), 1e-9);
+    EXPECT_NEAR(oblique.onset, oblique.ultimate, 1e-12);
+    for (const Eigen::Vector3d& e : {Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(0, 0, 1)}) {
+        EXPECT_NEAR(calcCompliantCapacity(pinch, Eigen::Vector3d::Zero(), force(e), options).ultimate, 2 * mu * N, 1e-9);
+    }
+    // A unit direction gives the one-axis function's figure.
+    const Eigen::Vector3d unit = Eigen::Vector3d(0, 1, 1).normalized();
+    EXPECT_NEAR(calcCompliantCapacityAlong(pinch, Eigen::Vector3d::Zero(), force(unit), options).ultimate,
+                calcCompliantCapacity(pinch, Eigen::Vector3d::Zero(), force(unit), options).ultimate, 1e-12);
+}
+
+// A force F0 along y with a moment T0 about z on a pinch whose contacts sit at x = -d and +d:
+// statics gives the contacts' y forces (F0 - T0/d)/2 and (F0 + T0/d)/2 per unit of load, so the
+// one at +d reaches mu N at s = 2 mu N / (F0 + T0/d); the one left can turn the object about its
+// point (no torsional friction): that is the ultimate.
+TEST(CompliantGraspCapacity, AlongAForceWithAMomentReachesTheLoadedContactsCone) {
+    const double mu = 0.6, N = 5, d = 0.02, F0 = 1, T0 = 0.01;
+    CompliantCapacityOptions options;
+    options.mu = mu;
+    options.slipDistance = 1;
+    Vector6 load = force({0, F0, 0});
+    load[2] = T0;
+    const CompliantCapacity c =
+        calcCompliantCapacityAlong(makePinch(N, 4000, 4000, 3e-4, 3e-4), Eigen::Vector3d::Zero(), load, options);
+    EXPECT_NEAR(c.firstSlip, 2 * mu * N / (F0 + T0 / d), 1e-9);
+    EXPECT_NEAR(c.ultimate, c.firstSlip, 1e-9);
+    EXPECT_THROW(calcCompliantCapacityAlong(makePinch(N, 4000, 4000, 0, 0), Eigen::Vector3d::Zero(), Vector6::Zero(), options),
+                 InputError);
 }
 
 }  // namespace

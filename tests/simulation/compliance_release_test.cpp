@@ -76,21 +76,21 @@ TEST(GraspSwitchRelease, UnsettledGraspEngagesOnlyInsideItsLimitsAndStaysWithFul
     EXPECT_LT(gap, 0.002) << "approx object " << gap << " m from the full-contact object";
 }
 
-// Ball f1 pushes the ball with more than the compliance model's +y side (11.13 N) allows, less
-// than the thesis's box (13.7 N): the trigger releases during the push (the model's limit named in
-// the reason), the switch engages again only after it (the contacts' wrench back inside the first
-// engagement's limits), and the object stays within 2 mm of full contact's over the whole run
-// (the must-show's bound; measured 0.59 mm, the thesis's box alone 1.23 mm).
-TEST(GraspSwitchRelease, BallF1ReleasesAtTheComplianceLimitAndStaysWithFullContact) {
+// Ball f1 pushes the ball along -y (the bushing's reaction peaks at 11.6 N), which full contact
+// holds, below the compliance model's side for it (13.45 N since the tangential stiffness is
+// shared by normal force; Hertz-Mindlin's sharing gave 11.12 N and released during the push):
+// the approximation holds the ball through the push, and the
+// object stays within 2 mm of full contact's over the whole run (the must-show's bound; measured
+// 1.23 mm, the thesis's box's figure: the bushing's missing give).
+TEST(GraspSwitchRelease, BallF1StaysEngagedAndWithFullContact) {
     const scenario::Scenario s = scenario::findBuiltinScenario("ball-clutch");
     const auto full = simulation::runGraspSimulation(s, makeOptions(simulation::SimulationMode::Full, "f1", false));
     const auto approx = simulation::runGraspSimulation(s, makeOptions(simulation::SimulationMode::Approx, "f1", true));
     ASSERT_TRUE(full.summary.complete) << full.summary.failure;
     ASSERT_TRUE(approx.summary.complete) << approx.summary.failure;
-    ASSERT_GE(approx.events.size(), 2u);
-    EXPECT_EQ(approx.events[1].kind, simulation::GraspEventKind::Release);
-    EXPECT_NE(approx.events[1].reason.find("reached the compliance limit"), std::string::npos) << approx.events[1].reason;
-    EXPECT_NE(approx.events[1].reason.find("translation y"), std::string::npos) << approx.events[1].reason;
+    for (const simulation::GraspEvent& e : approx.events) {
+        EXPECT_NE(e.kind, simulation::GraspEventKind::Release) << "released at " << e.time << " s: " << e.reason;
+    }
     EXPECT_EQ(approx.summary.held, full.summary.held);
     const double gap = findLargestDistance(approx, full);
     EXPECT_LT(gap, 0.002) << "approx object " << gap << " m from the full-contact object";
@@ -189,4 +189,37 @@ TEST(GraspSwitchRelease, CapAtSlipOnsetCapsOnlyForceSidesBeyondTheConstraintsOns
     const std::string reason = simulation::findAxisAtLimit(SimTK::Vec6(0, 0, 0, -13.6, 0, 0), limits);
     EXPECT_NE(reason.find("translation x -13.6 N reached the constraint's slip onset"), std::string::npos) << reason;
     EXPECT_EQ(simulation::describeSlipOnsetSides(limits), " (translation x lower side at the constraint's slip onset)");
+}
+
+// The load's own direction (findDirectionAtLimit) on a hand-made stiff pinch (contacts at x = -d
+// and +d, each pressing with N, friction mu): its per-axis sides along y and z are 2 mu N each,
+// but the two cones bound the total tangential force, 2 mu N in any direction (Coulomb): a held
+// load of 4.5 N along y and z together (6.36 N) is inside both sides and past the cones; 4 N of
+// each (5.66 N) is inside both.
+TEST(GraspSwitchRelease, FindDirectionAtLimitSharesTheCones) {
+    const double mu = 0.6, N = 5, d = 0.02;
+    simulation::ComplianceReleaseLimits limits;
+    limits.lower = SimTK::Vec6(1, 1, 1, 100, 2 * mu * N, 2 * mu * N);
+    limits.upper = limits.lower;
+    for (double side : {-1.0, 1.0}) {
+        grasp::CompliantContact c;
+        c.p_GC = Eigen::Vector3d(side * d, 0, 0);
+        c.n_G = Eigen::Vector3d(-side, 0, 0);
+        c.force_G = N * c.n_G;
+        c.normalStiffness = 4e5;
+        c.tangentialStiffness = 4e5;
+        c.fingerCompliance_G = 1e-6 * Eigen::Matrix3d::Identity();
+        limits.contacts_O.push_back(c);
+    }
+    limits.mu = limits.kineticMu = mu;
+    const SimTK::Vec6 past(0, 0, 0, 0, -4.5, -4.5), inside(0, 0, 0, 0, -4, -4);  // reactions: the load's opposite
+    EXPECT_TRUE(simulation::findAxisAtLimit(past, limits).empty());
+    const std::string text = simulation::findComplianceLimitReached(past, limits);
+    EXPECT_NE(text.find("reached the compliance model's onset along it"), std::string::npos) << text;
+    EXPECT_TRUE(simulation::findComplianceLimitReached(inside, limits).empty());
+    // A side is reported first; without the contacts only the sides count.
+    EXPECT_NE(simulation::findComplianceLimitReached(SimTK::Vec6(0, 0, 0, 0, -6.1, 0), limits).find("translation y"),
+              std::string::npos);
+    limits.contacts_O.clear();
+    EXPECT_TRUE(simulation::findComplianceLimitReached(past, limits).empty());
 }

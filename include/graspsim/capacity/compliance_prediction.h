@@ -24,6 +24,8 @@ namespace graspsim::capacity {
 /// The model's free choices.
 struct CompliancePredictionSettings {
     double tangentialStiffnessRatio = 2.0 / 3.0;  ///< k_t / k_n (> 0)
+    /// The total k_t shared by normal force (simulation::FingerComplianceSettings)
+    bool tangentialByNormalForce = true;
     double slipDistance = 2e-3;                   ///< m, the ramp's slip-onset displacement
     /// k_t / k_n of the creep ramp (grasp/compliant_grasp_creep.h), where k_t only regularizes:
     /// stiff, since full contact's regularized friction has no tangential spring.

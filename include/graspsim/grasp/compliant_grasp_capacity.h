@@ -102,6 +102,18 @@ struct CompliantCapacity {
     std::vector<Eigen::Vector3d> forces_G;
 };
 
+/// Shares the contacts' total tangential stiffness in proportion to their normal forces:
+/// k_t,i = (sum_j k_t,j) f_n,i / sum_j f_n,j (f_n the force along the normal; N/m). Why: full
+/// contact's regularized friction has no tangential spring. A sticking contact creeps at the slip
+/// speed v where mu(v) f_n = |f_t|, so its friction ratio |f_t| / f_n is a function of its slip
+/// alone, whatever its normal force, and contacts that slip alike reach the cone together. A
+/// spring gives the ratio k_t u / f_n: a function of the slip u alone only when k_t is
+/// proportional to f_n. Hertz-Mindlin's k_t ~ f_n^(1/3) brings lightly pressed contacts to their
+/// cones first and centres the grasp's tangential stiffness away from the firmly pressed ones.
+/// The total is kept: the creep's absolute rate is not a stiffness, and only the sharing changes.
+/// Contacts without a positive normal force or a finite positive k_t are left out and as they are.
+void setTangentialStiffnessByNormalForce(std::vector<CompliantContact>& contacts);
+
 /// The sticking stiffness K = (C_f + n n^T / k_n + (1 - n n^T) / k_t)^-1 of a contact (N/m, in G).
 /// @throws graspsim::InputError for a non-positive stiffness or a normal that is not unit.
 Eigen::Matrix3d calcStickingStiffness(const CompliantContact& contact);
@@ -119,5 +131,16 @@ Eigen::Matrix3d calcSlidingStiffness(const CompliantContact& contact, const Eige
 CompliantCapacity calcCompliantCapacity(const std::vector<CompliantContact>& contacts, const Eigen::Vector3d& p_GO,
                                         const Eigen::Matrix<double, 6, 1>& direction_G,
                                         const CompliantCapacityOptions& options);
+
+/// The same model along any load wrench `load_G` = [torque ; force] (rotation first, N m and N,
+/// about `p_GO`, in G; torque and force may be mixed), such as the wrench a constraint carries
+/// beyond what the contacts carried at the start. A load along one axis at a time, as the per-axis
+/// limits of compliance_limits.h take it, does not bound a load that combines axes: its parts
+/// draw on the same friction cones. Loads are in multiples of `load_G`: onset <= 1 means the grasp
+/// reaches its slip onset before the load reaches `load_G`.
+/// @throws graspsim::InputError for invalid contacts, a zero or non-finite load, or negative options.
+CompliantCapacity calcCompliantCapacityAlong(const std::vector<CompliantContact>& contacts, const Eigen::Vector3d& p_GO,
+                                             const Eigen::Matrix<double, 6, 1>& load_G,
+                                             const CompliantCapacityOptions& options);
 
 }  // namespace graspsim::grasp

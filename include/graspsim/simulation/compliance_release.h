@@ -6,6 +6,7 @@
 /// stands against them. Frame: O's origin (the centre of mass) with O's orientation, moment first.
 
 #include "graspsim/contact/compliant_contact_force.h"
+#include "graspsim/grasp/compliance_limits.h"
 #include "graspsim/simulation/approximation_context.h"
 
 #include "graspsim/simbody.h"
@@ -25,6 +26,15 @@ struct ComplianceReleaseLimits {
     /// Per side, true where capAtSlipOnset() replaced the model's limit by the constraint's slip onset.
     std::array<bool, 6> lowerAtSlipOnset{};
     std::array<bool, 6> upperAtSlipOnset{};
+    /// The model's contacts at engagement in O's frame (points from O's origin, m; normals, forces
+    /// in N, finger compliances in m/N, all along O's axes), for the load's own direction
+    /// (findDirectionAtLimit); empty: the per-axis sides alone.
+    std::vector<grasp::CompliantContact> contacts_O;
+    /// Where the model measures the slip (m, from O's origin, along O's axes); empty: the contacts.
+    std::vector<Eigen::Vector3d> slipPoints_O;
+    SimTK::Vec6 w0{0};  ///< the contacts' wrench at engagement (frame and order as the sides)
+    double mu = 0;      ///< where a contact breaks loose
+    double kineticMu = 0;  ///< at which it then slides
 };
 /// Two-sided limits of the constraint frame M (orientation R_GM, origin p_GM, in G) from the
 /// compliance model of the grasp in `state` (its contacts `reports`, friction coefficient `mu`,
@@ -43,6 +53,23 @@ void capAtSlipOnset(ComplianceReleaseLimits& limits, const SimTK::Vec6& lower, c
                     const std::array<bool, 6>& locked, double onsetFraction);
 /// " (translation x lower side at the constraint's slip onset)" for each capped side; empty if none.
 std::string describeSlipOnsetSides(const ComplianceReleaseLimits& limits);
+
+/// Fills `limits`' model of the load's own direction from the grasp's compliance model's contacts
+/// at engagement (`contacts_G`, in G) and O's pose (R_GO, p_GO; m), with the friction and slip
+/// points (`options`) of the sides.
+void setDirectionModel(ComplianceReleaseLimits& limits, const std::vector<grasp::CompliantContact>& contacts_G,
+                       const SimTK::Rotation& R_GO, const SimTK::Vec3& p_GO, const grasp::ComplianceLimitOptions& options);
+
+/// The sides are the model's onsets for loads along one axis at a time; a load that combines axes
+/// draws on the same friction cones and can reach the model's onset inside every side (the
+/// phone's −z ramp, docs/capacity.md). The load the constraint carries beyond the engagement's,
+/// w0 - `wrench`, reaches the model's onset along its own direction
+/// (grasp::calcCompliantCapacityAlong) when that onset is at most 1 times it: described with the
+/// load and the onset; empty if it has not, or without a direction model.
+std::string findDirectionAtLimit(const SimTK::Vec6& wrench, const ComplianceReleaseLimits& limits);
+
+/// findAxisAtLimit, then findDirectionAtLimit: the first reason `wrench` is at the limits.
+std::string findComplianceLimitReached(const SimTK::Vec6& wrench, const ComplianceReleaseLimits& limits);
 
 /// The first axis side on which `wrench` (on the object about O's origin, along O's axes, moment
 /// first: N m, N) has reached `limits`, described with both numbers; empty if it is inside on every axis.

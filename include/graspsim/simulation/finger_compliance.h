@@ -41,6 +41,10 @@ class GraspScene;
 /// The model's free choices at the contacts and fingers.
 struct FingerComplianceSettings {
     double tangentialStiffnessRatio = 2.0 / 3.0;  ///< k_t / k_n (> 0)
+    /// Whether the grasp's total k_t is shared in proportion to the normal forces, as full
+    /// contact's creep shares friction (grasp::setTangentialStiffnessByNormalForce); false:
+    /// each contact keeps tangentialStiffnessRatio k_n (Hertz-Mindlin's sharing).
+    bool tangentialByNormalForce = true;
     /// Whether the PD targets follow the finger along its IK null space (file comment).
     bool ikFollowsNullSpace = true;
 };
