@@ -112,13 +112,7 @@ Vector6 reorderToForceFirst(const Vector6& rotationFirst) {
     return v;
 }
 
-void checkDirection(const Vector6& direction_G, const CompliantCapacityOptions& options) {
-    const double torque = direction_G.head<3>().norm(), force = direction_G.tail<3>().norm();
-    const bool unitTorque = std::abs(torque - 1) < 1e-6 && force == 0;
-    const bool unitForce = std::abs(force - 1) < 1e-6 && torque == 0;
-    if (!unitTorque && !unitForce) {
-        throw InputError("compliant grasp capacity: the load direction must be one unit torque or one unit force");
-    }
+void checkOptions(const CompliantCapacityOptions& options) {
     for (const Eigen::Vector3d& p : options.slipPoints_G) {
         if (!p.allFinite()) throw InputError("compliant grasp capacity: slip points must be finite");
     }
@@ -128,6 +122,16 @@ void checkDirection(const Vector6& direction_G, const CompliantCapacityOptions& 
     if (!std::isnan(options.kineticMu) && !(options.kineticMu >= 0 && options.kineticMu <= options.mu)) {
         throw InputError("compliant grasp capacity: kineticMu must be in [0, mu] (or NaN: mu)");
     }
+}
+
+void checkDirection(const Vector6& direction_G, const CompliantCapacityOptions& options) {
+    const double torque = direction_G.head<3>().norm(), force = direction_G.tail<3>().norm();
+    const bool unitTorque = std::abs(torque - 1) < 1e-6 && force == 0;
+    const bool unitForce = std::abs(force - 1) < 1e-6 && torque == 0;
+    if (!unitTorque && !unitForce) {
+        throw InputError("compliant grasp capacity: the load direction must be one unit torque or one unit force");
+    }
+    checkOptions(options);
 }
 
 Progress startProgress(const std::vector<CompliantContact>& contacts, double mu) {
@@ -343,9 +347,7 @@ CompliantCapacity calcCompliantCapacityAlong(const std::vector<CompliantContact>
     if (!load_G.allFinite() || load_G.isZero(0)) {
         throw InputError("compliant grasp capacity: the load wrench must be finite and not zero");
     }
-    Vector6 unitForce = Vector6::Zero();
-    unitForce[3] = 1;
-    checkDirection(unitForce, options);  // the options' checks
+    checkOptions(options);
     return followLoad(contacts, p_GO, load_G, options);
 }
 
