@@ -93,17 +93,32 @@ void setDirectionModel(ComplianceReleaseLimits& limits, const std::vector<grasp:
     limits.kineticMu = options.kineticMu;
 }
 
-std::string findDirectionAtLimit(const SimTK::Vec6& wrench, const ComplianceReleaseLimits& limits) {
-    if (limits.contacts_O.empty()) return {};
+namespace {
+
+// The load the constraint carries beyond the engagement's: w0 - `wrench`.
+Eigen::Matrix<double, 6, 1> findLoadBeyondEngagement(const SimTK::Vec6& wrench, const ComplianceReleaseLimits& limits) {
     Eigen::Matrix<double, 6, 1> load;
     for (int k = 0; k < 6; ++k) load[k] = limits.w0[k] - wrench[k];
-    if (load.isZero(0)) return {};
+    return load;
+}
+
+// The model's onset along `load` in multiples of it, followed up to `maxLoad` (infinite beyond).
+double findOnsetAlong(const Eigen::Matrix<double, 6, 1>& load, const ComplianceReleaseLimits& limits, double maxLoad) {
     grasp::CompliantCapacityOptions options;
     options.mu = limits.mu;
     options.kineticMu = limits.kineticMu;
     options.slipPoints_G = limits.slipPoints_O;  // O's origin as the model's origin: O is its G here
-    options.maxLoad = 1;
-    const double onset = grasp::calcCompliantCapacityAlong(limits.contacts_O, Eigen::Vector3d::Zero(), load, options).onset;
+    options.maxLoad = maxLoad;
+    return grasp::calcCompliantCapacityAlong(limits.contacts_O, Eigen::Vector3d::Zero(), load, options).onset;
+}
+
+}  // namespace
+
+std::string findDirectionAtLimit(const SimTK::Vec6& wrench, const ComplianceReleaseLimits& limits) {
+    if (limits.contacts_O.empty()) return {};
+    const Eigen::Matrix<double, 6, 1> load = findLoadBeyondEngagement(wrench, limits);
+    if (load.isZero(0)) return {};
+    const double onset = findOnsetAlong(load, limits, 1);
     if (!(onset <= 1)) return {};
     char text[240];
     std::snprintf(text, sizeof text,
@@ -113,15 +128,29 @@ std::string findDirectionAtLimit(const SimTK::Vec6& wrench, const ComplianceRele
     return text;
 }
 
+// Followed to twice the load, so that the margin reaches its cap, |load|, continuously: onset 2
+// gives (2 - 1) |load| either way, and the witness sees no jump.
+double findDirectionMargin(const SimTK::Vec6& wrench, const ComplianceReleaseLimits& limits) {
+    if (limits.contacts_O.empty()) return SimTK::Infinity;
+    const Eigen::Matrix<double, 6, 1> load = findLoadBeyondEngagement(wrench, limits);
+    if (load.isZero(0)) return SimTK::Infinity;
+    const double onset = findOnsetAlong(load, limits, 2);
+    return (std::min(onset, 2.0) - 1) * load.norm();
+}
+
 std::string findComplianceLimitReached(const SimTK::Vec6& wrench, const ComplianceReleaseLimits& limits) {
     const std::string axis = findAxisAtLimit(wrench, limits);
     return axis.empty() ? findDirectionAtLimit(wrench, limits) : axis;
 }
 
-double findLimitMargin(const SimTK::Vec6& wrench, const ComplianceReleaseLimits& limits) {
+double findAxisMargin(const SimTK::Vec6& wrench, const ComplianceReleaseLimits& limits) {
     double margin = SimTK::Infinity;
     for (int k = 0; k < 6; ++k) margin = std::min(margin, wrench[k] >= 0 ? limits.upper[k] - wrench[k] : limits.lower[k] + wrench[k]);
     return margin;
+}
+
+double findLimitMargin(const SimTK::Vec6& wrench, const ComplianceReleaseLimits& limits) {
+    return std::min(findAxisMargin(wrench, limits), findDirectionMargin(wrench, limits));
 }
 
 // The wrench needs the contacts' points and forces only, not the fingers' compliance (a Jacobian

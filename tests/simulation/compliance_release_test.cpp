@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -222,4 +223,36 @@ TEST(GraspSwitchRelease, FindDirectionAtLimitSharesTheCones) {
               std::string::npos);
     limits.contacts_O.clear();
     EXPECT_TRUE(simulation::findComplianceLimitReached(past, limits).empty());
+}
+
+// The release witness's value on the same pinch: the two cones give way together at a total
+// tangential load of 2 mu N in any direction (the slip up to there, microns, is far below the
+// model's 2 mm), so the direction margin is 2 mu N - |load| from half of that load on, |load|
+// below it; the witness is the smaller of it and the per-axis margin.
+TEST(GraspSwitchRelease, DirectionMarginIsTheDistanceToTheConesAlongTheLoad) {
+    const double mu = 0.6, N = 5, d = 0.02, ultimate = 2 * mu * N;
+    simulation::ComplianceReleaseLimits limits;
+    limits.lower = SimTK::Vec6(10, 10, 10, 100, ultimate, ultimate);
+    limits.upper = limits.lower;
+    for (double side : {-1.0, 1.0}) {
+        grasp::CompliantContact c;
+        c.p_GC = Eigen::Vector3d(side * d, 0, 0);
+        c.n_G = Eigen::Vector3d(-side, 0, 0);
+        c.force_G = N * c.n_G;
+        c.normalStiffness = 4e5;
+        c.tangentialStiffness = 4e5;
+        c.fingerCompliance_G = 1e-6 * Eigen::Matrix3d::Identity();
+        limits.contacts_O.push_back(c);
+    }
+    limits.mu = limits.kineticMu = mu;
+    for (double a : {2.5, 4.0, 4.5, 5.0}) {  // held along y and z at once: |load| = a sqrt(2)
+        const SimTK::Vec6 reaction(0, 0, 0, 0, -a, -a);
+        const double norm = a * std::sqrt(2.0);
+        EXPECT_NEAR(simulation::findDirectionMargin(reaction, limits), std::min(ultimate - norm, norm), 1e-6 * ultimate) << a;
+        EXPECT_EQ(simulation::findLimitMargin(reaction, limits) <= 0, !simulation::findComplianceLimitReached(reaction, limits).empty()) << a;
+    }
+    EXPECT_NEAR(simulation::findLimitMargin(SimTK::Vec6(0, 0, 0, 0, -1, 0), limits), 1.0, 1e-6);  // the direction (its margin |load|), not the y side (5)
+    EXPECT_NEAR(simulation::findLimitMargin(SimTK::Vec6(0, 0, 0, 0, -5.5, 0), limits), ultimate - 5.5, 1e-6);  // the y side
+    limits.contacts_O.clear();
+    EXPECT_EQ(simulation::findDirectionMargin(SimTK::Vec6(0, 0, 0, 0, -4.5, -4.5), limits), SimTK::Infinity);
 }

@@ -76,7 +76,18 @@ std::string findComplianceLimitReached(const SimTK::Vec6& wrench, const Complian
 std::string findAxisAtLimit(const SimTK::Vec6& wrench, const ComplianceReleaseLimits& limits);
 
 /// The smallest distance (N m or N, mixed) of `wrench` from the side of `limits` it points to:
-/// negative once a side is passed (the release witness's value).
+/// zero or negative once a side is reached (findAxisAtLimit).
+double findAxisMargin(const SimTK::Vec6& wrench, const ComplianceReleaseLimits& limits);
+
+/// How far the load beyond engagement (w0 - `wrench`, findDirectionAtLimit) is from the model's
+/// onset along its own direction, in the load's Euclidean norm (N m and N mixed): (s - 1) |load|
+/// for an onset at s times the load, s up to 2; |load| beyond. Zero or negative exactly when
+/// findDirectionAtLimit reports the onset reached; infinite without a direction model or load.
+double findDirectionMargin(const SimTK::Vec6& wrench, const ComplianceReleaseLimits& limits);
+
+/// The release witness's value: the smaller of findAxisMargin and findDirectionMargin, zero or
+/// negative exactly when findComplianceLimitReached reports a reason. Costs one run of the
+/// compliance model along the load (a few small solves).
 double findLimitMargin(const SimTK::Vec6& wrench, const ComplianceReleaseLimits& limits);
 
 /// The contacts' (`reports`) wrench on the object about O's origin, along O's axes (moment first,

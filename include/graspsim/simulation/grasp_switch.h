@@ -151,8 +151,9 @@ public:
     /// evaluated at every dynamics evaluation, and Q there would cost more than the checks save.)
     SimTK::TriggeredEventHandler* makeDetachWitness() const;
     /// With ApproxOptions::releaseTrigger Compliance (merged), a new triggered event handler that
-    /// runs the engaged check where the constraint's reaction passes a compliance limit (the
-    /// smallest margin, findLimitMargin, falling through zero), found by the integrator's event
+    /// runs the engaged check where the constraint's reaction passes a compliance limit, an axis
+    /// side or the model's onset along the load's own direction (findLimitMargin falling through
+    /// zero), found by the integrator's event
     /// detection at the end of the step that crosses it, so that the release does not wait for the
     /// next periodic check (up to ik_interval, 10 ms: as long as full contact's slip onset under a
     /// constant load above capacity); nullptr otherwise. Added as makeDetachWitness()'s.
