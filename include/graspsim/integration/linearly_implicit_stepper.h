@@ -114,9 +114,9 @@ public:
     IntegrationStatistics getStatistics() const override;
     /// The largest error estimate a fixed ROS2 step may have, against the state's own scale (each
     /// entry over 1 + |y|, weighted RMS): beyond it the step's second- and first-order solutions
-    /// differ by more than the state itself. Not tuned: the scale is the state's; measured on the
-    /// shipped scenes (docs/performance.md) accepted runs at 1 ms stay below 0.12 (0.37 in a
-    /// capacity ramp's drop), the blow-ups reach 1.4 to 660.
+    /// differ by more than the state itself. Not tuned: the scale is the state's. Measured on the
+    /// five shipped scenes (docs/performance.md): runs at 1 ms stay below 0.12 (0.37 in a capacity
+    /// ramp as the ball drops); the runs that blow up cross it (first at 1.02 to 664).
     static constexpr double kUntrustedStepEstimate = 1.0;
 
     /// "linearly-implicit-euler" (order 1) or "rosenbrock-ros2" (order 2).
