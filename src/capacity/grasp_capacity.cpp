@@ -48,8 +48,12 @@ public:
     void captureReference() override {
         const simulation::GraspSwitch* grasp = findSwitch();
         if (grasp && !grasp->isEngaged(getState())) {
+            // At fixed steps a grasp that never settles is the likelier cause: a step too long to
+            // hold it, below what the stepper refuses (docs/performance.md).
+            const bool fixed = options_.integrator == simulation::IntegratorChoice::LinearlyImplicitFixed;
             throw NumericalError("capacity: the approximation is not engaged at the load's start, t = " +
-                                 std::to_string(getState().getTime()) + " s; use --mode full or lower --q-threshold");
+                                 std::to_string(getState().getTime()) + " s; use --mode full or lower --q-threshold" +
+                                 (fixed ? ", or at fixed steps a shorter --step-size (0.001) or --integrator implicit" : ""));
         }
         reference_ = findGoalPointsInPalm();
         q_HO_reference_ = findObjectInPalm().R().convertRotationToQuaternion().asVec4();
