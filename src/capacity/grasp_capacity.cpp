@@ -26,7 +26,7 @@ constexpr double kGravity = 9.81;  // m/s^2, for the default rate only
 class GraspRun : public LoadedRun {
 public:
     GraspRun(const scenario::Scenario& scenario, simulation::SimulationOptions options)
-        : experiment_(scenario, options), scene_(experiment_.getScene()) {
+        : experiment_(scenario, options), scene_(experiment_.getScene()), options_(options) {
         if (options.contact == simulation::ContactModel::Rigid) {
             rigid_ = std::make_unique<simulation::RigidStepper>(scene_);
             rigid_->initialize(experiment_.makeInitialState());
@@ -48,8 +48,12 @@ public:
     void captureReference() override {
         const simulation::GraspSwitch* grasp = findSwitch();
         if (grasp && !grasp->isEngaged(getState())) {
+            // At fixed steps a grasp that never settles is the likelier cause: a step too long to
+            // hold it, below what the stepper refuses (docs/performance.md).
+            const bool fixed = options_.integrator == simulation::IntegratorChoice::LinearlyImplicitFixed;
             throw NumericalError("capacity: the approximation is not engaged at the load's start, t = " +
-                                 std::to_string(getState().getTime()) + " s; use --mode full or lower --q-threshold");
+                                 std::to_string(getState().getTime()) + " s; use --mode full or lower --q-threshold" +
+                                 (fixed ? ", or at fixed steps a shorter --step-size (0.001) or --integrator implicit" : ""));
         }
         reference_ = findGoalPointsInPalm();
         q_HO_reference_ = findObjectInPalm().R().convertRotationToQuaternion().asVec4();
@@ -81,11 +85,17 @@ private:
 
     const SimTK::State& getState() const { return rigid_ ? rigid_->getState() : made_.stepper->getState(); }
 
+    // A fixed step the stepper cannot trust ends the measurement (no figures from it), named in
+    // the run's terms; other failures end the run's trace (runLoadedScene).
     void stepTo(double t) {
         if (rigid_) {
             rigid_->stepTo(t);
         } else {
-            made_.stepper->stepTo(t);
+            try {
+                made_.stepper->stepTo(t);
+            } catch (const integration::FixedStepTooLongError& e) {
+                throw simulation::describeFixedStepTooLong(scene_.getScenario(), options_, e);
+            }
         }
         const SimTK::State& s = getState();
         for (int k = 0; k < s.getNQ(); ++k) {
@@ -119,6 +129,7 @@ private:
 
     simulation::GraspExperiment experiment_;
     const simulation::GraspScene& scene_;
+    simulation::SimulationOptions options_;
     simulation::SceneStepper made_;  // compliant contact: the stepper and its force Jacobians
     std::unique_ptr<simulation::RigidStepper> rigid_;
     std::vector<SimTK::Vec3> reference_;

@@ -1,6 +1,7 @@
 #include "capacity_command.h"
 
 #include "number_option.h"
+#include "output_folder.h"
 
 #include "graspsim/planning/planned_scenario.h"
 #include "graspsim/capacity/capacity_files.h"
@@ -16,6 +17,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 namespace graspsim::cli {
 
@@ -161,14 +163,6 @@ void checkConstantLoadOptions(const std::string& method, const std::string& load
     }
 }
 
-void prepareFolder(const std::string& folder) {
-    std::error_code ec;
-    std::filesystem::create_directories(folder, ec);
-    if (ec || !std::filesystem::is_directory(folder)) {
-        throw InputError("--out: folder '" + folder + "' cannot be created or written (" + ec.message() + ")");
-    }
-}
-
 }  // namespace
 
 CapacityCommand::Plan CapacityCommand::makePlan() const {
@@ -235,7 +229,8 @@ int CapacityCommand::run() const {
         }
         return 0;
     }
-    if (!o.out.empty()) prepareFolder(o.out);
+    std::optional<OutputFolder> folder;  // gone again if a measurement throws (a step size it cannot use, ...)
+    if (!o.out.empty()) folder.emplace(o.out);
     std::vector<capacity::GraspCapacity> measurements;
     for (capacity::GraspCapacityRequest r : plan.requests) {
         r.rate = findRate(scenario, plan.torqueRateFromForceRate, r);
@@ -251,6 +246,7 @@ int CapacityCommand::run() const {
         std::cout << scenario.name << " " << capacity::describeCapacity(measurements.back()) << " ["
                   << measurements.back().wallTime << " s wall]\n";
     }
+    if (folder) folder->keep();
     if (!o.out.empty()) capacity::writeCapacityFiles(o.out, scenario.name, measurements);
     if (!o.out.empty() && o.direction == "all") {
         const capacity::CapacityPlot plot = capacity::drawCapacityPlot(o.out);

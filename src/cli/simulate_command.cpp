@@ -1,6 +1,7 @@
 #include "simulate_command.h"
 
 #include "number_option.h"
+#include "output_folder.h"
 #include "progress_meter.h"
 
 #include "graspsim/planning/planned_scenario.h"
@@ -118,14 +119,6 @@ void checkPerturbation(const std::string& perturbation, const scenario::Scenario
                      "' has none, " + known);
 }
 
-void prepareFolder(const std::string& folder) {
-    std::error_code ec;
-    std::filesystem::create_directories(folder, ec);
-    if (ec || !std::filesystem::is_directory(folder)) {
-        throw InputError("--out: folder '" + folder + "' cannot be created or written (" + ec.message() + ")");
-    }
-}
-
 // Simulated time as progress: on a terminal only, unless --quiet.
 simulation::ProgressCallback makeProgress(ProgressMeter& meter) {
     if (!meter.isShown()) return {};
@@ -220,9 +213,10 @@ int SimulateCommand::run(const std::vector<std::string>& commandLine) const {
     options.perturbation = o.perturbation;
     simulation::checkApproxAttach(scenario, options);
     simulation::checkScenarioSetup(scenario, options);  // refuses a grasp that cannot start before the folder exists
-    prepareFolder(o.out);
+    OutputFolder folder(o.out);  // gone again if the run throws (a step size it cannot use, ...)
     ProgressMeter meter("simulating", o.quiet);
     simulation::SimulationResult result = simulation::runGraspSimulation(scenario, options, makeProgress(meter));
+    folder.keep();
     result.summary.planTime = planTime;
     meter.finish();
     results::writeResultFolder(o.out, scenario, result, makeRunProvenance(commandLine, scenario, options));

@@ -9,6 +9,7 @@
 #include "trigger_crossings.h"
 
 #include "graspsim/error.h"
+#include "graspsim/integration/fixed_step_too_long_error.h"
 
 #include <algorithm>
 #include <chrono>
@@ -274,13 +275,16 @@ std::vector<double> addScaled(const std::vector<double>& a, double s, const std:
 }  // namespace
 
 // One step of size h (see the header); `error` receives its error estimate (weighted RMS
-// against the accuracy; 0 for Euler). True if the step's end triggered an event (handled); a
+// against the accuracy, at fixed steps against the state's own scale; 0 for Euler). At fixed
+// steps a ROS2 step whose estimate exceeds kUntrustedStepEstimate throws FixedStepTooLongError
+// (see the header). True if the step's end triggered an event (handled); a
 // step about to be rejected (error > 1 under error control) is not looked at for events, one that
 // loses an active term sets switchCrossed_, and one that ends past eventHorizon_ and triggers sets
 // redo_ instead (the caller takes them again).
 bool LinearlyImplicitStepper::takeStep(double h, double& error) {
     const double t0 = state_.getTime();
     error = options_.order == 2 ? takeRosenbrockStep(h) : (takeEulerStep(h), 0.0);
+    if (options_.accuracy == 0 && error > kUntrustedStepEstimate) throw FixedStepTooLongError(h, t0, error);
     project(state_);
     system_.realize(state_, SimTK::Stage::Acceleration);
     ++evaluations_;
@@ -366,7 +370,7 @@ double LinearlyImplicitStepper::takeRosenbrockStep(double h) {
     n0_->multiply(a2, qdot2);
     const SimTK::Vector uNext = toSimTK(addScaled(addScaled(u0, 1.5 * h, b1), 0.5 * h, b2));
     setState(t0 + h, q0 + (1.5 * h) * qdot1 + (0.5 * h) * qdot2, uNext, z0 + (0.5 * h) * (zdot0 + zdot2));
-    return options_.accuracy > 0 ? calcErrorNorm(A, h, a1, a2, b1, b2, u0) : 0.0;
+    return calcErrorNorm(A, h, a1, a2, b1, b2, u0, options_.accuracy > 0 ? options_.accuracy : 1.0);
 }
 
 // The step's matrix: the one kept from an earlier step while nothing says it is out of date (see
@@ -404,10 +408,12 @@ void LinearlyImplicitStepper::solve(const StepMatrix& A, std::vector<double>& b)
 // by W^-1 = (I - g J)^-1 as Shampine filters stiff estimates (unfiltered, the stiff joint modes'
 // share of E rejected about every other step at accuracy 1e-3 on the ball clutch), in the
 // weighted RMS norm of Simbody's accuracy convention: each entry over accuracy (1 + |y|), with
-// the displacement x for q (its weight 1) and u.
+// the displacement x for q (its weight 1) and u. At fixed steps `accuracy` is 1: the estimate
+// against the state's own scale, for the guard in takeStep().
 double LinearlyImplicitStepper::calcErrorNorm(const StepMatrix& A, double h, const std::vector<double>& a1,
                                               const std::vector<double>& a2, const std::vector<double>& b1,
-                                              const std::vector<double>& b2, const std::vector<double>& u0) const {
+                                              const std::vector<double>& b2, const std::vector<double>& u0,
+                                              double accuracy) const {
     const double g = (1 + 1 / std::sqrt(2.0)) * h;
     const std::size_t n = u0.size();
     std::vector<double> ex(n), eu(n);
@@ -420,7 +426,7 @@ double LinearlyImplicitStepper::calcErrorNorm(const StepMatrix& A, double h, con
     const std::vector<double> fx = addScaled(ex, g, fu);
     double sum = 0;
     for (std::size_t i = 0; i < n; ++i) {
-        const double x = fx[i] / options_.accuracy, u = fu[i] / (options_.accuracy * (1 + std::abs(u0[i])));
+        const double x = fx[i] / accuracy, u = fu[i] / (accuracy * (1 + std::abs(u0[i])));
         sum += x * x + u * u;
     }
     return n > 0 ? std::sqrt(sum / static_cast<double>(2 * n)) : 0.0;

@@ -284,6 +284,8 @@ void runScene(GraspExperiment& experiment, AnyStepper& stepper, double duration,
     try {
         stepThroughSamples(experiment, stepper, recorder, phases, duration, progress, observer, lastEvent);
         result.summary.complete = true;
+    } catch (const integration::FixedStepTooLongError&) {
+        throw;  // no result at all: the caller names the step's source (describeFixedStepTooLong)
     } catch (const NumericalError& e) {
         result.summary.failure = foldToOneLine(e.what());
     } catch (const SimTK::Exception::Base& e) {  // its what() starts with a source file and spans lines
@@ -315,7 +317,11 @@ SimulationResult runGraspSimulation(const scenario::Scenario& scenario, const Si
     }
     const SceneStepper made = makeSceneStepper(experiment, options);
     const std::unique_ptr<integration::Stepper>& stepper = made.stepper;
-    runScene(experiment, *stepper, duration, "integration failed", progress, observer, result);
+    try {
+        runScene(experiment, *stepper, duration, "integration failed", progress, observer, result);
+    } catch (const integration::FixedStepTooLongError& e) {
+        throw describeFixedStepTooLong(scenario, options, e);
+    }
     result.summary.integrator = stepper->getMethodName();
     result.summary.integratorStatistics = stepper->getStatistics();
     return result;

@@ -5,7 +5,10 @@
 #include "graspsim/integration/joint_impedance_jacobian.h"
 #include "graspsim/integration/linearly_implicit_stepper.h"
 #include "graspsim/integration/simbody_stepper.h"
+#include "graspsim/scenario/scenario.h"
 #include "graspsim/simulation/grasp_experiment.h"
+
+#include <cstdio>
 
 namespace graspsim::simulation {
 
@@ -64,6 +67,22 @@ SceneStepper makeSceneStepper(const GraspExperiment& experiment, const Simulatio
     cvode.relativeTolerance = accuracy;
     made.stepper = std::make_unique<integration::CvodeIntegrator>(scene.getSystem(), cvode);
     return made;
+}
+
+InputError describeFixedStepTooLong(const scenario::Scenario& scenario, const SimulationOptions& options,
+                                    const integration::FixedStepTooLongError& error) {
+    // The value as given: the steps themselves are the intervals between samples cut into equal
+    // steps no longer than it (error.getStepSize()).
+    const std::string field = options.stepSize > 0 ? "--step-size" : scenario.source + ": simulation.step_size";
+    const double given = options.stepSize > 0 ? options.stepSize : scenario.simulation.stepSize;
+    char text[600];
+    std::snprintf(text, sizeof text,
+                  "%s: %g s is not accepted with --integrator implicit-fixed for scenario '%s': the step from t = %.4f s "
+                  "has an error estimate %.3g times the state's own scale (its second- and first-order solutions "
+                  "disagree entirely: the step is unstable or far too long here); use a shorter --step-size (0.001 "
+                  "holds the shipped scenes) or --integrator implicit",
+                  field.c_str(), given, scenario.name.c_str(), error.getTime(), error.getEstimate());
+    return InputError(text);
 }
 
 }  // namespace graspsim::simulation

@@ -2,11 +2,14 @@
 // discrete solution and first-order convergence; ROS2: exact), a stiff overdamped spring-damper
 // (stable at 5-20x the explicit limit; first- and second-order convergence to the analytic
 // solution), and, as a second method, Runge-Kutta-Merson on a double pendulum (error control).
+// At fixed steps, a damper left explicit against the closed form of ROS2 on it: stable steps run
+// through, unstable ones stop where the closed-form error estimate exceeds the state's scale.
 // Bad options throw.
 
 #include "graspsim/integration/linearly_implicit_stepper.h"
 
 #include "graspsim/error.h"
+#include "graspsim/integration/fixed_step_too_long_error.h"
 #include "graspsim/integration/joint_impedance_jacobian.h"
 
 #include <gtest/gtest.h>
@@ -321,6 +324,73 @@ TEST(LinearlyImplicitStepper, AStepEndingOnALandingTimeSeesTheJumpAfterIt) {
     const double dt = T - kStart;
     EXPECT_NEAR(scene.body.getOneU(stepper.getState(), 0), kForce / kMass * dt, 1e-12);
     EXPECT_NEAR(scene.body.getOneQ(stepper.getState(), 0), kForce / (2 * kMass) * dt * dt, 1e-12);
+}
+
+// A damper the stepper has no Jacobian of, m u' = -c u: ROS2 treats it explicitly. With
+// lambda = -c/m and z = h lambda its stages reduce, in u, to Heun's method, u_k+1 = R(z) u_k with
+// R(z) = 1 + z + z^2/2 (stable for -2 <= z <= 0), and its error estimate has a closed form from
+// the same tableau (the Jacobian keeps only x' = u, so W^-1 = [[1, g], [0, 1]], g = gamma h):
+//   f_u = u_k z^2 / 2,  f_x = h u_k (z (1 - 2 gamma) + 2 gamma z^2) / 2 + 0,
+//   estimate = sqrt((f_x^2 + (f_u / (1 + |u_k|))^2) / 2)  (the state's own scale: accuracy 1).
+struct ExplicitDamper {
+    static constexpr double kMass = 1, kDamping = 1000;  // lambda = -1000 /s
+    SliderScene scene{kMass, 0};
+    SimTK::Force::MobilityLinearDamper damper{scene.forces, scene.body, SimTK::MobilizerUIndex(0), kDamping};
+
+    static double calcEstimate(double h, double u) {
+        const double z = -kDamping / kMass * h, gamma = 1 + 1 / std::sqrt(2.0);
+        const double fu = u * z * z / 2, fx = h * u * (z * (1 - 2 * gamma) + 2 * gamma * z * z) / 2;
+        return std::sqrt((fx * fx + std::pow(fu / (1 + std::abs(u)), 2)) / 2);
+    }
+    static double calcGrowth(double h) {
+        const double z = -kDamping / kMass * h;
+        return 1 + z + z * z / 2;
+    }
+    // Fixed steps of h from speed u0 up to `duration`; the speed there.
+    double runTo(double h, double u0, double duration) {
+        SimTK::State state = scene.system.realizeTopology();
+        scene.body.setOneU(state, 0, u0);
+        LinearlyImplicitOptions options;
+        options.stepSize = h;
+        LinearlyImplicitStepper stepper(scene.system, {}, options);
+        stepper.initialize(state);
+        stepper.stepTo(duration);
+        return scene.body.getOneU(stepper.getState(), 0);
+    }
+};
+
+// z = -1: R = 0.5, the run decays as the closed form says and no step's estimate (0.18 at most,
+// at the start) comes near the state's scale: no throw. (The stiff dampers above, in the
+// Jacobian, are the L-stable case: z down to -40 at fixed steps, no throw either.)
+TEST(LinearlyImplicitStepper, FixedStepsOnAStableExplicitDamperRunThrough) {
+    constexpr double h = 1e-3, u0 = 1;
+    ASSERT_LT(ExplicitDamper::calcEstimate(h, u0), LinearlyImplicitStepper::kUntrustedStepEstimate);
+    ExplicitDamper damper;
+    EXPECT_NEAR(damper.runTo(h, u0, 10 * h), u0 * std::pow(ExplicitDamper::calcGrowth(h), 10), 1e-12);
+}
+
+// z = -3: R = 2.5, the speed grows 2.5x a step and so does the estimate with it; the run stops
+// with FixedStepTooLongError at the first step whose closed-form estimate exceeds the state's
+// scale (from 1 cm/s: the sixth, at 15 ms), naming that step's start, size and estimate.
+TEST(LinearlyImplicitStepper, FixedStepsOnAnUnstableExplicitDamperStopAtTheFirstUntrustedStep) {
+    constexpr double h = 3e-3, u0 = 0.01;
+    int k = 0;
+    double u = u0;
+    while (ExplicitDamper::calcEstimate(h, u) <= LinearlyImplicitStepper::kUntrustedStepEstimate) {
+        u *= ExplicitDamper::calcGrowth(h);
+        ++k;
+    }
+    ASSERT_EQ(k, 5);
+    ExplicitDamper damper;
+    try {
+        damper.runTo(h, u0, 30 * h);
+        FAIL() << "an unstable fixed step ran through";
+    } catch (const FixedStepTooLongError& e) {
+        EXPECT_NEAR(e.getTime(), k * h, 1e-12);
+        EXPECT_NEAR(e.getStepSize(), h, 1e-15);
+        EXPECT_NEAR(e.getEstimate(), ExplicitDamper::calcEstimate(h, u), 1e-9 * e.getEstimate());
+        EXPECT_NE(std::string(e.what()).find("fixed step 0.003 s"), std::string::npos) << e.what();
+    }
 }
 
 TEST(LinearlyImplicitStepper, RejectsBadOptions) {

@@ -6,6 +6,8 @@
 /// attachment. One place for `simulate`, `capacity` and everything else that steps a scene
 /// (rigid contact has its own stepper, rigid_stepping.h).
 
+#include "graspsim/error.h"
+#include "graspsim/integration/fixed_step_too_long_error.h"
 #include "graspsim/integration/force_jacobian.h"
 #include "graspsim/integration/stepper.h"
 #include "graspsim/simulation/simulation_options.h"
@@ -27,5 +29,12 @@ struct SceneStepper {
 /// scenario's if 0) and, for the linearly implicit one, steps up to `options.stepSize` (the
 /// scenario's simulation.step_size if 0). Not initialized. The experiment must outlive it.
 SceneStepper makeSceneStepper(const GraspExperiment& experiment, const SimulationOptions& options);
+
+/// The stepper's refusal of a fixed step (`--integrator implicit-fixed`) in the run's own terms:
+/// the field the step came from (--step-size, or the scenario's simulation.step_size), its value,
+/// the time, and what to use instead (a shorter step or error control). For the caller to throw;
+/// a run that cannot be trusted gives no result.
+InputError describeFixedStepTooLong(const scenario::Scenario& scenario, const SimulationOptions& options,
+                                    const integration::FixedStepTooLongError& error);
 
 }  // namespace graspsim::simulation

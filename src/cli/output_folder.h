@@ -1,0 +1,30 @@
+#pragma once
+// The --out folder of a command: created before the run (so that an unwritable path is refused
+// before any work), and removed again if the run fails before anything was written into it, so
+// that a failed run leaves no folder behind. Only what this object created goes, and only while
+// empty: a folder that existed before, or holds files, stays as it is.
+
+#include <string>
+
+namespace graspsim::cli {
+
+class OutputFolder {
+public:
+    // Creates `path` and any missing parents. Throws InputError "--out: folder '<path>' cannot be
+    // created or written (<reason>)".
+    explicit OutputFolder(const std::string& path);
+    // Removes the folders it created, leaf first, while they are empty, unless keep() was called.
+    ~OutputFolder();
+    OutputFolder(const OutputFolder&) = delete;
+    OutputFolder& operator=(const OutputFolder&) = delete;
+
+    // The run gave results: the folder stays (it is about to be written).
+    void keep() { kept_ = true; }
+
+private:
+    std::string path_;
+    std::string topCreated_;  // the outermost folder this created; empty if `path` existed
+    bool kept_ = false;
+};
+
+}  // namespace graspsim::cli
