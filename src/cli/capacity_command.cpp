@@ -149,6 +149,18 @@ double findRate(const scenario::Scenario& scenario, bool torqueRateFromForceRate
     return r.rate;
 }
 
+// --method compliance predicts from full contact run to the load's start on CPodes, and prints.
+void checkComplianceMethodOptions(const std::string& method, const std::string& out, const std::string& integratorText,
+                                  simulation::IntegratorChoice integrator) {
+    if (method != "compliance") return;
+    using simulation::IntegratorChoice;
+    if (integrator != IntegratorChoice::Automatic && integrator != IntegratorChoice::SimbodyCpodes) {
+        throw InputError("--integrator: value '" + integratorText + "' is not accepted with --method compliance, which runs "
+                         "full contact to the load's start on CPodes; use simbody or leave --integrator out");
+    }
+    if (!out.empty()) throw InputError("--out: --method compliance writes no files; leave --out out");
+}
+
 // --load belongs to --method constant, which needs it, and one direction (a load is N or N m).
 void checkConstantLoadOptions(const std::string& method, const std::string& load, const std::string& direction) {
     if (method != "constant" && !load.empty()) {
@@ -195,7 +207,7 @@ CapacityCommand::Plan CapacityCommand::makePlan() const {
     plan.constant = o.method == "constant";
     checkConstantLoadOptions(o.method, o.load, o.direction);
     plan.load = parsePositive(o.load, "--load", "the load (N, or N m with --torque)", 0);
-    if (plan.compliance && !o.out.empty()) throw InputError("--out: --method compliance writes no files; leave --out out");
+    checkComplianceMethodOptions(o.method, o.out, o.integrator, plan.simulation.integrator);
     const double rate = parsePositive(o.rate, "--rate", "the rate", 0);
     const double maxDuration = parsePositive(o.maxDuration, "--max-duration", "the ramp's duration (s)", 4);
     const double initialLoad = parsePositive(o.initialLoad, "--initial-load", "the initial load", 0);

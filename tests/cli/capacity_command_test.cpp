@@ -34,6 +34,7 @@ TEST_F(CapacityCommand, BadInputIsOneLineAndWritesNothing) {
     expectRejected("--rate inf", "--rate");
     expectRejected("--method guess", "--method");
     expectRejected("--method compliance", "--out");  // it writes no files
+    expectRejected("--method compliance --integrator implicit", "--integrator");  // it runs CPodes to the load's start
     expectRejected("--mode half", "--mode");
     expectRejected("--integrator euler", "--integrator");
     expectRejected("--integrator implicit --step-size 0", "--step-size");
