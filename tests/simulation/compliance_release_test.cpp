@@ -56,6 +56,25 @@ scenario::Scenario makeUnsettledPhone() {
     return scenario::parseScenario(text, "unsettled-phone.yaml");
 }
 
+// The direction model of a stiff pinch: contacts at x = -2 cm and +2 cm, each pressing with
+// `N` (N), friction `mu` breaking loose and sliding; the sides are left to the test.
+simulation::ComplianceReleaseLimits makeStiffPinch(double mu, double N) {
+    const double d = 0.02;
+    simulation::ComplianceReleaseLimits limits;
+    for (double side : {-1.0, 1.0}) {
+        grasp::CompliantContact c;
+        c.p_GC = Eigen::Vector3d(side * d, 0, 0);
+        c.n_G = Eigen::Vector3d(-side, 0, 0);
+        c.force_G = N * c.n_G;
+        c.normalStiffness = 4e5;
+        c.tangentialStiffness = 4e5;
+        c.fingerCompliance_G = 1e-6 * Eigen::Matrix3d::Identity();
+        limits.contacts_O.push_back(c);
+    }
+    limits.mu = limits.kineticMu = mu;
+    return limits;
+}
+
 }  // namespace
 
 // Engaged at its first check (0.22 s), the unsettled phone's weight was outside the limits of that
@@ -198,21 +217,10 @@ TEST(GraspSwitchRelease, CapAtSlipOnsetCapsOnlyForceSidesBeyondTheConstraintsOns
 // load of 4.5 N along y and z together (6.36 N) is inside both sides and past the cones; 4 N of
 // each (5.66 N) is inside both.
 TEST(GraspSwitchRelease, FindDirectionAtLimitSharesTheCones) {
-    const double mu = 0.6, N = 5, d = 0.02;
-    simulation::ComplianceReleaseLimits limits;
+    const double mu = 0.6, N = 5;
+    simulation::ComplianceReleaseLimits limits = makeStiffPinch(mu, N);
     limits.lower = SimTK::Vec6(1, 1, 1, 100, 2 * mu * N, 2 * mu * N);
     limits.upper = limits.lower;
-    for (double side : {-1.0, 1.0}) {
-        grasp::CompliantContact c;
-        c.p_GC = Eigen::Vector3d(side * d, 0, 0);
-        c.n_G = Eigen::Vector3d(-side, 0, 0);
-        c.force_G = N * c.n_G;
-        c.normalStiffness = 4e5;
-        c.tangentialStiffness = 4e5;
-        c.fingerCompliance_G = 1e-6 * Eigen::Matrix3d::Identity();
-        limits.contacts_O.push_back(c);
-    }
-    limits.mu = limits.kineticMu = mu;
     const SimTK::Vec6 past(0, 0, 0, 0, -4.5, -4.5), inside(0, 0, 0, 0, -4, -4);  // reactions: the load's opposite
     EXPECT_TRUE(simulation::findAxisAtLimit(past, limits).empty());
     const std::string text = simulation::findComplianceLimitReached(past, limits);
@@ -230,21 +238,10 @@ TEST(GraspSwitchRelease, FindDirectionAtLimitSharesTheCones) {
 // model's 2 mm), so the direction margin is 2 mu N - |load| from half of that load on, |load|
 // below it; the witness is the smaller of it and the per-axis margin.
 TEST(GraspSwitchRelease, DirectionMarginIsTheDistanceToTheConesAlongTheLoad) {
-    const double mu = 0.6, N = 5, d = 0.02, ultimate = 2 * mu * N;
-    simulation::ComplianceReleaseLimits limits;
+    const double mu = 0.6, N = 5, ultimate = 2 * mu * N;
+    simulation::ComplianceReleaseLimits limits = makeStiffPinch(mu, N);
     limits.lower = SimTK::Vec6(10, 10, 10, 100, ultimate, ultimate);
     limits.upper = limits.lower;
-    for (double side : {-1.0, 1.0}) {
-        grasp::CompliantContact c;
-        c.p_GC = Eigen::Vector3d(side * d, 0, 0);
-        c.n_G = Eigen::Vector3d(-side, 0, 0);
-        c.force_G = N * c.n_G;
-        c.normalStiffness = 4e5;
-        c.tangentialStiffness = 4e5;
-        c.fingerCompliance_G = 1e-6 * Eigen::Matrix3d::Identity();
-        limits.contacts_O.push_back(c);
-    }
-    limits.mu = limits.kineticMu = mu;
     for (double a : {2.5, 4.0, 4.5, 5.0}) {  // held along y and z at once: |load| = a sqrt(2)
         const SimTK::Vec6 reaction(0, 0, 0, 0, -a, -a);
         const double norm = a * std::sqrt(2.0);
