@@ -142,17 +142,18 @@ TEST_F(SimulateCommand, NumericalFailureExitsWithThreeAndMarksTheSummaryIncomple
     EXPECT_GE(std::count(trajectory.begin(), trajectory.end(), '\n'), 1 + 55) << trajectory.substr(0, 200);
 }
 
-// Fixed steps of 5 ms (the scenario's step_size) blow the ball clutch up: the ball is thrown at
-// about 1 s, where the error-controlled run and fixed 1 ms steps hold it (docs/performance.md).
-// The stepper stops at the step whose error estimate exceeds the state's own scale (from 0.615 s):
-// one line naming where the step came from, its value and what to use, exit 2, no folder. At the
-// 1 ms it suggests, the same stretch runs and writes its results.
+// Fixed steps of 5 ms (the scenario's step_size) blow the ball tripod up as its fingers close,
+// where the error-controlled run and fixed 1 ms steps hold it (docs/performance.md). The stepper
+// stops at the step whose error estimate exceeds the state's own scale (from 0.5 s): one line
+// naming where the step came from, its value and what to use, exit 2, no folder. At the 1 ms it
+// suggests, the ball clutch runs and writes its results.
 TEST_F(SimulateCommand, AFixedStepTheStepperCannotTrustIsRefusedWithoutOutput) {
     const std::string out = " --out " + (dir_ / "out").string();
-    expectBadInput("simulate ball-clutch --integrator implicit-fixed --duration 1" + out,
-                   {"simulation.step_size: 0.005 s", "implicit-fixed", "t = 0.6150 s", "--step-size", "--integrator implicit"});
-    expectBadInput("simulate ball-clutch --mode approx --integrator implicit-fixed --step-size 0.005 --duration 1" + out,
-                   {"--step-size: 0.005 s", "t = 0.6150 s"});
+    // 664 times the scale: far from the threshold, where the ball clutch's 1.02 is refused by a hair.
+    expectBadInput("simulate ball-tripod --integrator implicit-fixed --duration 1" + out,
+                   {"simulation.step_size: 0.005 s", "implicit-fixed", "t = 0.5000 s", "--step-size", "--integrator implicit"});
+    expectBadInput("simulate ball-tripod --mode approx --integrator implicit-fixed --step-size 0.005 --duration 1" + out,
+                   {"--step-size: 0.005 s", "t = 0.5000 s"});
     const RunResult r = run("simulate ball-clutch --integrator implicit-fixed --step-size 0.001 --duration 1" + out);
     EXPECT_EQ(r.exitCode, 0) << r.err;
     EXPECT_TRUE(fs::exists(dir_ / "out" / "summary.json"));
