@@ -2,18 +2,19 @@
 
 #include "graspsim/anthropometry/units.h"
 
-#include <cstdio>
+#include <charconv>
 #include <sstream>
 
 namespace graspsim::scenario {
 
 namespace {
 
-// 17 significant digits: every double reads back to itself.
+// The shortest text that reads back to the same double (0.005, not 0.0050000000000000001): exact
+// and readable. Zero without a sign: "-0" is noise in a file a user reads.
 std::string formatNumber(double value) {
     char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.17g", value);
-    return buffer;
+    const std::to_chars_result r = std::to_chars(buffer, buffer + sizeof buffer, value == 0 ? 0.0 : value);
+    return std::string(buffer, r.ptr);
 }
 
 std::string formatDegrees(double radians) { return formatNumber(radians / anthropometry::fromDegrees(1.0)); }

@@ -103,6 +103,26 @@ TEST(ScenarioWriter, DefaultsAndEditedFieldsAreWrittenOut) {
     expectSameScenario(edited, parseScenario(text, "written.yaml"));
 }
 
+// Numbers are written as the shortest text that reads back to the same double: the step a user
+// typed as 0.005 reads 0.005 (not 0.0050000000000000001), and awkward doubles still read back bit
+// for bit. Oracle: the text itself, and the reader.
+TEST(ScenarioWriter, NumbersAreShortAndReadBackExactly) {
+    Scenario s = findBuiltinScenario("ball-clutch");
+    s.simulation.outputInterval = 0.005;
+    s.world.gravity = {0, -9.81, 0};
+    s.object.mass = 0.1 + 0.2;  // 0.30000000000000004: needs all 17 digits
+    s.object.position = {-0.0, 1.0 / 3.0, 1e-300};
+    const std::string text = formatScenarioYaml(s);
+    EXPECT_NE(text.find("gravity: [0, -9.81, 0]"), std::string::npos) << text;
+    EXPECT_NE(text.find("output_interval: 0.005\n"), std::string::npos) << text;
+    EXPECT_EQ(text.find("-0,"), std::string::npos) << "a signed zero is written as 0";
+    const Scenario back = parseScenario(text, "written.yaml");
+    EXPECT_EQ(back.object.mass, 0.1 + 0.2);
+    EXPECT_EQ(back.object.position[1], 1.0 / 3.0);
+    EXPECT_EQ(back.object.position[2], 1e-300);
+    EXPECT_EQ(back.simulation.outputInterval, 0.005);
+}
+
 // The default friction law writes nothing new (result folders stay as they were); the anchor
 // law writes itself and its parameters, and reads back.
 TEST(ScenarioWriter, AnchorFrictionIsWrittenOnlyWhenChosen) {
