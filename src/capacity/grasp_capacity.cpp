@@ -149,6 +149,11 @@ GraspCapacity makeHeader(const simulation::SimulationOptions& options, const Gra
         const simulation::ApproxOptions approx = simulation::resolveApproxOptions(options.approx, scenario.approximation);
         c.realization = simulation::toString(approx.constraint) + " " + simulation::toString(approx.attach) + ", limits " +
                         grasp::toString(approx.limitModel) + ", release at " + simulation::toString(approx.releaseTrigger);
+        if (approx.releaseTrigger == simulation::ApproxReleaseTrigger::Compliance) {
+            char give[48];
+            std::snprintf(give, sizeof give, " (give %.3g mm)", 1e3 * approx.releaseGive.value_or(simulation::kDefaultReleaseGive));
+            c.realization += give;
+        }
     }
     c.start = findLoadStart(scenario);
     c.criteria = request.criteria;
@@ -188,6 +193,17 @@ void checkLoadResistible(const scenario::Scenario& scenario, const GraspCapacity
                      "friction), so there is no capacity to measure; choose an axis more than 5 deg away");
 }
 
+simulation::SimulationOptions resolveCapacityOptions(const scenario::Scenario& scenario, const simulation::SimulationOptions& options,
+                                                     const SlipCriteria& criteria) {
+    simulation::SimulationOptions resolved = options;
+    if (options.mode != simulation::SimulationMode::Approx || options.approx.releaseGive) return resolved;
+    const simulation::ApproxOptions approx = simulation::resolveApproxOptions(options.approx, scenario.approximation);
+    if (approx.releaseTrigger == simulation::ApproxReleaseTrigger::Compliance) {
+        resolved.approx.releaseGive = kCapacityReleaseGiveFraction * criteria.slip;
+    }
+    return resolved;
+}
+
 double findLoadStart(const scenario::Scenario& scenario) { return scenario.simulation.settleTime + kLoadStartDelay; }
 
 LoadedRunFactory makeGraspRuns(const scenario::Scenario& scenario, const simulation::SimulationOptions& options) {
@@ -199,9 +215,10 @@ LoadedRunFactory makeGraspRuns(const scenario::Scenario& scenario, const simulat
     };
 }
 
-GraspCapacity measureGraspCapacityRamp(const scenario::Scenario& scenario, const simulation::SimulationOptions& options,
+GraspCapacity measureGraspCapacityRamp(const scenario::Scenario& scenario, const simulation::SimulationOptions& given,
                                        const GraspCapacityRequest& request) {
     const auto clock = std::chrono::steady_clock::now();
+    const simulation::SimulationOptions options = resolveCapacityOptions(scenario, given, request.criteria);
     GraspCapacity c = makeHeader(options, request, scenario, "ramp");
     c.rate = request.rate > 0 ? request.rate : findDefaultRate(scenario, request.torque);
     RampProtocol protocol;
@@ -218,9 +235,10 @@ GraspCapacity measureGraspCapacityRamp(const scenario::Scenario& scenario, const
     return c;
 }
 
-GraspCapacity measureGraspCapacityBisection(const scenario::Scenario& scenario, const simulation::SimulationOptions& options,
+GraspCapacity measureGraspCapacityBisection(const scenario::Scenario& scenario, const simulation::SimulationOptions& given,
                                             const GraspCapacityRequest& request, double guess, double hold) {
     const auto clock = std::chrono::steady_clock::now();
+    const simulation::SimulationOptions options = resolveCapacityOptions(scenario, given, request.criteria);
     GraspCapacity c = makeHeader(options, request, scenario, "bisection");
     BisectionProtocol protocol;
     protocol.direction = request.direction;
@@ -237,9 +255,10 @@ GraspCapacity measureGraspCapacityBisection(const scenario::Scenario& scenario, 
     return c;
 }
 
-GraspCapacity measureGraspCapacityConstant(const scenario::Scenario& scenario, const simulation::SimulationOptions& options,
+GraspCapacity measureGraspCapacityConstant(const scenario::Scenario& scenario, const simulation::SimulationOptions& given,
                                            const GraspCapacityRequest& request, double load, double hold) {
     const auto clock = std::chrono::steady_clock::now();
+    const simulation::SimulationOptions options = resolveCapacityOptions(scenario, given, request.criteria);
     GraspCapacity c = makeHeader(options, request, scenario, "constant");
     c.load = load;
     c.hold = hold;

@@ -42,6 +42,7 @@ struct CapacityCommand::Options {
     std::string limitsFriction;
     std::string limits = "thesis";
     std::string releaseAt = "auto";
+    std::string releaseGive;
     std::string accuracy;
     std::string integrator = "auto";
     std::string stepSize;
@@ -101,6 +102,10 @@ CapacityCommand::CapacityCommand(CLI::App& app) : options_(std::make_shared<Opti
     command_->add_option("--limits", o.limits,
                          "approx: the constraint's friction limits, thesis (default: one box), contact (per axis) or "
                          "compliance (two-sided per axis, from the grasp's compliance model; bushing, merged)");
+    command_->add_option("--release-give", o.releaseGive,
+                         "approx: the compliance release trigger's onset: hand the object back once the grasp's "
+                         "compliance model says full contact would have let it give this far at the grasp goals, m "
+                         "(default 0.001, half the protocol's 2 mm slip onset, so that full contact decides the onset)");
     command_->add_option("--release-at", o.releaseAt,
                          "approx: an extra release rule: compliance (release once the constraint's reaction reaches the "
                          "grasp's compliance-model limit on any axis side, or the model's onset along the load's own "
@@ -199,6 +204,7 @@ CapacityCommand::Plan CapacityCommand::makePlan() const {
     if (!o.limitsFriction.empty()) plan.simulation.approx.staticFrictionLimits = o.limitsFriction == "static";
     plan.simulation.approx.limitModel = grasp::parseFrictionLimitModel(o.limits, "--limits");
     plan.simulation.approx.releaseTrigger = simulation::parseApproxReleaseTrigger(o.releaseAt, "--release-at");
+    plan.simulation.approx.releaseGive = parseReleaseGive(o.releaseGive);
     if (o.method != "ramp" && o.method != "bisection" && o.method != "constant" && o.method != "compliance") {
         throw InputError("--method: value '" + o.method + "' is not accepted; use ramp, bisection, constant or compliance");
     }

@@ -33,4 +33,13 @@ double parseStepSize(const std::string& text) {
     return value;
 }
 
+std::optional<double> parseReleaseGive(const std::string& text) {
+    if (text.empty()) return std::nullopt;
+    const double value = parseNumber(text, "--release-give", "a finite number > 0 (m)");
+    if (!(value > 0 && std::isfinite(value))) {
+        throw InputError("--release-give: value " + text + " is not accepted; use a finite number > 0 (m)");
+    }
+    return value;
+}
+
 }  // namespace graspsim::cli

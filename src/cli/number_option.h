@@ -2,6 +2,7 @@
 // Parsing numeric command-line values ourselves, so a bad value gets graspsim's one-line message
 // naming the flag, the value and what is accepted, rather than CLI11's generic text.
 
+#include <optional>
 #include <string>
 
 namespace graspsim::cli {
@@ -15,5 +16,7 @@ double parseAccuracy(const std::string& text);
 
 // --step-size: the fixed step (s), finite and > 0; empty keeps the scenario's (returns 0).
 double parseStepSize(const std::string& text);
+// --release-give: metres, finite and > 0; empty leaves it unset (the default give).
+std::optional<double> parseReleaseGive(const std::string& text);
 
 }  // namespace graspsim::cli

@@ -38,6 +38,7 @@ struct SimulateCommand::Options {
     std::string qThreshold, qMinimum;
     std::string limits = "thesis";
     std::string releaseAt = "auto";
+    std::string releaseGive;
     std::string out = "out";
     bool view = false;
     bool quiet = false;
@@ -74,6 +75,10 @@ SimulateCommand::SimulateCommand(CLI::App& app) : options_(std::make_shared<Opti
                          "approx: the constraint's friction limits, thesis (default: one box, eq. 4.1-4.3), contact "
                          "(per axis, from each contact's normal and position) or compliance (two-sided per axis, "
                          "from the grasp's compliance model; bushing, merged)");
+    command_->add_option("--release-give", o.releaseGive,
+                         "approx: the compliance release trigger's onset: hand the object back once the grasp's "
+                         "compliance model says full contact would have let it give this far at the grasp goals, m "
+                         "(default 0.002, the model's slip onset)");
     command_->add_option("--release-at", o.releaseAt,
                          "approx: an extra release rule: compliance (release once the constraint's reaction reaches the "
                          "grasp's compliance-model limit on any axis side, or the model's onset along the load's own "
@@ -153,6 +158,7 @@ simulation::SimulationOptions SimulateCommand::parseOptions() const {
     options.approx.qMinimum = parseQuality(o.qMinimum, "--q-minimum");
     options.approx.limitModel = grasp::parseFrictionLimitModel(o.limits, "--limits");
     options.approx.releaseTrigger = simulation::parseApproxReleaseTrigger(o.releaseAt, "--release-at");
+    options.approx.releaseGive = parseReleaseGive(o.releaseGive);
     if (options.approx.qThreshold > 0 && options.approx.qMinimum >= options.approx.qThreshold) {
         throw InputError("--q-minimum: value " + o.qMinimum + " is not accepted; Q_M must be below --q-threshold " + o.qThreshold);
     }

@@ -21,12 +21,14 @@ const char* const kAxisNames[6] = {"rotation x", "rotation y", "rotation z", "tr
 // small factor.
 ComplianceReleaseLimits calcComplianceLimits(const ApproximationContext& context, const SimTK::State& state,
                                              const std::vector<contact::ContactReport>& reports, double mu,
-                                             const SimTK::Vec6& box, const SimTK::Rotation& R_GM, const SimTK::Vec3& p_GM) {
+                                             const SimTK::Vec6& box, const SimTK::Rotation& R_GM, const SimTK::Vec3& p_GM,
+                                             double slipDistance) {
     const FingerCompliance fingers(context.model, context.fingerMobilizers, context.jointImpedances, context.goals.getEndEffectors());
     const std::vector<grasp::CompliantContact> contacts = fingers.findCompliantContacts(state, reports, {});
     grasp::ComplianceLimitOptions options;
     options.mu = mu;
     options.kineticMu = std::min(mu, context.contactParameters.dynamicFriction);  // broken loose, a contact slides at mu_d
+    options.slipDistance = slipDistance;
     for (int k = 0; k < 6; ++k) options.maxLoads[k] = std::max(4 * box[k], 1e-9);
     const grasp::TwoSidedLimits limits =
         grasp::calcComplianceLimits(contacts, system::toEigenMatrix(R_GM), system::toEigenVector(p_GM), options);
@@ -91,6 +93,7 @@ void setDirectionModel(ComplianceReleaseLimits& limits, const std::vector<grasp:
     for (const Eigen::Vector3d& p_GS : options.slipPoints_G) limits.slipPoints_O.push_back(R_OG * (p_GS - p));
     limits.mu = options.mu;
     limits.kineticMu = options.kineticMu;
+    limits.slipDistance = options.slipDistance;
 }
 
 namespace {
@@ -109,6 +112,7 @@ double findOnsetAlong(const Eigen::Matrix<double, 6, 1>& load, const ComplianceR
     options.kineticMu = limits.kineticMu;
     options.slipPoints_G = limits.slipPoints_O;  // O's origin as the model's origin: O is its G here
     options.maxLoad = maxLoad;
+    options.slipDistance = limits.slipDistance;
     return grasp::calcCompliantCapacityAlong(limits.contacts_O, Eigen::Vector3d::Zero(), load, options).onset;
 }
 

@@ -292,7 +292,8 @@ void GraspSwitch::checkEngage(SimTK::State& state) const {
     if (!limits && !multi_ && options_.releaseTrigger == ApproxReleaseTrigger::Compliance) {
         const SimTK::Transform& X_GO = context_.object.getBodyTransform(state);
         const double mu = findLimitFriction(context_.contactParameters, options_, true);
-        limits = calcComplianceLimits(context_, state, reports, mu, calcFrictionLimits(reports, mu), X_GO.R(), X_GO.p());
+        limits = calcComplianceLimits(context_, state, reports, mu, calcFrictionLimits(reports, mu), X_GO.R(), X_GO.p(),
+                                      options_.releaseGive.value_or(kDefaultReleaseGive));
     }
     if (limits && !findReengageObstacle(context_, state, reports, *limits).empty()) return;
     engage(state, q, reports, limits);
@@ -334,7 +335,8 @@ void GraspSwitch::engage(SimTK::State& state, double quality, const std::vector<
         engagement.limits = calcFrictionLimits(reports, mu);
     } else if (compliance) {
         const ComplianceReleaseLimits limits =
-            calcComplianceLimits(context_, state, reports, mu, calcFrictionLimits(reports, mu), context_.object.getBodyTransform(state).R(), p_GM);
+            calcComplianceLimits(context_, state, reports, mu, calcFrictionLimits(reports, mu), context_.object.getBodyTransform(state).R(), p_GM,
+                                 grasp::ComplianceLimitOptions{}.slipDistance);
         engagement.limits = limits.upper;
         engagement.lowerLimits = limits.lower;
     } else {

@@ -4,6 +4,7 @@
 #include "graspsim/model/body_model.h"
 #include "graspsim/scenario/scenario.h"
 
+#include <cmath>
 #include <cstdio>
 
 namespace graspsim::simulation {
@@ -156,6 +157,13 @@ ApproxOptions resolveApproxOptions(const ApproxOptions& given, const scenario::A
     if (!(options.releaseSlideDistance > 0)) throw InputError("approx: the release slide distance must be > 0 m");
     if (!(options.releasePenetration > 0)) throw InputError("approx: the release penetration must be > 0 m");
     if (!(options.maxEngagedPenetration > 0)) throw InputError("approx: the engaged penetration bound must be > 0 m");
+    if (options.releaseGive && !(*options.releaseGive > 0 && std::isfinite(*options.releaseGive))) {
+        throw InputError("approx: the release give must be a finite number > 0 m");
+    }
+    if (options.releaseGive && options.releaseTrigger != ApproxReleaseTrigger::Compliance) {
+        throw InputError("--release-give: only the compliance release trigger uses it (--release-at compliance, or auto "
+                         "on the merged bushing); this run's is " + toString(options.releaseTrigger));
+    }
     if (options.qThreshold > 0 && options.qMinimum >= options.qThreshold) {
         char text[160];
         std::snprintf(text, sizeof text, "approx: Q_M (%g N) must be below Q_Th (%g N)", options.qMinimum, options.qThreshold);

@@ -42,6 +42,10 @@ TEST_F(CapacityCommand, BadInputIsOneLineAndWritesNothing) {
     expectRejected("--mode approx --constraint weld --limits compliance", "--limits");
     expectRejected("--mode approx --release-at always", "--release-at");
     expectRejected("--mode approx --attach multi --release-at compliance", "--release-at");
+    expectRejected("--mode approx --release-give 0", "--release-give");
+    expectRejected("--mode approx --release-give nan", "--release-give");
+    expectRejected("--mode approx --release-at none --release-give 0.001", "--release-give");  // no trigger to use it
+    expectRejected("--mode approx --constraint weld --release-give 0.001", "--release-give");  // auto is none on the weld
     expectRejected("--method constant", "--load");  // the load is required
     expectRejected("--method constant --load 0", "--load");
     expectRejected("--method constant --load=-2", "--load");

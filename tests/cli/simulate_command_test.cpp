@@ -203,6 +203,9 @@ TEST_F(SimulateCommand, RejectsBadOptionsWithoutTouchingTheOutputFolder) {
     expectBadInput("simulate ball-clutch --mode approx --constraint weld --release-at compliance" + out,
                    {"--release-at", "compliance", "weld", "--constraint bushing"});
     expectBadInput("simulate ball-clutch --mode approx --attach multi --release-at compliance" + out, {"--release-at", "multi"});
+    expectBadInput("simulate ball-clutch --mode approx --release-give=-1" + out, {"--release-give", "-1", "> 0 (m)"});
+    expectBadInput("simulate ball-clutch --mode approx --release-at none --release-give 0.002" + out,
+                   {"--release-give", "compliance release trigger", "none"});
     EXPECT_FALSE(fs::exists(dir_ / "out"));
 }
 

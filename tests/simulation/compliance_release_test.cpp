@@ -253,3 +253,26 @@ TEST(GraspSwitchRelease, DirectionMarginIsTheDistanceToTheConesAlongTheLoad) {
     limits.contacts_O.clear();
     EXPECT_EQ(simulation::findDirectionMargin(SimTK::Vec6(0, 0, 0, 0, -4.5, -4.5), limits), SimTK::Infinity);
 }
+
+// The release give (ApproxOptions::releaseGive) is the model's onset: on a pinch with soft fingers
+// (compliance c_f = 0.1 mm/N, in series with the pads' k_t) a tangential load F along y moves the
+// object by F / K_y, K_y = 2 / (c_f + 1 / k_t), long before the cones (2 mu N = 30 N). So the
+// direction margin is d K_y - F for a give d, whichever d: closed form at three gives, none of
+// them the default.
+TEST(GraspSwitchRelease, ReleaseGiveIsTheModelsOnsetAlongTheLoad) {
+    const double mu = 0.5, N = 30, fingerCompliance = 1e-4, kt = 4e5;
+    const double K_y = 2 / (fingerCompliance + 1 / kt);  // N/m, about 19.5 N per mm
+    simulation::ComplianceReleaseLimits limits = makeStiffPinch(mu, N);
+    for (grasp::CompliantContact& c : limits.contacts_O) c.fingerCompliance_G = fingerCompliance * Eigen::Matrix3d::Identity();
+    for (double give : {0.4e-3, 0.7e-3, 1.3e-3}) {
+        limits.slipDistance = give;
+        const double onset = give * K_y;
+        ASSERT_LT(onset, 2 * mu * N);
+        for (double fraction : {0.6, 0.9}) {
+            const SimTK::Vec6 reaction(0, 0, 0, 0, -fraction * onset, 0);
+            EXPECT_NEAR(simulation::findDirectionMargin(reaction, limits), onset - fraction * onset, 1e-6 * onset) << give;
+            EXPECT_TRUE(simulation::findDirectionAtLimit(reaction, limits).empty()) << give;
+        }
+        EXPECT_FALSE(simulation::findDirectionAtLimit(SimTK::Vec6(0, 0, 0, 0, -1.01 * onset, 0), limits).empty()) << give;
+    }
+}

@@ -35,14 +35,18 @@ struct ComplianceReleaseLimits {
     SimTK::Vec6 w0{0};  ///< the contacts' wrench at engagement (frame and order as the sides)
     double mu = 0;      ///< where a contact breaks loose
     double kineticMu = 0;  ///< at which it then slides
+    double slipDistance = 2e-3;  ///< m: the model's give at the slip points that counts as its onset
 };
 /// Two-sided limits of the constraint frame M (orientation R_GM, origin p_GM, in G) from the
 /// compliance model of the grasp in `state` (its contacts `reports`, friction coefficient `mu`,
 /// kinetic mu_d from the contact parameters; grasp/compliance_limits.h), rotation first. A side the
 /// model never lets go of is capped at 4 `box` (the thesis's limits on that axis, N m and N).
+/// `slipDistance` (m, > 0) is the model's give that counts as its onset: the capacity ramp's 2 mm
+/// for the constraint's own limits, ApproxOptions::releaseGive for the release trigger's.
 ComplianceReleaseLimits calcComplianceLimits(const ApproximationContext& context, const SimTK::State& state,
                                              const std::vector<contact::ContactReport>& reports, double mu,
-                                             const SimTK::Vec6& box, const SimTK::Rotation& R_GM, const SimTK::Vec3& p_GM);
+                                             const SimTK::Vec6& box, const SimTK::Rotation& R_GM, const SimTK::Vec3& p_GM,
+                                             double slipDistance);
 /// Caps the force sides (axes 3-5) of `limits` at `onsetFraction` times the constraint's limits
 /// `lower` and `upper` (N, along the constraint frame M, which has O's orientation): where the
 /// model's side lies beyond the constraint's own limit, the constraint starts to slide before the

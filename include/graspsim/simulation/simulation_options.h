@@ -121,7 +121,18 @@ struct ApproxOptions {
     /// it brings the approximation's holding capacity to full contact's (docs/capacity.md), none on the
     /// weld and multi; None is the thesis's switch.
     ApproxReleaseTrigger releaseTrigger = ApproxReleaseTrigger::Automatic;
+    /// The compliance trigger's onset (m, > 0): it hands the object back once the grasp's compliance
+    /// model says full contact would have let the object give this much at the grasp goals under
+    /// the load the constraint carries (on an axis side or along the load). Unset:
+    /// kDefaultReleaseGive, the model's slip onset; the capacity protocol sets half its own slip
+    /// threshold (capacity/grasp_capacity.h). Set, it needs the compliance trigger.
+    std::optional<double> releaseGive;
 };
+
+/// ApproxOptions::releaseGive's default (m): the model's slip onset, the capacity protocol's 2 mm.
+/// The switch hands back where the model says full contact would start to slip; pushes the grasp
+/// holds with less give (the thesis's ball f1, 9.5 N: about 1.2 mm) stay engaged.
+inline constexpr double kDefaultReleaseGive = 2e-3;
 
 /// Per-run choices. Defaults: compliant full contact, no perturbation, the scenario's duration.
 struct SimulationOptions {
