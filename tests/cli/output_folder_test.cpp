@@ -7,27 +7,19 @@
 
 #include "graspsim/error.h"
 
+#include "scratch_folder.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
-#include <unistd.h>
 
 namespace graspsim::cli {
 namespace {
 
 namespace fs = std::filesystem;
 
-class OutputFolderTest : public ::testing::Test {
-protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() / ("graspsim_output_folder_test_" + std::to_string(::getpid()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-    fs::path dir_;
-};
+using OutputFolderTest = graspsim::testing::ScratchFolder;
 
 TEST_F(OutputFolderTest, WhatItCreatedGoesAgainUnlessKept) {
     {
