@@ -1,8 +1,9 @@
 #pragma once
-// The --out folder of a command: created before the run (so that an unwritable path is refused
-// before any work), and removed again if the run fails before anything was written into it, so
-// that a failed run leaves no folder behind. Only what this object created goes, and only while
-// empty: a folder that existed before, or holds files, stays as it is.
+// The --out folder of a command: created and tried with a file before the run (so that a path
+// that cannot be created, or a folder that refuses files, is refused before any work), and
+// removed again if the run fails before anything was written into it, so that a failed run
+// leaves no folder behind. Only what this object created goes, and only while empty: a folder
+// that existed before, or holds files, stays as it is.
 
 #include <string>
 
@@ -10,8 +11,9 @@ namespace graspsim::cli {
 
 class OutputFolder {
 public:
-    // Creates `path` and any missing parents. Throws InputError "--out: folder '<path>' cannot be
-    // created or written (<reason>)".
+    // Creates `path` and any missing parents, then creates and removes a file in it. Throws
+    // InputError "--out: folder '<path>' cannot be created or written (<reason>)", having
+    // removed what it created.
     explicit OutputFolder(const std::string& path);
     // Removes the folders it created, leaf first, while they are empty, unless keep() was called.
     ~OutputFolder();
@@ -22,6 +24,8 @@ public:
     void keep() { kept_ = true; }
 
 private:
+    void removeCreated() const;
+
     std::string path_;
     std::string topCreated_;  // the outermost folder this created; empty if `path` existed
     bool kept_ = false;

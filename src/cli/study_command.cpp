@@ -1,6 +1,7 @@
 #include "study_command.h"
 
 #include "number_option.h"
+#include "output_folder.h"
 
 #include "graspsim/error.h"
 #include "graspsim/io/atomic_file.h"
@@ -155,8 +156,10 @@ int StudyCommand::runCases() const {
     if (!o.shard.empty()) settings.shard = study::parseShard(o.shard);
     settings.retryFailed = o.retryFailed;
     const LoadedStudy loaded = loadStudy(o.study);
-    study::prepareStudyFolder(o.out, loaded.spec, study::joinBaseTexts(loaded.bases));
     settings.executable = findExecutable();
+    OutputFolder folder(o.out);
+    study::prepareStudyFolder(o.out, loaded.spec, study::joinBaseTexts(loaded.bases));
+    folder.keep();  // a prepared folder (study.json) stays: a failed run resumes in it
     settings.progress = makeProgressBar();
     const study::RunReport report = study::runStudyCases(loaded.spec, loaded.bases, settings);
     if (settings.shard.count > 1) {
@@ -173,7 +176,9 @@ int StudyCommand::submit() const {
     const LoadedStudy loaded = loadStudy(o.study);
     const int cases = static_cast<int>(study::expandCases(loaded.spec).size());
     const int arraySize = o.arraySize.empty() ? std::min(cases, 100) : std::min(cases, parseCount(o.arraySize, "--array-size"));
+    OutputFolder folder(o.out);
     study::prepareStudyFolder(o.out, loaded.spec, study::joinBaseTexts(loaded.bases));
+    folder.keep();  // a prepared folder (study.json) stays: a failed submit can be repeated into it
     study::SlurmJob job;
     job.name = loaded.spec.name;
     job.executable = findExecutable();

@@ -1,6 +1,7 @@
 #include "validate_command.h"
 
 #include "number_option.h"
+#include "output_folder.h"
 #include "progress_meter.h"
 
 #include "graspsim/error.h"
@@ -10,8 +11,6 @@
 #include "graspsim/simulation/setup_check.h"
 
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <iostream>
 
 namespace graspsim::cli {
@@ -46,18 +45,6 @@ ValidateCommand::ValidateCommand(CLI::App& app) : options_(std::make_shared<Opti
 bool ValidateCommand::parsed() const { return command_->parsed(); }
 
 namespace {
-
-// Fails before any simulation when the folder cannot take files.
-void prepareFolder(const std::string& folder) {
-    std::error_code ec;
-    std::filesystem::create_directories(folder, ec);
-    const std::filesystem::path probe = std::filesystem::path(folder) / ".graspsim-write-test";
-    std::ofstream test(probe);
-    const bool writable = !ec && test.good();
-    test.close();
-    std::filesystem::remove(probe, ec);
-    if (!writable) throw InputError("--out: folder '" + folder + "' cannot be created or written");
-}
 
 // Simulated seconds of a run: the unit of the progress display, since a run's cost grows with it
 // (the long hold is 600 s, the others 3 s).
@@ -109,7 +96,7 @@ int ValidateCommand::run() const {
     for (const validation::ValidationRun& run : runs) {
         simulation::checkScenarioSetup(scenario::findBuiltinScenario(run.scenario), run.options);
     }
-    prepareFolder(o.out);
+    OutputFolder folder(o.out);  // refused before any simulation if it takes no files; gone again if a run throws
     ProgressMeter meter("validating", o.quiet);
     SuiteProgress progress(meter, runs);
     validation::ValidationResults results =
@@ -124,6 +111,7 @@ int ValidateCommand::run() const {
             });
         capacityMeter.finish();
     }
+    folder.keep();
     meter.finish();
     // The tables first, so that a plotting failure still leaves the numbers.
     validation::writeValidationReport(o.out, results, {});

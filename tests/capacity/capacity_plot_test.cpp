@@ -6,6 +6,8 @@
 
 #include "graspsim/capacity/capacity_files.h"
 
+#include "scratch_folder.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -14,7 +16,6 @@
 #include <string>
 #include <vector>
 
-#include <unistd.h>
 
 using namespace graspsim;
 namespace fs = std::filesystem;
@@ -46,19 +47,16 @@ std::vector<capacity::GraspCapacity> makeAllDirections() {
     return all;
 }
 
-class CapacityPlot : public ::testing::Test {
+class CapacityPlot : public graspsim::testing::ScratchFolder {
 protected:
     void SetUp() override {
-        dir_ = fs::temp_directory_path() / ("graspsim_capacity_plot_" + std::to_string(::getpid()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
+        ScratchFolder::SetUp();
         capacity::writeCapacityFiles(dir_.string(), "synthetic", makeAllDirections());
     }
     void TearDown() override {
-        fs::remove_all(dir_);
+        ScratchFolder::TearDown();
         ::unsetenv("GRASPSIM_PYTHON");
     }
-    fs::path dir_;
 };
 
 }  // namespace

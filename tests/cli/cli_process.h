@@ -2,10 +2,11 @@
 // Runs the real `graspsim` executable in a scratch folder and captures exit code, stdout and
 // stderr; shared by the CLI tests.
 
+#include "scratch_folder.h"
+
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -32,18 +33,9 @@ inline std::string slurp(const fs::path& path) {
     return text.str();
 }
 
-class CliProcess : public ::testing::Test {
+// The captures and the files a test writes go to its scratch folder dir_.
+class CliProcess : public ScratchFolder {
 protected:
-    void SetUp() override {
-        // Parameterized tests are named "Test/param": one folder per test, not a nested one.
-        std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-        std::replace(name.begin(), name.end(), '/', '_');
-        dir_ = fs::temp_directory_path() / ("graspsim_cli_" + std::to_string(::getpid()) + "_" + name);
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-
     RunResult run(const std::string& args) const {
         const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
         const std::string command = std::string(GRASPSIM_CLI_PATH) + " " + args + " >" + out.string() + " 2>" + err.string();
@@ -71,7 +63,6 @@ protected:
         return (dir_ / name).string();
     }
 
-    fs::path dir_;
     int extraFiles_ = 0;  // files a test put in the scratch folder itself
 };
 

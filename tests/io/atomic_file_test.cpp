@@ -2,25 +2,17 @@
 
 #include "graspsim/error.h"
 
+#include "scratch_folder.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
-#include <unistd.h>
 
 namespace fs = std::filesystem;
 using namespace graspsim::io;
 
-namespace {
-
-fs::path makeScratchFolder(const std::string& name) {
-    const fs::path dir = fs::temp_directory_path() / ("graspsim_atomic_" + name + "_" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
-
-}  // namespace
+using graspsim::testing::makeScratchFolder;
 
 TEST(AtomicFile, WritesAndReadsBack) {
     const fs::path dir = makeScratchFolder("write");

@@ -6,6 +6,8 @@
 #include "graspsim/scenario/scenario_file.h"
 #include "graspsim/simulation/grasp_simulation.h"
 
+#include "scratch_folder.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -13,7 +15,6 @@
 #include <sstream>
 #include <algorithm>
 
-#include <unistd.h>
 
 namespace graspsim::simulation {
 namespace {
@@ -56,8 +57,7 @@ SimulationResult runShort(const scenario::Scenario& scenario) {
 }
 
 TEST(ObjectShapeScenario, PhoneAsAMeshOfItsBoxMovesAsTheBox) {
-    const fs::path dir = fs::temp_directory_path() / ("graspsim_shape_scenario_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
+    const fs::path dir = graspsim::testing::makeScratchFolder("shape_scenario");
     // The phone's box, 0.07 x 0.14 x 0.008 m, as an OBJ file (a corner-centred box would do too:
     // the object frame goes to the centroid).
     std::ofstream obj(dir / "phone.obj");

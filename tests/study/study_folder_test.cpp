@@ -4,9 +4,9 @@
 #include "graspsim/error.h"
 #include "graspsim/study/study_folder.h"
 
-#include <gtest/gtest.h>
+#include "scratch_folder.h"
 
-#include <unistd.h>
+#include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
@@ -16,20 +16,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
-class StudyFolder : public ::testing::Test {
+class StudyFolder : public graspsim::testing::ScratchFolder {
 protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() / ("graspsim_study_folder_" + std::to_string(::getpid()) + "_" +
-                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-
     static StudySpec makeSpec(const std::string& name) {
         return parseStudy("name: " + name + "\nbase: ball-clutch\naxes: {mode: [full]}\nmeasures: [held]\n", "s.yaml");
     }
-
-    fs::path dir_;
 };
 
 }  // namespace

@@ -7,9 +7,9 @@
 #include "graspsim/study/study_folder.h"
 #include "graspsim/study/study_grid_table.h"
 
-#include <gtest/gtest.h>
+#include "scratch_folder.h"
 
-#include <unistd.h>
+#include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
@@ -18,9 +18,7 @@ using namespace graspsim::study;
 namespace fs = std::filesystem;
 
 TEST(StudyGridTable, OneColumnPerBaseOneRowPerOtherAxisCellsFromTheirCases) {
-    const fs::path dir = fs::temp_directory_path() / ("graspsim_grid_" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
+    const fs::path dir = graspsim::testing::makeScratchFolder("grid");
     const StudySpec spec = parseStudy("name: g\nbase: [types/ball.yaml, types/rod.yaml]\n"
                                       "axes:\n  subject.mass: [60, 80]\n  mode: [full, approx]\nmeasures: [held]\n",
                                       (dir / "s.yaml").string());

@@ -9,6 +9,8 @@
 
 #include "../simulation/live_heap.h"
 
+#include "scratch_folder.h"
+
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -28,12 +30,10 @@ double findResidentBytes() {
     return static_cast<double>(resident) * static_cast<double>(::sysconf(_SC_PAGESIZE));
 }
 
-class StudyRunner : public ::testing::Test {
+class StudyRunner : public graspsim::testing::ScratchFolder {
 protected:
     void SetUp() override {
-        dir_ = fs::temp_directory_path() / ("graspsim_study_runner_" + std::to_string(::getpid()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
+        ScratchFolder::SetUp();
         // `simulate SCENARIO --out DIR ...`: writes a summary; fails like graspsim on bad input for
         // cases whose number ends in 3, and stops early (exit 3, incomplete summary) for those
         // ending in 7.
@@ -42,8 +42,6 @@ protected:
                                            "echo '{\"held\": true}' > \"$4/summary.json\"\n";
         fs::permissions(dir_ / "fake.sh", fs::perms::owner_all);
     }
-    void TearDown() override { fs::remove_all(dir_); }
-    fs::path dir_;
 };
 
 }  // namespace

@@ -6,12 +6,13 @@
 
 #include "graspsim/viewer/still_picture.h"
 
+#include "scratch_folder.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <png.h>
 
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -53,15 +54,8 @@ Image readPng(const fs::path& path) {
     return out;
 }
 
-class ReplayBrowser : public ::testing::Test {
+class ReplayBrowser : public graspsim::testing::ScratchFolder {
 protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() / ("graspsim_browser_" + std::to_string(::getpid()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-
     // The phone pinch with approach and settling shortened, so the approximation engages at about 0.22 s.
     fs::path simulateShortApproxRun() {
         std::string text = slurp(fs::path(GRASPSIM_SOURCE_DIR) / "models/scenarios/phone-pinch.yaml");
@@ -77,8 +71,6 @@ protected:
                   0);
         return out;
     }
-
-    fs::path dir_;
 };
 
 TEST_F(ReplayBrowser, PageReportsEveryFrameAndBodyWithoutErrors) {

@@ -11,6 +11,8 @@
 #include "graspsim/viewer/replay_page.h"
 #include "graspsim/viewer/result_reader.h"
 
+#include "scratch_folder.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -18,7 +20,6 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <unistd.h>
 
 namespace graspsim::viewer {
 namespace {
@@ -46,9 +47,7 @@ scenario::Scenario makeShortPhoneScenario() {
 class ReplayPage : public ::testing::Test {
 protected:
     static void SetUpTestSuite() {
-        folder_ = new fs::path(fs::temp_directory_path() / ("graspsim_replay_" + std::to_string(::getpid())));
-        fs::remove_all(*folder_);
-        fs::create_directories(*folder_);
+        folder_ = new fs::path(graspsim::testing::makeScratchFolder("replay"));
         scenario_ = new scenario::Scenario(makeShortPhoneScenario());
         simulation::SimulationOptions options;
         options.mode = simulation::SimulationMode::Approx;

@@ -1,0 +1,60 @@
+// The --out folder of every command that writes one (simulate, capacity, validate, study run and
+// submit): a folder that refuses files is refused with one line before any work, and a path that
+// cannot be created is refused leaving nothing behind. Oracles: the kernel, which takes no files
+// in /proc from anyone (root ignores permission bits, so a folder of mode 0555 would not do), and
+// no file system, which takes no name over 255 bytes (NAME_MAX) after making its parents; the
+// scratch folder's listing before and after.
+
+#include "cli_process.h"
+
+#include <gtest/gtest.h>
+
+namespace fs = std::filesystem;
+using graspsim::testing::RunResult;
+
+namespace {
+
+class OutputFolderCommand : public graspsim::testing::CliProcess, public ::testing::WithParamInterface<const char*> {
+protected:
+    // The command line before --out, its STUDY replaced by a one-case study file.
+    std::string makeCommand() {
+        std::string command = GetParam();
+        const std::size_t at = command.find("STUDY");
+        if (at != std::string::npos) {
+            command.replace(at, 5, write("s.yaml", "name: one\nbase: phone-pinch\naxes: {mode: [full]}\nmeasures: [held]\n"));
+            extraFiles_ = 1;
+        }
+        return command;
+    }
+    // One line starting with `start`, exit code 2, nothing on stdout (no run, no measurement), and
+    // the scratch folder as it was (the captures, the study file).
+    void expectRefused(const std::string& args, const std::string& start) const {
+        const RunResult r = run(args);
+        EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_EQ(r.err.rfind(start, 0), 0u) << "expected '" << start << "...' from " << args << ", got: " << r.err;
+        EXPECT_EQ(r.out, "") << args;
+        EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 2 + extraFiles_) << args;
+    }
+};
+
+TEST_P(OutputFolderCommand, AFolderThatRefusesFilesIsRefusedBeforeAnyWork) {
+    if (!fs::is_directory("/proc")) GTEST_SKIP() << "no /proc (not Linux): no folder that refuses files to root";
+    expectRefused(makeCommand() + " --out /proc", "graspsim: --out: folder '/proc' cannot be created or written (");
+}
+
+TEST_P(OutputFolderCommand, AFolderThatCannotBeCreatedLeavesNothingBehind) {
+    const std::string command = makeCommand();
+    const fs::path tooLong = dir_ / "new" / "parent" / std::string(300, 'n');
+    expectRefused(command + " --out " + tooLong.string(), "graspsim: --out: folder '" + tooLong.string() + "' cannot be created or written (");
+    const std::string file = write("file", "not a folder");
+    ++extraFiles_;
+    expectRefused(command + " --out " + file, "graspsim: --out: folder '" + file + "' cannot be created or written (");
+    expectRefused(command + " --out " + file + "/out", "graspsim: --out: folder '" + file + "/out' cannot be created or written (");
+}
+
+INSTANTIATE_TEST_SUITE_P(Commands, OutputFolderCommand,
+                         ::testing::Values("simulate ball-clutch --duration 0.2", "capacity phone-pinch",
+                                           "validate --quick --no-plots --no-capacity", "study run STUDY", "study submit STUDY"));
+
+}  // namespace
