@@ -45,7 +45,15 @@ void checkFolder(const std::string& folder) {
     }
     const std::string path = folder + "/provenance.json";
     const nlohmann::json provenance = parseJson(path, readText(path));
-    const int format = provenance.value("format", 0);
+    // A hand-edited or foreign file: a JSON object whose "format", if given, is a whole number.
+    const auto found = provenance.is_object() ? provenance.find("format") : provenance.end();
+    if (!provenance.is_object() || (found != provenance.end() && !found->is_number_integer())) {
+        const std::string value = provenance.is_object() ? found->dump() : provenance.dump();
+        throw InputError(path + ": " + (provenance.is_object() ? "field 'format' " : "") + "value '" + value.substr(0, 80) +
+                         "' is not accepted; a graspsim provenance.json is a JSON object with \"format\": " +
+                         std::to_string(results::kResultFormat));
+    }
+    const int format = found == provenance.end() ? 0 : found->get<int>();
     if (format != results::kResultFormat) {
         throw InputError(path + ": result format " + std::to_string(format) + " is not supported (this graspsim reads format " +
                          std::to_string(results::kResultFormat) + "); run graspsim simulate again to view it");

@@ -185,6 +185,13 @@ TEST_F(ReplayPage, RefusesWhatIsNotAResultOfThisFormat) {
     const fs::path future = copyFolder("future");
     std::ofstream(future / "provenance.json") << R"({"format": 2})";
     expectRejected(future, "result format 2 is not supported");
+    // Valid JSON of another shape is bad input too, not an internal error.
+    const fs::path list = copyFolder("list");
+    std::ofstream(list / "provenance.json") << "[]";
+    expectRejected(list, "provenance.json: value '[]' is not accepted; a graspsim provenance.json is a JSON object");
+    const fs::path text = copyFolder("text");
+    std::ofstream(text / "provenance.json") << R"({"format": "one"})";
+    expectRejected(text, "provenance.json: field 'format' value '\"one\"' is not accepted");
     const fs::path noModel = copyFolder("nomodel");
     fs::remove(noModel / "model.urdf");
     expectRejected(noModel, "model.urdf is missing");
