@@ -18,9 +18,28 @@ CommandLine::CommandLine()
     });
 }
 
+namespace {
+
+// The commands read an option's empty text as "not given": `--duration ''` would silently run the
+// scenario's duration. Flags (no value) are skipped; CLI11 lists only the parsed subcommands.
+void rejectEmptyValues(const CLI::App& app) {
+    for (const CLI::Option* option : app.get_options()) {
+        if (option->get_type_size_max() == 0) continue;
+        for (const std::string& value : option->results()) {
+            if (!value.empty()) continue;
+            throw InputError(option->get_name() + ": value '' (empty) is not accepted; give a value" +
+                             (option->get_required() ? std::string() : " or leave " + option->get_name() + " out"));
+        }
+    }
+    for (const CLI::App* command : app.get_subcommands()) rejectEmptyValues(*command);
+}
+
+}  // namespace
+
 void CommandLine::parse(int argc, const char* const* argv) {
     arguments_.assign(argv, argv + argc);
     app_.parse(argc, argv);
+    rejectEmptyValues(app_);
 }
 
 void CommandLine::checkOptions() const {
