@@ -214,6 +214,7 @@ CapacityCommand::Plan CapacityCommand::makePlan() const {
     if (initialLoad > 0 && o.method != "ramp") throw InputError("--initial-load: only with --method ramp (its step before the ramp)");
     plan.hold = parsePositive(o.hold, "--hold", "the hold (s)", 1);
     plan.guess = parsePositive(o.guess, "--guess", "the first load", 0);
+    if (plan.guess > 0 && !plan.bisection) throw InputError("--guess: only with --method bisection (its first load)");
     plan.requests = makeRequests(o.direction, o.torque);
     for (capacity::GraspCapacityRequest& r : plan.requests) {
         r.rate = rate;
