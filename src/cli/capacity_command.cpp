@@ -1,5 +1,6 @@
 #include "capacity_command.h"
 
+#include "approx_only_options.h"
 #include "number_option.h"
 #include "output_folder.h"
 
@@ -182,6 +183,8 @@ CapacityCommand::Plan CapacityCommand::makePlan() const {
     Plan plan;
     plan.simulation.contact = simulation::parseContactModel(o.contact, "--contact");
     plan.simulation.mode = simulation::parseSimulationMode(o.mode, "--mode");
+    checkApproxOnlyOptions(*command_, o.mode, {"--constraint", "--attach", "--release-slide", "--release-penetration", "--q-minimum",
+                                               "--limits-friction", "--limits", "--release-at"});
     plan.simulation.accuracy = parseAccuracy(o.accuracy);
     plan.simulation.integrator = simulation::parseIntegratorChoice(o.integrator, "--integrator");
     plan.simulation.stepSize = parseStepSize(o.stepSize);

@@ -203,6 +203,11 @@ TEST_F(SimulateCommand, RejectsBadOptionsWithoutTouchingTheOutputFolder) {
     expectBadInput("simulate ball-clutch --mode approx --constraint weld --release-at compliance" + out,
                    {"--release-at", "compliance", "weld", "--constraint bushing"});
     expectBadInput("simulate ball-clutch --mode approx --attach multi --release-at compliance" + out, {"--release-at", "multi"});
+    // The approximation's options without --mode approx would be silently unused.
+    expectBadInput("simulate ball-clutch --constraint weld" + out,
+                   {"--constraint: value 'weld' is not accepted with --mode full", "add --mode approx or leave --constraint out"});
+    expectBadInput("simulate ball-clutch --mode full --q-minimum 0.1" + out, {"--q-minimum: value '0.1'", "--mode full"});
+    expectBadInput("simulate ball-clutch --limits contact" + out, {"--limits: value 'contact'", "--mode full"});
     EXPECT_FALSE(fs::exists(dir_ / "out"));
 }
 
