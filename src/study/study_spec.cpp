@@ -255,12 +255,15 @@ std::string toString(Sampling sampling) {
 }
 
 StudySpec parseStudy(const std::string& yamlText, const std::string& source) {
-    YAML::Node root;
+    std::vector<YAML::Node> documents;
     try {
-        root = YAML::Load(yamlText);
+        documents = YAML::LoadAll(yamlText);
     } catch (const YAML::Exception& e) {
         throw InputError(source + ":" + std::to_string(e.mark.line + 1) + ": malformed YAML (" + e.msg + ")");
     }
+    // YAML::Load would read the first document and silently drop the rest.
+    if (documents.size() > 1) reject(source, documents[1], "a second YAML document (after '---') is not accepted; a study file is one document");
+    const YAML::Node root = documents.empty() ? YAML::Node() : documents.front();
     if (!root.IsMap()) throw InputError(source + ": a study file is a YAML map (name, base, axes, measures, ...)");
     std::set<std::string> seen;
     for (const auto& entry : root) {

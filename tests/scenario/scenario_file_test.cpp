@@ -343,6 +343,8 @@ INSTANTIATE_TEST_SUITE_P(
                  {"'perturbations.none'", "'none' means no perturbation (--perturbation none)"}},
         BadInput{"relaxed axis listed twice", "perturbations:", "approximation:\n  relaxed_axes: [x, rx, x]\nperturbations:",
                  {"'approximation.relaxed_axes[2]'", "'x'", "listed twice"}},
+        BadInput{"a second document", "perturbations:", "---\nname: other\nperturbations:",
+                 {"test.yaml:", "a second YAML document (after '---') is not accepted"}},
         BadInput{"malformed YAML", "position: [0.4, -0.2, 0]", "position: [0.4, -0.2, 0",
                  {"malformed YAML"}},
         BadInput{"bad indentation", "  radius: 0.045", "   radius: 0.045", {"test.yaml:5:", "malformed YAML"}},
