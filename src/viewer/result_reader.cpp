@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -80,6 +81,11 @@ std::vector<TrajectoryRow> readTrajectory(const std::string& path, const model::
     for (std::size_t r = 0; r < table.rows.size(); ++r) {
         TrajectoryRow row;
         row.time = table.getNumber(r, 0);
+        // The replay interpolates between samples by time: NaN or a step back would show nonsense.
+        if (!std::isfinite(row.time) || (!rows.empty() && row.time < rows.back().time)) {
+            throw InputError(path + ":" + std::to_string(r + 2) + ": field 'time_s' value '" + table.rows[r][0] +
+                             "' is not accepted; sample times are finite and in increasing order");
+        }
         for (int k = 0; k < 3; ++k) row.p_GO[k] = table.getNumber(r, 1 + k);
         for (int k = 0; k < 4; ++k) row.q_GO[k] = table.getNumber(r, 4 + k);
         row.graspQuality = table.getNumber(r, 8);
