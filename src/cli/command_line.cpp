@@ -66,7 +66,12 @@ int CommandLine::exit(const CLI::ParseError& e) {
     // Help and version requests are "errors" with exit code 0: let CLI11 print the help of
     // whichever (sub)command asked. Real parse errors get one line.
     if (e.get_exit_code() == 0) return app_.exit(e);
-    std::cerr << "graspsim: " << e.what() << " (see graspsim --help)\n";
+    std::string message = e.what();
+    // CLI11 says "--duration: At Most 1 required but received 3" of an option given twice.
+    const std::string repeated = ": At Most 1 required but received ";
+    const std::size_t at = message.find(repeated);
+    if (at != std::string::npos) message = message.substr(0, at) + ": given more than once; give each option once";
+    std::cerr << "graspsim: " << message << " (see graspsim --help)\n";
     return 2;
 }
 

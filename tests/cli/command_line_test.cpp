@@ -38,6 +38,22 @@ TEST(CommandLine, RefusesAnOptionGivenAnEmptyValue) {
     EXPECT_EQ(findParseError({"simulate", ""}), "scenario: value '' (empty) is not accepted; give a value");
 }
 
+// CLI11's own text for an option given twice counts values, not options ("received 3").
+TEST(CommandLine, AnOptionGivenTwiceIsNamedInOneLine) {
+    std::vector<const char*> arguments{"graspsim", "simulate", "ball-clutch", "--duration", "0.1", "--duration", "0.3"};
+    CommandLine commandLine;
+    ::testing::internal::CaptureStderr();
+    int code = 0;
+    try {
+        commandLine.parse(static_cast<int>(arguments.size()), arguments.data());
+    } catch (const CLI::ParseError& e) {
+        code = commandLine.exit(e);
+    }
+    EXPECT_EQ(::testing::internal::GetCapturedStderr(),
+              "graspsim: --duration: given more than once; give each option once (see graspsim --help)\n");
+    EXPECT_EQ(code, 2);
+}
+
 TEST(CommandLine, AcceptsFlagsAndGivenValues) {
     EXPECT_EQ(findParseError({"simulate", "ball-clutch", "--duration", "0.2", "-q", "--view"}), "");
     EXPECT_EQ(findParseError({"model", "build", "--sex", "female", "-o", "arm.urdf"}), "");
