@@ -1,5 +1,6 @@
 #include "capacity_command.h"
 
+#include "approx_only_options.h"
 #include "number_option.h"
 #include "output_folder.h"
 
@@ -187,6 +188,8 @@ CapacityCommand::Plan CapacityCommand::makePlan() const {
     Plan plan;
     plan.simulation.contact = simulation::parseContactModel(o.contact, "--contact");
     plan.simulation.mode = simulation::parseSimulationMode(o.mode, "--mode");
+    checkApproxOnlyOptions(*command_, o.mode, {"--constraint", "--attach", "--release-slide", "--release-penetration", "--q-minimum",
+                                               "--limits-friction", "--limits", "--release-at", "--release-give"});
     plan.simulation.accuracy = parseAccuracy(o.accuracy);
     plan.simulation.integrator = simulation::parseIntegratorChoice(o.integrator, "--integrator");
     plan.simulation.stepSize = parseStepSize(o.stepSize);
@@ -220,6 +223,7 @@ CapacityCommand::Plan CapacityCommand::makePlan() const {
     if (initialLoad > 0 && o.method != "ramp") throw InputError("--initial-load: only with --method ramp (its step before the ramp)");
     plan.hold = parsePositive(o.hold, "--hold", "the hold (s)", 1);
     plan.guess = parsePositive(o.guess, "--guess", "the first load", 0);
+    if (plan.guess > 0 && !plan.bisection) throw InputError("--guess: only with --method bisection (its first load)");
     plan.requests = makeRequests(o.direction, o.torque);
     for (capacity::GraspCapacityRequest& r : plan.requests) {
         r.rate = rate;

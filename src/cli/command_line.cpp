@@ -18,9 +18,28 @@ CommandLine::CommandLine()
     });
 }
 
+namespace {
+
+// The commands read an option's empty text as "not given": `--duration ''` would silently run the
+// scenario's duration. Flags (no value) are skipped; CLI11 lists only the parsed subcommands.
+void rejectEmptyValues(const CLI::App& app) {
+    for (const CLI::Option* option : app.get_options()) {
+        if (option->get_type_size_max() == 0) continue;
+        for (const std::string& value : option->results()) {
+            if (!value.empty()) continue;
+            throw InputError(option->get_name() + ": value '' (empty) is not accepted; give a value" +
+                             (option->get_required() ? std::string() : " or leave " + option->get_name() + " out"));
+        }
+    }
+    for (const CLI::App* command : app.get_subcommands()) rejectEmptyValues(*command);
+}
+
+}  // namespace
+
 void CommandLine::parse(int argc, const char* const* argv) {
     arguments_.assign(argv, argv + argc);
     app_.parse(argc, argv);
+    rejectEmptyValues(app_);
 }
 
 void CommandLine::checkOptions() const {
@@ -47,7 +66,12 @@ int CommandLine::exit(const CLI::ParseError& e) {
     // Help and version requests are "errors" with exit code 0: let CLI11 print the help of
     // whichever (sub)command asked. Real parse errors get one line.
     if (e.get_exit_code() == 0) return app_.exit(e);
-    std::cerr << "graspsim: " << e.what() << " (see graspsim --help)\n";
+    std::string message = e.what();
+    // CLI11 says "--duration: At Most 1 required but received 3" of an option given twice.
+    const std::string repeated = ": At Most 1 required but received ";
+    const std::size_t at = message.find(repeated);
+    if (at != std::string::npos) message = message.substr(0, at) + ": given more than once; give each option once";
+    std::cerr << "graspsim: " << message << " (see graspsim --help)\n";
     return 2;
 }
 

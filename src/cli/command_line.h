@@ -22,7 +22,8 @@ public:
     CommandLine& operator=(const CommandLine&) = delete;
 
     // Parses the arguments (argv[0] is the program name).
-    // Throws CLI::ParseError (also for --help and --version, exit code 0).
+    // Throws CLI::ParseError (also for --help and --version, exit code 0), InputError for an
+    // option given an empty value.
     void parse(int argc, const char* const* argv);
     // Checks every option value that needs neither a file nor a simulation: numbers, ranges,
     // names. Throws InputError naming the option; run() checks the same values again.

@@ -1,6 +1,7 @@
 #include "grasp_command.h"
 
 #include "number_option.h"
+#include "output_file.h"
 
 #include "graspsim/anthropometry/sex.h"
 #include "graspsim/anthropometry/subject.h"
@@ -61,9 +62,14 @@ scenario::ObjectSpec parseObject(const std::string& text) {
     const bool round = shape == "sphere" || shape == "cylinder" || shape == "capsule";
     const bool elongated = shape == "cylinder" || shape == "capsule";
     const std::string fields = colon == std::string::npos ? "" : text.substr(colon + 1);
+    std::vector<std::string> seen;  // a field given twice would silently take its last value
     for (const std::string& field : split(fields, ',')) {
         const size_t equals = field.find('=');
         const std::string key = field.substr(0, equals), value = equals == std::string::npos ? "" : field.substr(equals + 1);
+        if (std::find(seen.begin(), seen.end(), key) != seen.end()) {
+            throw InputError("--object: field '" + key + "' is given twice in '" + text + "'; give each field once");
+        }
+        seen.push_back(key);
         auto positive = [&](const std::string& v) {
             const double x = parseNumber(v, "--object " + key, accepted);
             if (!(x > 0) || !std::isfinite(x)) throw InputError("--object " + key + ": value '" + v + "' is not accepted; " + accepted);
@@ -114,11 +120,13 @@ void GraspCommand::checkOptions() const {
     parseSubject(o.sex, o.mass, o.stature, o.preset);
     parseObject(o.object);
     planning::parseGraspType(o.type, "--type");
+    checkOutputFile(o.output, "--output");
 }
 
 int GraspCommand::run() const {
     const Options& o = *options_;
     if (!plan_->parsed()) throw InputError("grasp: a subcommand is required: plan (see graspsim grasp --help)");
+    checkOptions();  // before the planning's seconds of work
     const planning::GraspType type = planning::parseGraspType(o.type, "--type");
     scenario::Scenario base;
     base.name = o.name.empty() ? "planned-" + o.type : o.name;

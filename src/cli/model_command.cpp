@@ -1,6 +1,7 @@
 #include "model_command.h"
 
 #include "number_option.h"
+#include "output_file.h"
 
 #include "graspsim/anthropometry/sex.h"
 #include "graspsim/anthropometry/subject.h"
@@ -145,8 +146,12 @@ void ModelCommand::checkOptions() const {
     if (build_->parsed()) {
         model::BuildOptions options = parseBuildOptions(o.sex, o.mass, o.stature, o.preset, o.body);
         parseFingerOptions(o.fingerStiffness, o.fingerDamping, options);
+        checkOutputFile(o.output, "--output");
     }
-    if (object_->parsed()) model::buildObjectModel(o.objectName, "object name");
+    if (object_->parsed()) {
+        model::buildObjectModel(o.objectName, "object name");
+        checkOutputFile(o.objectOutput, "--output");
+    }
 }
 
 int ModelCommand::run() const {
@@ -154,6 +159,7 @@ int ModelCommand::run() const {
     if (!build_->parsed() && !object_->parsed() && !info_->parsed()) {
         throw InputError("model: a subcommand is required: build, object or info (see graspsim model --help)");
     }
+    checkOptions();
     if (build_->parsed()) {
         model::BuildOptions options = parseBuildOptions(o.sex, o.mass, o.stature, o.preset, o.body);
         parseFingerOptions(o.fingerStiffness, o.fingerDamping, options);

@@ -1,5 +1,6 @@
 #include "simulate_command.h"
 
+#include "approx_only_options.h"
 #include "number_option.h"
 #include "output_folder.h"
 #include "progress_meter.h"
@@ -148,6 +149,8 @@ simulation::SimulationOptions SimulateCommand::parseOptions() const {
         }
     }
     options.mode = simulation::parseSimulationMode(o.mode, "--mode");
+    checkApproxOnlyOptions(*command_, o.mode,
+                           {"--constraint", "--attach", "--q-threshold", "--q-minimum", "--limits", "--release-at", "--release-give"});
     options.duration = parseDuration(o.duration);
     options.integrator = simulation::parseIntegratorChoice(o.integrator, "--integrator");
     options.accuracy = parseAccuracy(o.accuracy);

@@ -9,6 +9,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <iostream>
 
 namespace graspsim::cli {
@@ -37,11 +39,27 @@ viewer::PictureSize parseSize(const std::string& text) {
     const std::string accepted = "use WIDTHxHEIGHT in pixels, each in [200, 4000], e.g. 1200x800";
     const std::size_t x = text.find('x');
     if (x == std::string::npos) throw InputError("--size: value '" + text + "' is not accepted; " + accepted);
-    const double width = parseNumber(text.substr(0, x), "--size", accepted);
-    const double height = parseNumber(text.substr(x + 1), "--size", accepted);
     const auto fits = [](double v) { return v >= 200 && v <= 4000 && v == std::floor(v); };
+    // Not parseNumber: its message would name only the part ("800x3" of "1200x800x3").
+    const auto readPixels = [](const std::string& part) {
+        char* end = nullptr;
+        const double value = std::strtod(part.c_str(), &end);
+        return !part.empty() && *end == '\0' ? value : 0.0;
+    };
+    const double width = readPixels(text.substr(0, x)), height = readPixels(text.substr(x + 1));
     if (!fits(width) || !fits(height)) throw InputError("--size: value '" + text + "' is not accepted; " + accepted);
     return {static_cast<int>(width), static_cast<int>(height)};
+}
+
+// --png-file names where --png's picture goes: alone it would be silently unused, and a folder
+// would be found only after replay.html is written and the picture rendered.
+void checkPictureFile(const std::string& pngTime, const std::string& pngFile) {
+    if (pngFile.empty()) return;
+    if (pngTime.empty()) throw InputError("--png-file: value '" + pngFile + "' is not accepted without --png TIME (the picture's time)");
+    std::error_code ec;
+    if (std::filesystem::is_directory(pngFile, ec)) {
+        throw InputError("--png-file: value '" + pngFile + "' is a folder; give the picture's file name, e.g. replay.png");
+    }
 }
 
 double parsePictureTime(const std::string& text, const viewer::ResultRecord& record) {
@@ -59,6 +77,7 @@ double parsePictureTime(const std::string& text, const viewer::ResultRecord& rec
 int ViewCommand::run() const {
     const Options& o = *options_;
     const viewer::PictureSize size = parseSize(o.size);
+    checkPictureFile(o.pngTime, o.pngFile);
     // Everything is checked before the first file is written.
     const viewer::ResultRecord record = viewer::readResultFolder(o.folder);
     const double time = o.pngTime.empty() ? 0.0 : parsePictureTime(o.pngTime, record);

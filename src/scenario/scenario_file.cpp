@@ -36,13 +36,19 @@ std::string describeMark(const YAML::Mark& mark) {
 }  // namespace
 
 Scenario parseScenario(const std::string& yamlText, const std::string& source) {
-    YAML::Node document;
+    std::vector<YAML::Node> documents;
     try {
-        document = YAML::Load(yamlText);
+        documents = YAML::LoadAll(yamlText);
     } catch (const YAML::Exception& e) {
         throw InputError(source + ":" + describeMark(e.mark) + " malformed YAML (" + e.msg +
                          "); a scenario file is a YAML map of 'key: value' lines, nested by indentation");
     }
+    // YAML::Load would read the first document and silently drop the rest.
+    if (documents.size() > 1) {
+        throw InputError(source + ":" + describeMark(documents[1].Mark()) + " a second YAML document (after '---') is not " +
+                         "accepted; a scenario file is one document");
+    }
+    const YAML::Node document = documents.empty() ? YAML::Node() : documents.front();
     try {
         return readScenario(YamlField::makeRoot(document, source));
     } catch (const YAML::Exception& e) {

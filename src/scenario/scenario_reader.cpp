@@ -259,6 +259,8 @@ SimulationSpec readSimulation(const YamlField& root, const ControllerSpec& contr
 }
 
 Perturbation readPerturbation(const YamlField& entry, double simulationDuration) {
+    // `--perturbation none` means no perturbation: one of that name could never be chosen.
+    if (entry.getKey() == "none") entry.reject("'none' means no perturbation (--perturbation none); give it another name");
     entry.requireMap({"force", "start", "duration"});
     Perturbation perturbation;
     perturbation.name = entry.getKey();
@@ -293,7 +295,9 @@ std::array<bool, 6> readRelaxedAxes(const YamlField& field) {
         const std::string name = item.asText(accepted);
         const auto it = std::find(names.begin(), names.end(), name);
         if (it == names.end()) item.reject("axis names are " + joinNames(names));
-        relaxed[static_cast<std::size_t>(it - names.begin())] = true;
+        const std::size_t axis = static_cast<std::size_t>(it - names.begin());
+        if (relaxed[axis]) item.reject("'" + name + "' is listed twice; give each axis once");
+        relaxed[axis] = true;
     }
     return relaxed;
 }
@@ -331,7 +335,9 @@ Scenario readScenario(const YamlField& root) {
                      "perturbations", "contact", "controller", "simulation", "approximation"});
     Scenario scenario;
     scenario.source = root.getSource();
-    scenario.name = root.require("name", "give the scenario a name").asText("name must be text");
+    const YamlField name = root.require("name", "give the scenario a name");
+    scenario.name = name.asText("name must be text");
+    if (scenario.name.empty()) name.reject("name must be a non-empty text");
     if (const std::optional<YamlField> description = root.find("description")) {
         scenario.description = description->asText("description must be text");
     }

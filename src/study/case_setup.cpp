@@ -85,6 +85,23 @@ std::string checkRunOption(const std::string& name, const std::string& value, co
     return value;
 }
 
+// The run options in getRunOptionNames order. The approximation's constraint and attachment (a
+// study's set, for its approx cases) are not given to a full-contact case: simulate refuses them
+// without --mode approx.
+std::vector<std::pair<std::string, std::string>> listRunOptions(const std::vector<Assignment>& assignments,
+                                                                 const scenario::Scenario& parsed) {
+    std::vector<std::pair<std::string, std::string>> options;
+    bool approx = false;
+    for (const Assignment& a : assignments) approx = approx || (a.isRunOption && a.name == "mode" && a.value == "approx");
+    for (const std::string& option : getRunOptionNames()) {
+        const bool approxOnly = option == "constraint" || option == "attach";
+        for (const Assignment& a : assignments) {
+            if (a.isRunOption && a.name == option && (!approxOnly || approx)) options.emplace_back("--" + option, checkRunOption(a.name, a.value, parsed));
+        }
+    }
+    return options;
+}
+
 // The base with `assignments` applied, parsed; the options in getRunOptionNames order.
 CaseSetup applyAssignments(const scenario::ScenarioText& base, const std::vector<Assignment>& assignments) {
     YAML::Node root = YAML::Load(base.text);
@@ -101,11 +118,7 @@ CaseSetup applyAssignments(const scenario::ScenarioText& base, const std::vector
     } catch (const InputError& e) {
         throw InputError(stripPlace(e.what(), source));
     }
-    for (const std::string& option : getRunOptionNames()) {
-        for (const Assignment& a : assignments) {
-            if (a.isRunOption && a.name == option) setup.options.emplace_back("--" + option, checkRunOption(a.name, a.value, parsed));
-        }
-    }
+    setup.options = listRunOptions(assignments, parsed);
     return setup;
 }
 
@@ -122,6 +135,22 @@ std::string formatEnd(double value) {
 }
 
 std::string place(const StudySpec& spec, int line) { return spec.source + ":" + std::to_string(line) + ": "; }
+
+// A study without mode runs full contact only, where the approximation's constraint and
+// attachment would be silently unused.
+void checkApproxOnlyRunOptions(const StudySpec& spec) {
+    bool modeGiven = false;
+    for (const FixedValue& f : spec.fixed) modeGiven = modeGiven || f.name == "mode";
+    for (const StudyAxis& axis : spec.axes) modeGiven = modeGiven || axis.name == "mode";
+    if (modeGiven) return;
+    const auto refuse = [&](const std::string& name, int line) {
+        if (name != "constraint" && name != "attach") return;
+        throw InputError(place(spec, line) + "run option '" + name + "' is not accepted without mode approx (set or an axis); "
+                         "it is an option of the grasp approximation");
+    };
+    for (const FixedValue& f : spec.fixed) refuse(f.name, f.line);
+    for (const StudyAxis& axis : spec.axes) refuse(axis.name, axis.line);
+}
 
 }  // namespace
 
@@ -155,6 +184,7 @@ CaseSetup makeCaseSetup(const StudySpec& spec, const std::vector<scenario::Scena
 }
 
 void checkStudyValues(const StudySpec& spec, const std::vector<scenario::ScenarioText>& bases) {
+    checkApproxOnlyRunOptions(spec);
     const std::vector<Assignment> fixed = listFixed(spec);
     for (const scenario::ScenarioText& base : bases) {
         try {

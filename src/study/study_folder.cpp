@@ -22,12 +22,25 @@ std::string formatIndex(int index) {
     return text;
 }
 
+// A JSON object: graspsim writes nothing else into a study folder, and value() throws a type
+// error (an internal error, exit 1) on an array or a number.
 nlohmann::json readJson(const std::string& path) {
+    nlohmann::json json;
     try {
-        return nlohmann::json::parse(io::readTextFile(path));
+        json = nlohmann::json::parse(io::readTextFile(path));
     } catch (const nlohmann::json::exception& e) {
         throw InputError(path + ": is not readable JSON (" + std::string(e.what()) + ")");
     }
+    if (!json.is_object()) throw InputError(path + ": value '" + json.dump().substr(0, 80) + "' is not accepted; graspsim writes a JSON object here");
+    return json;
+}
+
+// A text field of a JSON object that readJson read; `fallback` when absent.
+std::string findText(const nlohmann::json& json, const char* key, const std::string& fallback, const std::string& path) {
+    const auto found = json.find(key);
+    if (found == json.end()) return fallback;
+    if (!found->is_string()) throw InputError(path + ": field '" + key + "' value '" + found->dump() + "' is not accepted; it is text");
+    return found->get<std::string>();
 }
 
 // Anything in the folder that a study run did not write.
@@ -66,9 +79,9 @@ void prepareStudyFolder(const std::string& folder, const StudySpec& spec, const 
     std::error_code ec;
     if (fs::exists(studyPath, ec)) {
         const nlohmann::json known = readJson(studyPath);
-        if (known.value("fingerprint", "") == fingerprint) return;
-        throw InputError("--out: folder '" + folder + "' holds the results of another study ('" + known.value("name", "?") +
-                         "' from " + known.value("source", "?") + ", or this study before its file or base scenario changed); "
+        if (findText(known, "fingerprint", "", studyPath) == fingerprint) return;
+        throw InputError("--out: folder '" + folder + "' holds the results of another study ('" + findText(known, "name", "?", studyPath) +
+                         "' from " + findText(known, "source", "?", studyPath) + ", or this study before its file or base scenario changed); "
                          "give a new folder, or remove that one to start again");
     }
     if (fs::exists(folder, ec) && (!fs::is_directory(folder, ec) || holdsOtherFiles(folder))) {
@@ -91,7 +104,7 @@ StudySpec loadFolderStudy(const std::string& folder) {
         throw InputError(folder + ": is not a study's output folder (no " + kStudyFile + "); give the --out folder of `graspsim study run` or `submit`");
     }
     const nlohmann::json known = readJson(studyPath);
-    return parseStudy(io::readTextFile(folder + "/study.yaml"), known.value("source", folder + "/study.yaml"));
+    return parseStudy(io::readTextFile(folder + "/study.yaml"), findText(known, "source", folder + "/study.yaml", studyPath));
 }
 
 std::string findCaseFolder(const std::string& folder, int index) { return folder + "/cases/" + formatIndex(index); }
@@ -126,13 +139,18 @@ void commitCase(const std::string& folder, const std::string& tmpFolder, const C
 }
 
 CaseRecord readCaseRecord(const std::string& folder, int index) {
-    const nlohmann::json json = readJson(findCaseFolder(folder, index) + "/case.json");
+    const std::string path = findCaseFolder(folder, index) + "/case.json";
+    const nlohmann::json json = readJson(path);
     CaseRecord record;
-    record.index = json.value("case", index);
-    const std::string status = json.value("status", "failed");
-    record.status = status == "ok" ? CaseStatus::Ok : status == "incomplete" ? CaseStatus::Incomplete : CaseStatus::Failed;
-    record.error = json.value("error", "");
-    record.values = json.value("values", std::vector<std::string>{});
+    try {
+        record.index = json.value("case", index);
+        const std::string status = json.value("status", "failed");
+        record.status = status == "ok" ? CaseStatus::Ok : status == "incomplete" ? CaseStatus::Incomplete : CaseStatus::Failed;
+        record.error = json.value("error", "");
+        record.values = json.value("values", std::vector<std::string>{});
+    } catch (const nlohmann::json::type_error& e) {
+        throw InputError(path + ": is not a graspsim case record (" + std::string(e.what()) + ")");
+    }
     return record;
 }
 
@@ -140,11 +158,7 @@ nlohmann::json readCaseSummary(const std::string& folder, int index) {
     const std::string path = findCaseFolder(folder, index) + "/summary.json";
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec)) return nlohmann::json::object();
-    try {
-        return nlohmann::json::parse(io::readTextFile(path));
-    } catch (const nlohmann::json::exception& e) {
-        throw InputError(path + ": is not readable JSON (" + std::string(e.what()) + ")");
-    }
+    return readJson(path);
 }
 
 }  // namespace graspsim::study

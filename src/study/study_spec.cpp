@@ -106,7 +106,13 @@ StudyAxis readAxis(const std::string& source, const YAML::Node& key, const YAML:
     axis.isRunOption = isRunOption(axis.name);
     axis.line = findLine(key);
     if (value.IsSequence()) {
-        for (const auto& item : value) axis.values.push_back(formatYaml(item));
+        std::set<std::string> seen;
+        for (const auto& item : value) {
+            axis.values.push_back(formatYaml(item));
+            if (!seen.insert(axis.values.back()).second) {
+                reject(source, item, "axis '" + axis.name + "' value '" + axis.values.back() + "' is listed twice; give each value once");
+            }
+        }
         if (axis.values.empty()) reject(source, key, "axis '" + axis.name + "' is empty; give a list of values or a range {from, to, steps}");
     } else if (value.IsMap() && !axis.isRunOption) {
         axis.isRange = true;
@@ -135,9 +141,11 @@ std::vector<FixedValue> readFixed(const std::string& source, const YAML::Node& n
     std::vector<FixedValue> fixed;
     if (!node || node.IsNull()) return fixed;
     if (!node.IsMap()) reject(source, node, "'set' is not accepted; give a map of field: value");
+    std::set<std::string> seen;
     for (const auto& entry : node) {
         const std::string name = entry.first.Scalar();
         checkName(source, entry.first, name);
+        if (!seen.insert(name).second) reject(source, entry.first, "set '" + name + "' is given twice; give each field once");
         fixed.push_back({name, isRunOption(name), formatYaml(entry.second), findLine(entry.first)});
     }
     return fixed;
@@ -153,6 +161,9 @@ std::vector<std::string> readMeasures(const std::string& source, const YAML::Nod
         const std::string name = readText(source, item, "measures");
         if (std::find(known.begin(), known.end(), name) == known.end()) {
             reject(source, item, "measure '" + name + "' is not accepted; measures are summary.json keys: " + join(known));
+        }
+        if (std::find(measures.begin(), measures.end(), name) != measures.end()) {
+            reject(source, item, "measure '" + name + "' is listed twice; give each measure once");
         }
         measures.push_back(name);
     }
@@ -202,6 +213,7 @@ void readSampling(const std::string& source, const YAML::Node& root, StudySpec& 
                sampled ? "'samples' is missing; random and latin sampling need the number of cases" : "'samples' is not accepted with grid sampling");
     }
     if (sampled) spec.samples = static_cast<int>(readInteger(source, root["samples"], "samples", 1));
+    if (!sampled && root["seed"]) reject(source, root["seed"], "'seed' is not accepted with grid sampling (it seeds random and latin)");
     if (root["seed"]) spec.seed = static_cast<std::uint64_t>(readInteger(source, root["seed"], "seed", 0));
     double gridSize = 1;
     for (const StudyAxis& axis : spec.axes) {
@@ -243,18 +255,23 @@ std::string toString(Sampling sampling) {
 }
 
 StudySpec parseStudy(const std::string& yamlText, const std::string& source) {
-    YAML::Node root;
+    std::vector<YAML::Node> documents;
     try {
-        root = YAML::Load(yamlText);
+        documents = YAML::LoadAll(yamlText);
     } catch (const YAML::Exception& e) {
         throw InputError(source + ":" + std::to_string(e.mark.line + 1) + ": malformed YAML (" + e.msg + ")");
     }
+    // YAML::Load would read the first document and silently drop the rest.
+    if (documents.size() > 1) reject(source, documents[1], "a second YAML document (after '---') is not accepted; a study file is one document");
+    const YAML::Node root = documents.empty() ? YAML::Node() : documents.front();
     if (!root.IsMap()) throw InputError(source + ": a study file is a YAML map (name, base, axes, measures, ...)");
+    std::set<std::string> seen;
     for (const auto& entry : root) {
         const std::string key = entry.first.Scalar();
         if (std::find(kTopKeys.begin(), kTopKeys.end(), key) == kTopKeys.end()) {
             reject(source, entry.first, "key '" + key + "' is not accepted; a study has " + join(kTopKeys));
         }
+        if (!seen.insert(key).second) reject(source, entry.first, "key '" + key + "' is given twice; give each key once");
     }
     StudySpec spec;
     spec.source = source;

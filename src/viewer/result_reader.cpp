@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -45,7 +46,15 @@ void checkFolder(const std::string& folder) {
     }
     const std::string path = folder + "/provenance.json";
     const nlohmann::json provenance = parseJson(path, readText(path));
-    const int format = provenance.value("format", 0);
+    // A hand-edited or foreign file: a JSON object whose "format", if given, is a whole number.
+    const auto found = provenance.is_object() ? provenance.find("format") : provenance.end();
+    if (!provenance.is_object() || (found != provenance.end() && !found->is_number_integer())) {
+        const std::string value = provenance.is_object() ? found->dump() : provenance.dump();
+        throw InputError(path + ": " + (provenance.is_object() ? "field 'format' " : "") + "value '" + value.substr(0, 80) +
+                         "' is not accepted; a graspsim provenance.json is a JSON object with \"format\": " +
+                         std::to_string(results::kResultFormat));
+    }
+    const int format = found == provenance.end() ? 0 : found->get<int>();
     if (format != results::kResultFormat) {
         throw InputError(path + ": result format " + std::to_string(format) + " is not supported (this graspsim reads format " +
                          std::to_string(results::kResultFormat) + "); run graspsim simulate again to view it");
@@ -72,6 +81,11 @@ std::vector<TrajectoryRow> readTrajectory(const std::string& path, const model::
     for (std::size_t r = 0; r < table.rows.size(); ++r) {
         TrajectoryRow row;
         row.time = table.getNumber(r, 0);
+        // The replay interpolates between samples by time: NaN or a step back would show nonsense.
+        if (!std::isfinite(row.time) || (!rows.empty() && row.time < rows.back().time)) {
+            throw InputError(path + ":" + std::to_string(r + 2) + ": field 'time_s' value '" + table.rows[r][0] +
+                             "' is not accepted; sample times are finite and in increasing order");
+        }
         for (int k = 0; k < 3; ++k) row.p_GO[k] = table.getNumber(r, 1 + k);
         for (int k = 0; k < 4; ++k) row.q_GO[k] = table.getNumber(r, 4 + k);
         row.graspQuality = table.getNumber(r, 8);

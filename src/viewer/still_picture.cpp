@@ -112,8 +112,9 @@ void renderStillPicture(const std::string& htmlPath, double time, const std::str
     }
     fs::rename(temporary, pngPath, ec);
     if (ec) {
+        const std::string why = ec.message();  // before remove() clears ec
         fs::remove(temporary, ec);
-        throw InputError(pngPath + ": cannot be written (" + ec.message() + ")");
+        throw InputError(pngPath + ": cannot be written (" + why + ")");
     }
 }
 

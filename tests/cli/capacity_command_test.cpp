@@ -58,6 +58,10 @@ TEST_F(CapacityCommand, BadInputIsOneLineAndWritesNothing) {
     expectRejected("--method constant --load 2 --direction all", "--direction");
     expectRejected("--initial-load 0", "--initial-load");
     expectRejected("--method bisection --initial-load 1", "--initial-load");  // a ramp's step only
+    expectRejected("--guess 2", "--guess: only with --method bisection");  // not silently unused by the ramp
+    expectRejected("--constraint weld", "--constraint: value 'weld' is not accepted with --mode full");
+    expectRejected("--release-slide 0.01", "--release-slide: value '0.01' is not accepted with --mode full");
+    expectRejected("--method constant --load 2 --guess 2", "--guess: only with --method bisection");
     // About the line through the phone's two goals, R_GO (p_index - p_thumb) normalized (the
     // scenario's goals and orientation; grasp_capacity_test derives it in code): nothing resists.
     expectRejected("--torque --direction 0.8866,-0.4599,-0.0500", "--direction");

@@ -45,6 +45,10 @@ TEST_F(GraspCommand, BadInputNamesTheOptionAndValue) {
     expectBadInput("grasp plan --object ellipsoid:semi_axes=0.02x0.03,mass=0.2 -o " + output(), {"--object", "semi_axes"});
     expectBadInput("grasp plan --object sphere:radius=-0.02,mass=0.2 -o " + output(), {"--object radius", "'-0.02'"});
     expectBadInput("grasp plan --object sphere:radius=0.02 -o " + output(), {"--object", "mass"});
+    expectBadInput("grasp plan --object sphere:radius=0.02,mass=0.2,radius=0.03 -o " + output(),
+                   {"--object: field 'radius' is given twice in 'sphere:radius=0.02,mass=0.2,radius=0.03'"});
     expectBadInput("grasp plan --object sphere:radius=0.02,mass=0.2 --type fist -o " + output(), {"--type", "'fist'"});
+    // Refused before the planning's seconds of work, naming the option.
+    expectBadInput("grasp plan --object sphere:radius=0.02,mass=0.2 -o " + dir_.string(), {"--output: value '", "' is a folder"});
     expectBadInput("grasp plan --object sphere:radius=0.02,mass=0.2 --mass 300 -o " + output(), {"--mass"});
 }

@@ -96,3 +96,16 @@ TEST_F(ModelCommand, UnwritableOutputLeavesNothing) {
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.err.find("/nonexistent-graspsim-dir/arm.urdf"), std::string::npos) << r.err;
 }
+
+// A folder, or a file in a folder that does not exist, is refused before the model is built,
+// naming -o's long name and the value; nothing is written into the folder.
+TEST_F(ModelCommand, OutputThatIsAFolderOrInAMissingFolderIsRefusedNamingTheOption) {
+    fs::create_directories(dir_ / "models");
+    extraFiles_ = 1;
+    const std::string folder = (dir_ / "models").string();
+    expectBadInput("model build -o " + folder, {"--output: value '", "/models' is a folder"});
+    expectBadInput("model object ball -o " + folder + "/", {"--output: value '", "/models/' is a folder"});
+    expectBadInput("model build -o " + folder + "/missing/arm.urdf",
+                   {"--output: value '", "/models/missing/arm.urdf' is not accepted; its folder '", "/models/missing' does not exist"});
+    EXPECT_TRUE(fs::is_empty(dir_ / "models"));
+}

@@ -206,6 +206,12 @@ TEST_F(SimulateCommand, RejectsBadOptionsWithoutTouchingTheOutputFolder) {
     expectBadInput("simulate ball-clutch --mode approx --release-give=-1" + out, {"--release-give", "-1", "> 0 (m)"});
     expectBadInput("simulate ball-clutch --mode approx --release-at none --release-give 0.002" + out,
                    {"--release-give", "compliance release trigger", "none"});
+    // The approximation's options without --mode approx would be silently unused.
+    expectBadInput("simulate ball-clutch --constraint weld" + out,
+                   {"--constraint: value 'weld' is not accepted with --mode full", "add --mode approx or leave --constraint out"});
+    expectBadInput("simulate ball-clutch --mode full --q-minimum 0.1" + out, {"--q-minimum: value '0.1'", "--mode full"});
+    expectBadInput("simulate ball-clutch --limits contact" + out, {"--limits: value 'contact'", "--mode full"});
+    expectBadInput("simulate ball-clutch --release-give 0.001" + out, {"--release-give: value '0.001'", "--mode full"});
     EXPECT_FALSE(fs::exists(dir_ / "out"));
 }
 

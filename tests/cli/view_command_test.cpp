@@ -22,7 +22,7 @@ protected:
         extraFiles_ = 1;
         return out;
     }
-    void expectRejected(const std::string& args, const fs::path& folder, const char* fragment) {
+    void expectRejected(const std::string& args, const fs::path& folder, const std::string& fragment) {
         const RunResult r = run(args);
         EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.err;
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
@@ -58,6 +58,18 @@ TEST_F(ViewCommand, RefusesAPictureTimeOutsideTheRunOrABadSize) {
     expectRejected("view " + out.string() + " --png -0.1", out, "outside the run");
     expectRejected("view " + out.string() + " --png soon", out, "--png: value 'soon' is not a number");
     expectRejected("view " + out.string() + " --png 0.01 --size 10x10", out, "--size: value '10x10'");
+    expectRejected("view " + out.string() + " --png 0.01 --size 1200x800x3", out, "--size: value '1200x800x3' is not accepted");
+}
+
+// --png-file alone would be silently unused; a folder would be found only after the replay is
+// written and the picture rendered.
+TEST_F(ViewCommand, RefusesAPictureFileWithoutATimeOrThatIsAFolder) {
+    const fs::path out = simulateShortRun();
+    expectRejected("view " + out.string() + " --png-file " + (dir_ / "p.png").string(), out,
+                   "--png-file: value '" + (dir_ / "p.png").string() + "' is not accepted without --png TIME");
+    EXPECT_FALSE(fs::exists(dir_ / "p.png"));
+    expectRejected("view " + out.string() + " --png 0.01 --png-file " + dir_.string(), out,
+                   "--png-file: value '" + dir_.string() + "' is a folder");
 }
 
 TEST_F(ViewCommand, VersionNamesCommitAndLibraries) {

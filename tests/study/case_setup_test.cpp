@@ -52,6 +52,24 @@ TEST(CaseSetup, ValuesLandInTheScenarioFields) {
     EXPECT_EQ(setup.options, (Options{{"--mode", "approx"}, {"--integrator", "cvode"}, {"--perturbation", "f1"}}));
 }
 
+// A set constraint is the approximation's: its full-contact cases run without it (simulate
+// refuses --constraint without --mode approx), its approx cases with it.
+TEST(CaseSetup, ApproximationOptionsGoToApproxCasesOnly) {
+    const StudySpec spec = makeSpec("  mode: [full, approx]\n", "set: {constraint: weld, attach: merged}\n");
+    const std::vector<scenario::ScenarioText> base = readBaseScenarios(spec);
+    checkStudyValues(spec, base);
+    using Options = std::vector<std::pair<std::string, std::string>>;
+    EXPECT_EQ(makeCaseSetup(spec, base, expandCases(spec).at(0)).options, (Options{{"--mode", "full"}}));
+    EXPECT_EQ(makeCaseSetup(spec, base, expandCases(spec).at(1)).options,
+              (Options{{"--mode", "approx"}, {"--constraint", "weld"}, {"--attach", "merged"}}));
+}
+
+TEST(CaseSetup, ApproximationOptionsWithoutModeAreRefused) {
+    EXPECT_NE(checkError("  subject.stature: [1.741]\n", "set: {constraint: weld}\n")
+                  .find("s.yaml:3: run option 'constraint' is not accepted without mode approx"),
+              std::string::npos);
+}
+
 TEST(CaseSetup, SectionsMissingFromTheBaseAreAdded) {
     // A minimal base without an approximation section.
     const StudySpec spec = makeSpec("  approximation.q_threshold: [2.5]\n");

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <functional>
 #include <fstream>
 
 using namespace graspsim::study;
@@ -64,4 +65,27 @@ TEST_F(StudyFolder, CaseIsCommittedWholeAndTemporariesRemoved) {
     EXPECT_EQ(record.error, "bad \"value\", here");
     EXPECT_EQ(record.values, (std::vector<std::string>{"x", "[1, 2]"}));
     EXPECT_EQ(findCaseFolder(dir_, 3), (dir_ / "cases/0003").string());
+}
+
+// Hand-edited records that are valid JSON of another shape are bad input naming the file, not
+// nlohmann's type error escaping as an internal error.
+TEST_F(StudyFolder, RecordsOfAnotherShapeAreBadInputNamingTheFile) {
+    prepareStudyFolder(dir_, makeSpec("a"), "base");
+    const auto expectRefused = [](const std::function<void()>& read, const std::string& fragment) {
+        try {
+            read();
+            ADD_FAILURE() << "accepted; expected " << fragment;
+        } catch (const graspsim::InputError& e) {
+            EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+        }
+    };
+    std::ofstream(dir_ / "study.json") << R"({"name": "a", "source": 5})";
+    expectRefused([&] { loadFolderStudy(dir_); }, "study.json: field 'source' value '5' is not accepted; it is text");
+    std::ofstream(dir_ / "study.json") << "[]";
+    expectRefused([&] { loadFolderStudy(dir_); }, "study.json: value '[]' is not accepted; graspsim writes a JSON object here");
+    fs::create_directories(findCaseFolder(dir_, 0));
+    std::ofstream(findCaseFolder(dir_, 0) + "/case.json") << "[1]";
+    expectRefused([&] { readCaseRecord(dir_, 0); }, "cases/0000/case.json: value '[1]' is not accepted");
+    std::ofstream(findCaseFolder(dir_, 0) + "/case.json") << R"({"case": "zero"})";
+    expectRefused([&] { readCaseRecord(dir_, 0); }, "cases/0000/case.json: is not a graspsim case record");
 }

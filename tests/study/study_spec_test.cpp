@@ -79,3 +79,23 @@ TEST(StudySpec, MalformedStudiesGetOneLineNamingTheKey) {
     EXPECT_NE(errorOf(kHead + "axes: {'subject..mass': [1]}\nmeasures: [held]\n").find("axis 'subject..mass' is not accepted"),
               std::string::npos);
 }
+
+// yaml-cpp keeps both of a key given twice and answers the first: a second value (or a repeated
+// case, measure or seed that grid sampling never uses) would be silently dropped.
+TEST(StudySpec, RepeatsAndUnusedKeysAreRefusedNamingTheLine) {
+    EXPECT_EQ(errorOf("name: t\nname: u\nbase: ball-clutch\naxes: {mode: [full]}\nmeasures: [held]\n"),
+              "s.yaml:2: key 'name' is given twice; give each key once");
+    EXPECT_EQ(errorOf(kHead + "set:\n  contact.dynamic_friction: 0.4\n  contact.dynamic_friction: 0.5\naxes: {mode: [full]}\nmeasures: [held]\n"),
+              "s.yaml:5: set 'contact.dynamic_friction' is given twice; give each field once");
+    EXPECT_EQ(errorOf(kHead + "axes: {subject.stature: [1.741, 1.75, 1.741]}\nmeasures: [held]\n"),
+              "s.yaml:3: axis 'subject.stature' value '1.741' is listed twice; give each value once");
+    EXPECT_EQ(errorOf(kHead + "axes: {mode: [full]}\nmeasures: [held, wall_time_s, held]\n"),
+              "s.yaml:4: measure 'held' is listed twice; give each measure once");
+    EXPECT_EQ(errorOf(kHead + "axes: {mode: [full]}\nmeasures: [held]\nseed: 5\n"),
+              "s.yaml:5: 'seed' is not accepted with grid sampling (it seeds random and latin)");
+    EXPECT_EQ(errorOf(kHead + "axes: {mode: [full]}\nmeasures: [held]\n---\nname: u\n"),
+              "s.yaml:6: a second YAML document (after '---') is not accepted; a study file is one document");
+    // The same keys once each read.
+    EXPECT_NO_THROW(parseStudy(kHead + "axes: {subject.stature: [1.741, 1.75]}\nsampling: random\nsamples: 2\nseed: 5\n"
+                               "measures: [held, wall_time_s]\n", "s.yaml"));
+}

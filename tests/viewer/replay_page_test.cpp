@@ -72,6 +72,17 @@ protected:
     void TearDown() override {
         for (const fs::path& p : copies_) fs::remove_all(p);
     }
+    // Replaces the time of the `index`-th sample (0: the first data line) of the folder's trajectory.
+    static void replaceTrajectoryTime(const fs::path& folder, std::size_t index, const std::string& time) {
+        std::ifstream in(folder / "trajectory.csv");
+        std::vector<std::string> lines;
+        for (std::string line; std::getline(in, line);) lines.push_back(line);
+        in.close();
+        std::string& line = lines.at(index + 1);
+        line = time + line.substr(line.find(','));
+        std::ofstream out(folder / "trajectory.csv");
+        for (const std::string& l : lines) out << l << "\n";
+    }
     void expectRejected(const fs::path& folder, const std::string& fragment) const {
         try {
             readResultFolder(folder.string());
@@ -184,12 +195,26 @@ TEST_F(ReplayPage, RefusesWhatIsNotAResultOfThisFormat) {
     const fs::path future = copyFolder("future");
     std::ofstream(future / "provenance.json") << R"({"format": 2})";
     expectRejected(future, "result format 2 is not supported");
+    // Valid JSON of another shape is bad input too, not an internal error.
+    const fs::path list = copyFolder("list");
+    std::ofstream(list / "provenance.json") << "[]";
+    expectRejected(list, "provenance.json: value '[]' is not accepted; a graspsim provenance.json is a JSON object");
+    const fs::path text = copyFolder("text");
+    std::ofstream(text / "provenance.json") << R"({"format": "one"})";
+    expectRejected(text, "provenance.json: field 'format' value '\"one\"' is not accepted");
     const fs::path noModel = copyFolder("nomodel");
     fs::remove(noModel / "model.urdf");
     expectRejected(noModel, "model.urdf is missing");
     const fs::path badColumns = copyFolder("columns");
     std::ofstream(badColumns / "trajectory.csv") << "time,x\n0,1\n";
     expectRejected(badColumns, "trajectory.csv: columns are not graspsim's");
+    // A sample time that is not a finite number, or goes back, would replay nonsense.
+    const fs::path nanTime = copyFolder("nantime");
+    replaceTrajectoryTime(nanTime, 2, "nan");
+    expectRejected(nanTime, "trajectory.csv:4: field 'time_s' value 'nan' is not accepted; sample times are finite and in increasing order");
+    const fs::path backTime = copyFolder("backtime");
+    replaceTrajectoryTime(backTime, 3, "0");
+    expectRejected(backTime, "trajectory.csv:5: field 'time_s' value '0' is not accepted");
     const fs::path noConstraint = copyFolder("noconstraint");
     fs::remove(noConstraint / "constraint.csv");
     expectRejected(noConstraint, "constraint.csv is missing");
