@@ -286,6 +286,8 @@ void runScene(GraspExperiment& experiment, AnyStepper& stepper, double duration,
         result.summary.complete = true;
     } catch (const integration::FixedStepTooLongError&) {
         throw;  // no result at all: the caller names the step's source (describeFixedStepTooLong)
+    } catch (const InputError&) {
+        throw;  // bad input found only once the run knows it (an automatic threshold): no result either
     } catch (const NumericalError& e) {
         result.summary.failure = foldToOneLine(e.what());
     } catch (const SimTK::Exception::Base& e) {  // its what() starts with a source file and spans lines

@@ -277,6 +277,15 @@ void GraspSwitch::checkEngage(SimTK::State& state) const {
         GraspSwitchRecord& record = updRecord(state);
         record.qThreshold = options_.autoThresholdFraction * q;
         if (options_.qMinimum == 0) record.qMinimum = options_.hysteresisFraction * record.qThreshold;
+        // A given Q_M at or above it would release every engagement at once, and the run would chatter.
+        if (!(record.qMinimum < record.qThreshold)) {
+            char text[320];
+            std::snprintf(text, sizeof text,
+                          "Q_M (--q-minimum or approximation.q_minimum) %.6g N is not accepted: it must be below Q_Th, "
+                          "here automatic, %.6g N (%g x the settled grasp's quality); give a smaller Q_M or a --q-threshold "
+                          "above it", record.qMinimum, record.qThreshold, options_.autoThresholdFraction);
+            throw InputError(text);
+        }
     }
     if (!isSticking(reports)) return;
     // Not at the instant of a release (a witness may release at a check's time): the contacts just

@@ -215,6 +215,18 @@ TEST_F(SimulateCommand, RejectsBadOptionsWithoutTouchingTheOutputFolder) {
     EXPECT_FALSE(fs::exists(dir_ / "out"));
 }
 
+// A Q_M at or above the automatic Q_Th (known only once the grasp has settled, 0.203 N on the ball
+// clutch) would release every engagement at once: the run chattered through 60 engage/release
+// events in 0.6 s and exited 0. Now it is bad input, found at the settled check: one line naming
+// Q_M, its value and the threshold, exit 2, no folder. Q_M just below passes the same check.
+TEST_F(SimulateCommand, AQMinimumNotBelowTheAutomaticThresholdIsBadInput) {
+    const std::string out = " --out " + (dir_ / "out").string();
+    expectBadInput("simulate ball-clutch --mode approx --duration 1.1 --q-minimum 1000" + out,
+                   {"--q-minimum", "1000 N", "must be below Q_Th", "0.203"});
+    const RunResult ok = run("simulate ball-clutch --mode approx --duration 1.1 -q --q-minimum 0.2" + out);
+    EXPECT_EQ(ok.exitCode, 0) << ok.err;
+}
+
 TEST_F(SimulateCommand, RejectsBadScenarioFilesNamingFileAndField) {
     extraFiles_ = 1;
     const std::string out = " --out " + (dir_ / "out").string();
