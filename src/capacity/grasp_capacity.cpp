@@ -149,9 +149,9 @@ GraspCapacity makeHeader(const simulation::SimulationOptions& options, const Gra
         const simulation::ApproxOptions approx = simulation::resolveApproxOptions(options.approx, scenario.approximation);
         c.realization = simulation::toString(approx.constraint) + " " + simulation::toString(approx.attach) + ", limits " +
                         grasp::toString(approx.limitModel) + ", release at " + simulation::toString(approx.releaseTrigger);
-        if (approx.releaseTrigger == simulation::ApproxReleaseTrigger::Compliance) {
+        if (approx.releaseGive) {  // the default's text stays as it was
             char give[48];
-            std::snprintf(give, sizeof give, " (give %.3g mm)", 1e3 * approx.releaseGive.value_or(simulation::kDefaultReleaseGive));
+            std::snprintf(give, sizeof give, " (give %.3g mm)", 1e3 * *approx.releaseGive);
             c.realization += give;
         }
     }
@@ -193,17 +193,6 @@ void checkLoadResistible(const scenario::Scenario& scenario, const GraspCapacity
                      "friction), so there is no capacity to measure; choose an axis more than 5 deg away");
 }
 
-simulation::SimulationOptions resolveCapacityOptions(const scenario::Scenario& scenario, const simulation::SimulationOptions& options,
-                                                     const SlipCriteria& criteria) {
-    simulation::SimulationOptions resolved = options;
-    if (options.mode != simulation::SimulationMode::Approx || options.approx.releaseGive) return resolved;
-    const simulation::ApproxOptions approx = simulation::resolveApproxOptions(options.approx, scenario.approximation);
-    if (approx.releaseTrigger == simulation::ApproxReleaseTrigger::Compliance) {
-        resolved.approx.releaseGive = kCapacityReleaseGiveFraction * criteria.slip;
-    }
-    return resolved;
-}
-
 double findLoadStart(const scenario::Scenario& scenario) { return scenario.simulation.settleTime + kLoadStartDelay; }
 
 LoadedRunFactory makeGraspRuns(const scenario::Scenario& scenario, const simulation::SimulationOptions& options) {
@@ -215,10 +204,9 @@ LoadedRunFactory makeGraspRuns(const scenario::Scenario& scenario, const simulat
     };
 }
 
-GraspCapacity measureGraspCapacityRamp(const scenario::Scenario& scenario, const simulation::SimulationOptions& given,
+GraspCapacity measureGraspCapacityRamp(const scenario::Scenario& scenario, const simulation::SimulationOptions& options,
                                        const GraspCapacityRequest& request) {
     const auto clock = std::chrono::steady_clock::now();
-    const simulation::SimulationOptions options = resolveCapacityOptions(scenario, given, request.criteria);
     GraspCapacity c = makeHeader(options, request, scenario, "ramp");
     c.rate = request.rate > 0 ? request.rate : findDefaultRate(scenario, request.torque);
     RampProtocol protocol;
@@ -235,10 +223,9 @@ GraspCapacity measureGraspCapacityRamp(const scenario::Scenario& scenario, const
     return c;
 }
 
-GraspCapacity measureGraspCapacityBisection(const scenario::Scenario& scenario, const simulation::SimulationOptions& given,
+GraspCapacity measureGraspCapacityBisection(const scenario::Scenario& scenario, const simulation::SimulationOptions& options,
                                             const GraspCapacityRequest& request, double guess, double hold) {
     const auto clock = std::chrono::steady_clock::now();
-    const simulation::SimulationOptions options = resolveCapacityOptions(scenario, given, request.criteria);
     GraspCapacity c = makeHeader(options, request, scenario, "bisection");
     BisectionProtocol protocol;
     protocol.direction = request.direction;
@@ -255,10 +242,9 @@ GraspCapacity measureGraspCapacityBisection(const scenario::Scenario& scenario, 
     return c;
 }
 
-GraspCapacity measureGraspCapacityConstant(const scenario::Scenario& scenario, const simulation::SimulationOptions& given,
+GraspCapacity measureGraspCapacityConstant(const scenario::Scenario& scenario, const simulation::SimulationOptions& options,
                                            const GraspCapacityRequest& request, double load, double hold) {
     const auto clock = std::chrono::steady_clock::now();
-    const simulation::SimulationOptions options = resolveCapacityOptions(scenario, given, request.criteria);
     GraspCapacity c = makeHeader(options, request, scenario, "constant");
     c.load = load;
     c.hold = hold;

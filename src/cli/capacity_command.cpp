@@ -106,7 +106,7 @@ CapacityCommand::CapacityCommand(CLI::App& app) : options_(std::make_shared<Opti
     command_->add_option("--release-give", o.releaseGive,
                          "approx: the compliance release trigger's onset: hand the object back once the grasp's "
                          "compliance model says full contact would have let it give this far at the grasp goals, m "
-                         "(default 0.001, half the protocol's 2 mm slip onset, so that full contact decides the onset)");
+                         "(default 0.002, the model's slip onset)");
     command_->add_option("--release-at", o.releaseAt,
                          "approx: an extra release rule: compliance (release once the constraint's reaction reaches the "
                          "grasp's compliance-model limit on any axis side, or the model's onset along the load's own "

@@ -22,20 +22,6 @@ namespace graspsim::capacity {
 /// Delay of the load's start after the scenario's settle_time (s).
 constexpr double kLoadStartDelay = 0.1;
 
-/// The approximation's release give in a capacity run, as a fraction of the protocol's slip
-/// threshold (SlipCriteria::slip). The stiff constraint holds the object where it was, so after the
-/// hand-back full contact must first take up the grasp's give; handed back where the compliance
-/// model puts the onset itself (simulation::kDefaultReleaseGive), full contact reached the 2 mm
-/// up to 22 % later than from rest (the ball's −z, all give). Half leaves it the other half
-/// (docs/capacity.md, "The release give").
-constexpr double kCapacityReleaseGiveFraction = 0.5;
-
-/// The options a capacity run of `scenario` simulates with: `options`, and in approx mode with the
-/// compliance release trigger and no release give of its own, kCapacityReleaseGiveFraction times
-/// the slip threshold of `criteria` as the give.
-simulation::SimulationOptions resolveCapacityOptions(const scenario::Scenario& scenario, const simulation::SimulationOptions& options,
-                                                     const SlipCriteria& criteria);
-
 /// What to measure.
 struct GraspCapacityRequest {
     SimTK::UnitVec3 direction{0, -1, 0};  ///< in G
