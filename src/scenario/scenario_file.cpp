@@ -5,6 +5,7 @@
 #include "yaml_field.h"
 
 #include "graspsim/error.h"
+#include "graspsim/scenario/yaml_documents.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -36,19 +37,18 @@ std::string describeMark(const YAML::Mark& mark) {
 }  // namespace
 
 Scenario parseScenario(const std::string& yamlText, const std::string& source) {
-    std::vector<YAML::Node> documents;
+    YAML::Node document;
     try {
-        documents = YAML::LoadAll(yamlText);
+        document = YAML::Load(yamlText);
     } catch (const YAML::Exception& e) {
         throw InputError(source + ":" + describeMark(e.mark) + " malformed YAML (" + e.msg +
                          "); a scenario file is a YAML map of 'key: value' lines, nested by indentation");
     }
-    // YAML::Load would read the first document and silently drop the rest.
-    if (documents.size() > 1) {
-        throw InputError(source + ":" + describeMark(documents[1].Mark()) + " a second YAML document (after '---') is not " +
+    // YAML::Load reads the first document and silently drops the rest.
+    if (const int line = findSecondYamlDocument(yamlText)) {
+        throw InputError(source + ":" + std::to_string(line) + ": a second YAML document (after '---') is not " +
                          "accepted; a scenario file is one document");
     }
-    const YAML::Node document = documents.empty() ? YAML::Node() : documents.front();
     try {
         return readScenario(YamlField::makeRoot(document, source));
     } catch (const YAML::Exception& e) {

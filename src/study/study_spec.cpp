@@ -2,6 +2,7 @@
 
 #include "graspsim/error.h"
 #include "graspsim/scenario/scenario_file.h"
+#include "graspsim/scenario/yaml_documents.h"
 
 #include <yaml-cpp/yaml.h>
 
@@ -255,15 +256,16 @@ std::string toString(Sampling sampling) {
 }
 
 StudySpec parseStudy(const std::string& yamlText, const std::string& source) {
-    std::vector<YAML::Node> documents;
+    YAML::Node root;
     try {
-        documents = YAML::LoadAll(yamlText);
+        root = YAML::Load(yamlText);
     } catch (const YAML::Exception& e) {
         throw InputError(source + ":" + std::to_string(e.mark.line + 1) + ": malformed YAML (" + e.msg + ")");
     }
-    // YAML::Load would read the first document and silently drop the rest.
-    if (documents.size() > 1) reject(source, documents[1], "a second YAML document (after '---') is not accepted; a study file is one document");
-    const YAML::Node root = documents.empty() ? YAML::Node() : documents.front();
+    // YAML::Load reads the first document and silently drops the rest.
+    if (const int line = scenario::findSecondYamlDocument(yamlText)) {
+        throw InputError(source + ":" + std::to_string(line) + ": a second YAML document (after '---') is not accepted; a study file is one document");
+    }
     if (!root.IsMap()) throw InputError(source + ": a study file is a YAML map (name, base, axes, measures, ...)");
     std::set<std::string> seen;
     for (const auto& entry : root) {

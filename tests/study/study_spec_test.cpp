@@ -94,7 +94,7 @@ TEST(StudySpec, RepeatsAndUnusedKeysAreRefusedNamingTheLine) {
     EXPECT_EQ(errorOf(kHead + "axes: {mode: [full]}\nmeasures: [held]\nseed: 5\n"),
               "s.yaml:5: 'seed' is not accepted with grid sampling (it seeds random and latin)");
     EXPECT_EQ(errorOf(kHead + "axes: {mode: [full]}\nmeasures: [held]\n---\nname: u\n"),
-              "s.yaml:6: a second YAML document (after '---') is not accepted; a study file is one document");
+              "s.yaml:5: a second YAML document (after '---') is not accepted; a study file is one document");
     // The same keys once each read.
     EXPECT_NO_THROW(parseStudy(kHead + "axes: {subject.stature: [1.741, 1.75]}\nsampling: random\nsamples: 2\nseed: 5\n"
                                "measures: [held, wall_time_s]\n", "s.yaml"));
