@@ -17,6 +17,19 @@ double parseNumber(const std::string& text, const std::string& flag, const std::
     return value;
 }
 
+namespace {
+
+// A finite number > 0 in `unit`; empty: none.
+std::optional<double> parseFinitePositive(const std::string& text, const std::string& flag, const std::string& unit) {
+    if (text.empty()) return std::nullopt;
+    const std::string accepted = "a finite number > 0 (" + unit + ")";
+    const double value = parseNumber(text, flag, accepted);
+    if (!(value > 0 && std::isfinite(value))) throw InputError(flag + ": value " + text + " is not accepted; use " + accepted);
+    return value;
+}
+
+}  // namespace
+
 double parseAccuracy(const std::string& text) {
     if (text.empty()) return 0;
     const double value = parseNumber(text, "--accuracy", "a number in (0, 1)");
@@ -24,22 +37,8 @@ double parseAccuracy(const std::string& text) {
     return value;
 }
 
-double parseStepSize(const std::string& text) {
-    if (text.empty()) return 0;
-    const double value = parseNumber(text, "--step-size", "a finite number > 0 (s)");
-    if (!(value > 0 && std::isfinite(value))) {
-        throw InputError("--step-size: value " + text + " is not accepted; use a finite number > 0 (s)");
-    }
-    return value;
-}
+double parseStepSize(const std::string& text) { return parseFinitePositive(text, "--step-size", "s").value_or(0); }
 
-std::optional<double> parseReleaseGive(const std::string& text) {
-    if (text.empty()) return std::nullopt;
-    const double value = parseNumber(text, "--release-give", "a finite number > 0 (m)");
-    if (!(value > 0 && std::isfinite(value))) {
-        throw InputError("--release-give: value " + text + " is not accepted; use a finite number > 0 (m)");
-    }
-    return value;
-}
+std::optional<double> parseReleaseGive(const std::string& text) { return parseFinitePositive(text, "--release-give", "m"); }
 
 }  // namespace graspsim::cli
