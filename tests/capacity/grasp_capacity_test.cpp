@@ -128,7 +128,9 @@ TEST(GraspCapacity, ReleaseAtComplianceLimitsWellBeforeCapacityGivesFullContacts
     EXPECT_NE(approx.trace.releaseReason.find("reached the compliance"), std::string::npos) << approx.trace.releaseReason;
     ASSERT_LT(a.releaseLoad, 0.5 * f.slipOnsetLoad) << "the release must come well before capacity for full contact to decide";
     for (const CapacitySample& s : approx.trace.samples) {
-        if (s.time >= a.releaseTime) EXPECT_EQ(s.engaged, 0) << "engaged again at t = " << s.time << " s";
+        if (s.time >= a.releaseTime) {
+            EXPECT_EQ(s.engaged, 0) << "engaged again at t = " << s.time << " s";
+        }
     }
     EXPECT_NEAR(a.slipOnsetLoad, f.slipOnsetLoad, 0.1 * f.slipOnsetLoad);
 }
@@ -143,6 +145,31 @@ TEST(GraspCapacity, ReleaseAtComplianceLimitsWellBeforeCapacityGivesFullContacts
 // same rate, stepper and accuracy; bound 10 %, the criterion (measured +4.1 % on the ramp).
 TEST(GraspCapacity, ReleaseOnTheLoadedSideAlongBallXGivesFullContactsOnsetRampAndHeld) {
     expectBallCellAgrees(makeBallRamp(SimTK::Vec3(1, 0, 0), "x"), {"translation x -"}, 0.1);
+}
+
+// The planned key pinch loaded along +z: the key slips (0.75 N), pivots into the index finger's
+// crease and its contacts chatter, with steps of 0.5-0.9 us. The ramp stops at the stall with the
+// failure named (not hours later at its end), keeps the onset it measured, and its last sample is
+// where the failure says the stepper stalled.
+TEST(GraspCapacity, AStalledRampEndsThereWithTheFailureNamedAndKeepsItsOnset) {
+    const scenario::Scenario key = scenario::findBuiltinScenario("key-lateral");
+    simulation::SimulationOptions options;
+    options.accuracy = 3e-4;
+    options.integrator = simulation::IntegratorChoice::LinearlyImplicit;
+    GraspCapacityRequest request;
+    request.direction = SimTK::UnitVec3(0, 0, 1);
+    request.directionName = "z";
+    const GraspCapacity c = measureGraspCapacityRamp(key, options, request);
+    ASSERT_NE(c.trace.failure.find("the integrator stalled"), std::string::npos) << c.trace.failure;
+    EXPECT_TRUE(c.trace.figures.slipped);
+    EXPECT_FALSE(c.trace.figures.dropped);
+    ASSERT_FALSE(c.trace.samples.empty());
+    const double last = c.trace.samples.back().time;
+    EXPECT_LT(last, c.start + 4.0);  // before the ramp's end (maxDuration)
+    const std::string between = "between t = ";
+    const std::size_t at = c.trace.failure.find(between);
+    ASSERT_NE(at, std::string::npos);
+    EXPECT_NEAR(std::stod(c.trace.failure.substr(at + between.size())), last, 1e-9) << c.trace.failure;
 }
 
 }  // namespace
