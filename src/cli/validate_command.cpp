@@ -6,7 +6,9 @@
 
 #include "graspsim/error.h"
 #include "graspsim/scenario/scenario_file.h"
+#include "graspsim/validation/capacity_comparison.h"
 #include "graspsim/validation/plot_script.h"
+#include "graspsim/validation/validation_plan.h"
 #include "graspsim/validation/validation_report.h"
 #include "graspsim/simulation/setup_check.h"
 
@@ -37,7 +39,7 @@ ValidateCommand::ValidateCommand(CLI::App& app) : options_(std::make_shared<Opti
     command_->add_flag("!--no-plots", o.plots, "skip the plots (no Python needed)");
     command_->add_flag("!--no-capacity", o.capacity,
                        "skip the holding-capacity comparison (full contact against each approximation variant, nine loads "
-                       "per experiment; --quick: the -y force only)");
+                       "per experiment; without --experiment also the planned scenes against the default; --quick: the -y force only)");
     command_->add_option("--out", o.out, "output folder (default out/validation)");
     command_->add_flag("-q,--quiet", o.quiet, "no progress display (it appears only on a terminal anyway)");
 }
@@ -104,8 +106,14 @@ int ValidateCommand::run() const {
     progress.finish();
     if (o.capacity) {
         ProgressMeter capacityMeter("capacity", o.quiet);
+        validation::CapacityPlan capacityPlan;
+        capacityPlan.experiments = o.experiments.empty() && o.quick ? std::vector<std::string>{"ball-clutch"} : o.experiments;
+        capacityPlan.variants = o.modes;
+        capacityPlan.quick = o.quick;
+        // The planned scenes with the whole suite only: --experiment names the thesis scenes to run.
+        if (o.experiments.empty() && !o.quick) capacityPlan.defaultOnlyExperiments = validation::getPlannedExperiments();
         results.capacity = validation::runCapacityComparison(
-            {o.experiments.empty() && o.quick ? std::vector<std::string>{"ball-clutch"} : o.experiments, o.modes, o.quick},
+            capacityPlan,
             [&](std::size_t index, std::size_t count, const std::string& label) {
                 capacityMeter.update(static_cast<double>(index), static_cast<double>(count), label);
             });

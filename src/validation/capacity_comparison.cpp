@@ -9,6 +9,7 @@
 #include "graspsim/validation/validation_plan.h"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <functional>
 #include <map>
@@ -17,6 +18,9 @@
 namespace graspsim::validation {
 
 namespace {
+
+// The default approximation: the realization and attachment a user gets without options.
+const std::string kDefaultVariant = "approx-bushing-merged";
 
 struct Load {
     std::string name;
@@ -156,40 +160,68 @@ std::string formatTables(const std::vector<CapacityRow>& rows, const std::string
 
 }  // namespace
 
+namespace {
+
+using Announce = std::function<void(const std::string& label)>;
+
+// Every load of `experiment` on every variant: the ramps, full contact's first, then each
+// variant's constant load above full contact's capacity.
+void runExperiment(const std::string& experiment, const std::vector<std::string>& variants, const std::vector<Load>& loads,
+                   const CapacityPlan& plan, const Announce& announce, std::vector<CapacityRow>& rows) {
+    const scenario::Scenario scenario = scenario::findBuiltinScenario(experiment);
+    for (const Load& load : loads) {
+        const std::size_t full = rows.size();  // this load's full-contact row, run first
+        for (const std::string& variant : variants) {
+            announce(experiment + " " + load.name + " " + variant);
+            CapacityRow row{experiment, load.name, variant, {}, false, 0, {}, false, 0};
+            row.measured = capacity::measureGraspCapacityRamp(scenario, makeOptions(variant, plan), makeRequest(load));
+            const capacity::CapacityFigures& f = row.measured.trace.figures;
+            if (variant != "full" && rows[full].measured.trace.figures.slipped && f.slipped) {
+                row.hasReference = true;
+                const double reference = rows[full].measured.trace.figures.slipOnsetLoad;
+                row.relativeDifference = (f.slipOnsetLoad - reference) / reference;
+            }
+            rows.push_back(std::move(row));
+        }
+        for (std::size_t k = full; k < rows.size(); ++k) {
+            announce(experiment + " " + load.name + " " + rows[k].variant + " constant");
+            runOverload(scenario, load, plan, rows[full], rows[k]);
+        }
+    }
+}
+
+}  // namespace
+
 std::vector<CapacityRow> runCapacityComparison(const CapacityPlan& plan, const CapacityProgress& progress) {
     const std::vector<std::string> experiments = plan.experiments.empty() ? getThesisExperiments() : plan.experiments;
     const std::vector<std::string> variants = listVariants(plan);
+    const std::vector<std::string> defaultOnly{"full", kDefaultVariant};
     const std::vector<Load> loads = listLoads(plan.quick);
-    const std::size_t count = 2 * experiments.size() * loads.size() * variants.size();  // a ramp and a constant load each
+    // A ramp and a constant load each.
+    const std::size_t count = 2 * loads.size() * (experiments.size() * variants.size() + plan.defaultOnlyExperiments.size() * defaultOnly.size());
     std::size_t index = 0;
-    const auto announce = [&](const std::string& label) {
+    const Announce announce = [&](const std::string& label) {
         if (progress) progress(index, count, label);
         ++index;
     };
     std::vector<CapacityRow> rows;
-    for (const std::string& experiment : experiments) {
-        const scenario::Scenario scenario = scenario::findBuiltinScenario(experiment);
-        for (const Load& load : loads) {
-            const std::size_t full = rows.size();  // this load's full-contact row, run first
-            for (const std::string& variant : variants) {
-                announce(experiment + " " + load.name + " " + variant);
-                CapacityRow row{experiment, load.name, variant, {}, false, 0, {}, false, 0};
-                row.measured = capacity::measureGraspCapacityRamp(scenario, makeOptions(variant, plan), makeRequest(load));
-                const capacity::CapacityFigures& f = row.measured.trace.figures;
-                if (variant != "full" && rows[full].measured.trace.figures.slipped && f.slipped) {
-                    row.hasReference = true;
-                    const double reference = rows[full].measured.trace.figures.slipOnsetLoad;
-                    row.relativeDifference = (f.slipOnsetLoad - reference) / reference;
-                }
-                rows.push_back(std::move(row));
-            }
-            for (std::size_t k = full; k < rows.size(); ++k) {
-                announce(experiment + " " + load.name + " " + rows[k].variant + " constant");
-                runOverload(scenario, load, plan, rows[full], rows[k]);
-            }
-        }
-    }
+    for (const std::string& experiment : experiments) runExperiment(experiment, variants, loads, plan, announce, rows);
+    for (const std::string& experiment : plan.defaultOnlyExperiments) runExperiment(experiment, defaultOnly, loads, plan, announce, rows);
     return rows;
+}
+
+CapacityAgreement countCapacityAgreement(const std::vector<CapacityRow>& rows, const std::string& experiment,
+                                         const std::string& variant, double bound) {
+    CapacityAgreement agreement;
+    for (const CapacityRow& r : rows) {
+        if (r.experiment != experiment || r.variant != "full" || !r.measured.trace.figures.slipped) continue;
+        ++agreement.compared;
+        const auto same = std::find_if(rows.begin(), rows.end(), [&](const CapacityRow& v) {
+            return v.experiment == experiment && v.load == r.load && v.variant == variant;
+        });
+        if (same != rows.end() && same->hasReference && std::abs(same->relativeDifference) <= bound) ++agreement.within;
+    }
+    return agreement;
 }
 
 namespace {
@@ -227,6 +259,28 @@ std::string formatCapacityCsv(const std::vector<CapacityRow>& rows) {
     return csv.str();
 }
 
+namespace {
+
+// Per experiment and approximation variant, in the rows' order: how many of full contact's slip
+// onsets the variant's ramp came within 10 % of (issue 17's bound for the default).
+std::string formatAgreement(const std::vector<CapacityRow>& rows) {
+    std::vector<std::pair<std::string, std::string>> pairs;
+    for (const CapacityRow& r : rows) {
+        if (r.variant == "full" || std::find(pairs.begin(), pairs.end(), std::pair{r.experiment, r.variant}) != pairs.end()) continue;
+        pairs.emplace_back(r.experiment, r.variant);
+    }
+    std::ostringstream md;
+    md << "\n### Ramps within 10 % of full contact's slip onset\n\n| experiment | variant | loads within 10 % |\n|---|---|---|\n";
+    for (const auto& [experiment, variant] : pairs) {
+        const CapacityAgreement a = countCapacityAgreement(rows, experiment, variant, 0.1);
+        md << "| " << experiment << " | " << variant << (variant == kDefaultVariant ? " (default)" : "") << " | " << a.within << " of "
+           << a.compared << " |\n";
+    }
+    return md.str();
+}
+
+}  // namespace
+
 std::string formatCapacityMarkdown(const std::vector<CapacityRow>& rows) {
     if (rows.empty()) return "";
     std::ostringstream md;
@@ -235,9 +289,10 @@ std::string formatCapacityMarkdown(const std::vector<CapacityRow>& rows) {
           "parentheses; \"released first\": the approximation let go at or before that load, and the slip was then full "
           "contact's). approx-bushing-merged, the default, also releases at the compliance model's limits; the other "
           "variants are on the thesis's switch: -thesis is the default's box limits alone, -contact and -compliance "
-          "those limit models alone. "
-          "Every ramp's figures are in capacity.csv.\n";
+          "those limit models alone. The scenes `graspsim grasp plan` set up (not the thesis's) are compared on "
+          "the default only. Every ramp's figures are in capacity.csv.\n";
     md << formatTables(rows, "###", describeSlip);
+    md << formatAgreement(rows);
     md << "\n### Slip-onset times under a constant load above capacity\n\n"
        << "A constant load of " << formatBriefNumber(kOverloadFactor) << " x full contact's ramp slip onset (column \"constant load\"), "
        << "applied at once at the load's start and held " << formatBriefNumber(kOverloadHold)

@@ -63,6 +63,18 @@ const std::vector<std::string>& getThesisExperiments() {
     return names;
 }
 
+const std::vector<std::string>& getPlannedExperiments() {
+    static const std::vector<std::string> names = [] {
+        std::vector<std::string> planned;
+        for (const std::string& name : scenario::getBuiltinScenarioNames()) {
+            const std::vector<std::string>& thesis = getThesisExperiments();
+            if (std::find(thesis.begin(), thesis.end(), name) == thesis.end()) planned.push_back(name);
+        }
+        return planned;
+    }();
+    return names;
+}
+
 const std::vector<std::string>& getAvailableVariants() {
     static const std::vector<std::string> names{"full", "full-cvode", "full-rigid", "approx-bushing-merged", "approx-weld-merged",
                                                 "approx-bushing-multi"};

@@ -79,5 +79,32 @@ TEST(CapacityComparison, ConstantLoadTableGivesOnsetTimesAfterTheLoadsStart) {
     while (std::getline(lines, line)) EXPECT_EQ(countCommas(line), countCommas(header)) << line;
 }
 
+// The agreement count: a load counts where full contact slipped; a variant's ramp is within the
+// bound on either side (exactly 10 % is within), not where it did not slip or was not run.
+TEST(CapacityComparison, AgreementCountsLoadsWithinTheBoundOfFullContactsOnset) {
+    std::vector<CapacityRow> rows;
+    const auto add = [&](const std::string& load, double full, double approx) {
+        rows.push_back(makeRow("ball-tripod", load, "full", full));
+        rows.push_back(makeRow("ball-tripod", load, "approx-bushing-merged", approx));
+        if (full > 0 && approx > 0) {
+            rows.back().hasReference = true;
+            rows.back().relativeDifference = (approx - full) / full;
+        }
+    };
+    add("x", 10, 11);    // +10 %: within
+    add("-x", 10, 8.5);  // -15 %
+    add("y", 10, 9.5);   // -5 %: within
+    add("-y", 10, 0);    // the approximation did not slip
+    add("z", 0, 4);      // full contact did not slip: not compared
+    rows.push_back(makeRow("ball-tripod", "-z", "full", 10));  // the variant not run
+    const CapacityAgreement a = countCapacityAgreement(rows, "ball-tripod", "approx-bushing-merged", 0.1);
+    EXPECT_EQ(a.within, 2u);
+    EXPECT_EQ(a.compared, 5u);
+    EXPECT_EQ(countCapacityAgreement(rows, "ball-tripod", "approx-bushing-merged", 0.2).within, 3u);
+    EXPECT_EQ(countCapacityAgreement(rows, "can-power", "approx-bushing-merged", 0.1).compared, 0u);
+    EXPECT_NE(formatCapacityMarkdown(rows).find("| ball-tripod | approx-bushing-merged (default) | 2 of 5 |"), std::string::npos)
+        << formatCapacityMarkdown(rows);
+}
+
 }  // namespace
 }  // namespace graspsim::validation

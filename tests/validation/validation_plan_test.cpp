@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 
 using namespace graspsim;
@@ -86,4 +87,14 @@ TEST(ValidationPlan, EveryRunPassesTheSetUpCheck) {
             simulation::checkScenarioSetup(scenario::findBuiltinScenario(run.scenario), run.options);
         EXPECT_LE(check.initialPenetration, simulation::kMaxInitialPenetration) << run.id;
     }
+}
+
+// The planned scenes are the built-ins that are not the thesis's, each a scenario that loads.
+TEST(ValidationPlan, PlannedExperimentsAreTheBuiltinsBesideTheThesisScenes) {
+    const std::vector<std::string>& planned = validation::getPlannedExperiments();
+    EXPECT_EQ(planned, (std::vector<std::string>{"ball-tripod", "can-power", "key-lateral"}));
+    for (const std::string& name : validation::getThesisExperiments()) {
+        EXPECT_EQ(std::find(planned.begin(), planned.end(), name), planned.end()) << name;
+    }
+    for (const std::string& name : planned) EXPECT_NO_THROW(scenario::findBuiltinScenario(name)) << name;
 }

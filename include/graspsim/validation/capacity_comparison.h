@@ -45,6 +45,11 @@ struct CapacityRow {
 /// approximation variant (bushing, merged).
 struct CapacityPlan {
     std::vector<std::string> experiments;
+    /// Scenes compared on full contact and the default approximation only (approx-bushing-merged,
+    /// also when variants are named), after `experiments`: the planned grasps
+    /// (getPlannedExperiments()), whose capacities are not the thesis's and test that the default
+    /// holds beyond the scenes it was measured on.
+    std::vector<std::string> defaultOnlyExperiments;
     std::vector<std::string> variants;  ///< approximation variants ("approx-..."); others are skipped
     bool quick = false;
     /// Integrator relative accuracy of every ramp (both modes). Tighter than the scenarios' 1e-3:
@@ -76,6 +81,15 @@ std::string formatCapacityCsv(const std::vector<CapacityRow>& rows);
 /// The report's section: one table per experiment, loads down, variants across (slip onset,
 /// and the difference to full contact's in %); then one of the constant loads' slip-onset times.
 std::string formatCapacityMarkdown(const std::vector<CapacityRow>& rows);
+
+/// The number of loads of `experiment` in which `variant`'s ramp slipped within `bound` (a
+/// fraction: 0.1 is 10 %) of full contact's, and the number of loads full contact's ramp slipped in.
+struct CapacityAgreement {
+    std::size_t within = 0;
+    std::size_t compared = 0;
+};
+CapacityAgreement countCapacityAgreement(const std::vector<CapacityRow>& rows, const std::string& experiment,
+                                         const std::string& variant, double bound);
 
 /// The comparison's polar plots: writes each experiment's ramps per variant as
 /// `folder/capacity/EXPERIMENT/VARIANT/capacity.json` and `capacity.csv` (capacity_files.h), and

@@ -43,6 +43,9 @@ simulation::SimulationOptions makeVariantOptions(const std::string& variant, con
 
 /// The experiments of the thesis (chapter 5): "ball-clutch", "phone-pinch".
 const std::vector<std::string>& getThesisExperiments();
+/// The built-in scenarios that are not the thesis's: the grasps `graspsim grasp plan` set up
+/// ("ball-tripod", "can-power", "key-lateral"), in the built-in list's order.
+const std::vector<std::string>& getPlannedExperiments();
 /// Every variant this build can run: "full" first (compliant contact, Simbody's CPodes: the
 /// reference of the others), "full-cvode" (the CVODE reference integrator; run without
 /// perturbation only), "full-rigid" (rigid contact), then the approximation variants
