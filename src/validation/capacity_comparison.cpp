@@ -158,10 +158,6 @@ std::string formatTables(const std::vector<CapacityRow>& rows, const std::string
     return md.str();
 }
 
-}  // namespace
-
-namespace {
-
 using Announce = std::function<void(const std::string& label)>;
 
 // Every load of `experiment` on every variant: the ramps, full contact's first, then each
