@@ -174,6 +174,7 @@ GraspCapacity makeHeader(const simulation::SimulationOptions& options, const Gra
             std::snprintf(give, sizeof give, " (give %.3g mm)", 1e3 * *approx.releaseGive);
             c.realization += give;
         }
+        if (approx.handBack != simulation::ApproxHandBack::Engaged) c.realization += ", hand back " + simulation::toString(approx.handBack);
     }
     c.start = findLoadStart(scenario);
     c.criteria = request.criteria;

@@ -44,6 +44,7 @@ struct CapacityCommand::Options {
     std::string limits = "thesis";
     std::string releaseAt = "auto";
     std::string releaseGive;
+    std::string handBack = "engaged";
     std::string accuracy;
     std::string integrator = "auto";
     std::string stepSize;
@@ -107,6 +108,10 @@ CapacityCommand::CapacityCommand(CLI::App& app) : options_(std::make_shared<Opti
                          "approx: the compliance release trigger's onset: hand the object back once the grasp's "
                          "compliance model says full contact would have let it give this far at the grasp goals, m "
                          "(default 0.002, the model's slip onset)");
+    command_->add_option("--hand-back", o.handBack,
+                         "approx: the state full contact takes the object back in at a compliance-trigger release: engaged "
+                         "(default: as the constraint held it) or deflected (object and finger joints deflected as the "
+                         "grasp's compliance model says full contact would be under the carried load)");
     command_->add_option("--release-at", o.releaseAt,
                          "approx: an extra release rule: compliance (release once the constraint's reaction reaches the "
                          "grasp's compliance-model limit on any axis side, or the model's onset along the load's own "
@@ -189,7 +194,7 @@ CapacityCommand::Plan CapacityCommand::makePlan() const {
     plan.simulation.contact = simulation::parseContactModel(o.contact, "--contact");
     plan.simulation.mode = simulation::parseSimulationMode(o.mode, "--mode");
     checkApproxOnlyOptions(*command_, o.mode, {"--constraint", "--attach", "--release-slide", "--release-penetration", "--q-minimum",
-                                               "--limits-friction", "--limits", "--release-at", "--release-give"});
+                                               "--limits-friction", "--limits", "--release-at", "--release-give", "--hand-back"});
     plan.simulation.accuracy = parseAccuracy(o.accuracy);
     plan.simulation.integrator = simulation::parseIntegratorChoice(o.integrator, "--integrator");
     plan.simulation.stepSize = parseStepSize(o.stepSize);
@@ -208,6 +213,7 @@ CapacityCommand::Plan CapacityCommand::makePlan() const {
     plan.simulation.approx.limitModel = grasp::parseFrictionLimitModel(o.limits, "--limits");
     plan.simulation.approx.releaseTrigger = simulation::parseApproxReleaseTrigger(o.releaseAt, "--release-at");
     plan.simulation.approx.releaseGive = parseReleaseGive(o.releaseGive);
+    plan.simulation.approx.handBack = simulation::parseApproxHandBack(o.handBack, "--hand-back");
     if (o.method != "ramp" && o.method != "bisection" && o.method != "constant" && o.method != "compliance") {
         throw InputError("--method: value '" + o.method + "' is not accepted; use ramp, bisection, constant or compliance");
     }

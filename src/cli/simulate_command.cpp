@@ -40,6 +40,7 @@ struct SimulateCommand::Options {
     std::string limits = "thesis";
     std::string releaseAt = "auto";
     std::string releaseGive;
+    std::string handBack = "engaged";
     std::string out = "out";
     bool view = false;
     bool quiet = false;
@@ -80,6 +81,10 @@ SimulateCommand::SimulateCommand(CLI::App& app) : options_(std::make_shared<Opti
                          "approx: the compliance release trigger's onset: hand the object back once the grasp's "
                          "compliance model says full contact would have let it give this far at the grasp goals, m "
                          "(default 0.002, the model's slip onset)");
+    command_->add_option("--hand-back", o.handBack,
+                         "approx: the state full contact takes the object back in at a compliance-trigger release: engaged "
+                         "(default: as the constraint held it) or deflected (object and finger joints deflected as the "
+                         "grasp's compliance model says full contact would be under the carried load)");
     command_->add_option("--release-at", o.releaseAt,
                          "approx: an extra release rule: compliance (release once the constraint's reaction reaches the "
                          "grasp's compliance-model limit on any axis side, or the model's onset along the load's own "
@@ -150,7 +155,7 @@ simulation::SimulationOptions SimulateCommand::parseOptions() const {
     }
     options.mode = simulation::parseSimulationMode(o.mode, "--mode");
     checkApproxOnlyOptions(*command_, o.mode,
-                           {"--constraint", "--attach", "--q-threshold", "--q-minimum", "--limits", "--release-at", "--release-give"});
+                           {"--constraint", "--attach", "--q-threshold", "--q-minimum", "--limits", "--release-at", "--release-give", "--hand-back"});
     options.duration = parseDuration(o.duration);
     options.integrator = simulation::parseIntegratorChoice(o.integrator, "--integrator");
     options.accuracy = parseAccuracy(o.accuracy);
@@ -162,6 +167,7 @@ simulation::SimulationOptions SimulateCommand::parseOptions() const {
     options.approx.limitModel = grasp::parseFrictionLimitModel(o.limits, "--limits");
     options.approx.releaseTrigger = simulation::parseApproxReleaseTrigger(o.releaseAt, "--release-at");
     options.approx.releaseGive = parseReleaseGive(o.releaseGive);
+    options.approx.handBack = simulation::parseApproxHandBack(o.handBack, "--hand-back");
     if (options.approx.qThreshold > 0 && options.approx.qMinimum >= options.approx.qThreshold) {
         throw InputError("--q-minimum: value " + o.qMinimum + " is not accepted; Q_M must be below --q-threshold " + o.qThreshold);
     }

@@ -299,7 +299,7 @@ CompliantCapacity followLoad(const std::vector<CompliantContact>& contacts, cons
     const std::vector<Map63> slipMaps = makeSlipMaps(options, p_GO, maps);
     const Vector6 direction = reorderToForceFirst(direction_G);
     const double mu = options.mu, kineticMu = findKineticMu(options);
-    CompliantCapacity result{kInfinity, kInfinity, kInfinity, {}, {}};
+    CompliantCapacity result{kInfinity, kInfinity, kInfinity, {}, {}, Vector6::Zero()};
     Progress p = startProgress(contacts, mu);
     recordStartSliding(p, result);
     // Each piece ends at a contact's change of state (at most two per contact), at maxLoad, or
@@ -330,6 +330,7 @@ CompliantCapacity followLoad(const std::vector<CompliantContact>& contacts, cons
     }
     if (std::isfinite(result.ultimate)) result.onset = std::min(result.onset, result.ultimate);
     result.forces_G = p.forces;
+    result.displacement_G << p.displacement.tail<3>(), p.displacement.head<3>();
     return result;
 }
 

@@ -183,7 +183,7 @@ CompliantRamp runCompliantRamp(const std::vector<CompliantContact>& input, const
     loadRate << direction_G.tail<3>(), direction_G.head<3>();  // force first, as the wrench maps
     loadRate *= options.rate;
     CompliantRamp ramp;
-    ramp.capacity = CompliantCapacity{kInfinity, kInfinity, kInfinity, {}, {}};
+    ramp.capacity = CompliantCapacity{kInfinity, kInfinity, kInfinity, {}, {}, Eigen::Matrix<double, 6, 1>::Zero()};
     Vector6 displacement = Vector6::Zero();
     // The load from the step count, not summed, so that no rounding accumulates over the ramp.
     for (long k = 0;; ++k) {

@@ -38,6 +38,9 @@ ComplianceReleaseLimits calcComplianceLimits(const ApproximationContext& context
         result.upper[k] = limits.upper[k];
     }
     setDirectionModel(result, contacts, R_GM, p_GM, options);
+    for (const contact::ContactReport& r : reports) {
+        if (findPressingContact(r, {})) result.contactBodies.push_back(r.bodyA);  // findCompliantContacts' filter
+    }
     return result;
 }
 

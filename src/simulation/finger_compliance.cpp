@@ -1,5 +1,6 @@
 #include "graspsim/simulation/finger_compliance.h"
 
+#include "graspsim/error.h"
 #include "graspsim/model/model_description.h"
 #include "graspsim/simulation/grasp_scene.h"
 #include "graspsim/system/simtk_conversion.h"
@@ -81,6 +82,19 @@ Eigen::Matrix3d FingerCompliance::calcCompliance(const SimTK::State& state, cons
     model_.getSystem().realize(state, SimTK::Stage::Position);
     const Eigen::MatrixXd J = calcJacobian(state, body, p_G);
     return J * jointStiffness.ldlt().solve(J.transpose());
+}
+
+Eigen::VectorXd FingerCompliance::calcJointDeflection(const SimTK::State& state, const Eigen::MatrixXd& jointStiffness,
+                                                      const std::vector<std::string>& bodies, const std::vector<SimTK::Vec3>& points_G,
+                                                      const std::vector<Eigen::Vector3d>& forceChanges_G) const {
+    if (bodies.size() != points_G.size() || bodies.size() != forceChanges_G.size()) {
+        throw InputError("finger joint deflection: " + std::to_string(bodies.size()) + " bodies, " + std::to_string(points_G.size()) +
+                         " points and " + std::to_string(forceChanges_G.size()) + " force changes; they must be as many");
+    }
+    model_.getSystem().realize(state, SimTK::Stage::Position);
+    Eigen::VectorXd torque = Eigen::VectorXd::Zero(Eigen::Index(fingerMobilizers_.size()));
+    for (std::size_t i = 0; i < bodies.size(); ++i) torque -= calcJacobian(state, bodies[i], points_G[i]).transpose() * forceChanges_G[i];
+    return jointStiffness.ldlt().solve(torque);
 }
 
 std::vector<grasp::CompliantContact> FingerCompliance::findCompliantContacts(const SimTK::State& state,

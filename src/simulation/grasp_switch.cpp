@@ -3,6 +3,7 @@
 #include "graspsim/error.h"
 #include "graspsim/grasp/limited_bushing_law.h"
 #include "graspsim/simulation/compliance_release.h"
+#include "graspsim/simulation/deflected_hand_back.h"
 #include "graspsim/simulation/contact_grasp_quality.h"
 #include "graspsim/simulation/multi_attachment_switch.h"
 #include "graspsim/system/simtk_conversion.h"
@@ -450,15 +451,25 @@ SimTK::Vec6 GraspSwitch::findReactionInO(const SimTK::State& state) const {
     return reaction;
 }
 
+// A deflected hand-back only where the compliance limits are what was reached: at the other
+// rules' releases the constraint may have slid, and its reaction is not the load the model meant.
 void GraspSwitch::release(SimTK::State& state, double quality, const std::string& reason) const {
     const SimTK::MultibodySystem& system = context_.model.getSystem();
     system.realize(state, SimTK::Stage::Velocity);
     const SimTK::Vec3 v_before = context_.object.getBodyOriginVelocity(state);
+    const GraspSwitchRecord& record = getRecord(state);
+    std::optional<HandBackDeflection> deflection;
+    if (options_.handBack == ApproxHandBack::Deflected && record.releaseLimits &&
+        !findComplianceLimitReached(findReactionInO(state), *record.releaseLimits).empty()) {
+        deflection = calcHandBackDeflection(context_, state, *record.releaseLimits, findReactionInO(state));
+    }
     context_.attachment.release(state);
     if (!multi_) setFingersMerged(state, false);  // multi never merges them
     context_.contacts.setPairsEnabled(state, context_.contacts.findAllPairIndices(), true);
+    if (deflection) applyHandBackDeflection(context_, state, getRecord(state).X_HO_engaged, *deflection);
     const double velocityJump = findVelocityJump(state, v_before);
-    updRecord(state).events.push_back({state.getTime(), GraspEventKind::Release, quality, reason, velocityJump});
+    const std::string text = deflection ? reason + describeHandBackDeflection(*deflection) : reason;
+    updRecord(state).events.push_back({state.getTime(), GraspEventKind::Release, quality, text, velocityJump});
 }
 
 // The object's velocity as the integrator will restart from it: realized after the switch and

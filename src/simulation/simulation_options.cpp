@@ -70,6 +70,14 @@ std::string toString(ApproxReleaseTrigger trigger) {
     }
     return "compliance";
 }
+ApproxHandBack parseApproxHandBack(const std::string& text, const std::string& source) {
+    if (text == "engaged") return ApproxHandBack::Engaged;
+    if (text == "deflected") return ApproxHandBack::Deflected;
+    throw InputError(source + ": hand-back '" + text + "' is not accepted; use engaged or deflected");
+}
+
+std::string toString(ApproxHandBack handBack) { return handBack == ApproxHandBack::Engaged ? "engaged" : "deflected"; }
+
 std::string toString(SimulationMode mode) { return mode == SimulationMode::Full ? "full" : "approx"; }
 
 void checkApproxAttach(const scenario::Scenario& scenario, const SimulationOptions& options) {
@@ -162,6 +170,10 @@ ApproxOptions resolveApproxOptions(const ApproxOptions& given, const scenario::A
     }
     if (options.releaseGive && options.releaseTrigger != ApproxReleaseTrigger::Compliance) {
         throw InputError("--release-give: only the compliance release trigger uses it (--release-at compliance, or auto "
+                         "on the merged bushing); this run's is " + toString(options.releaseTrigger));
+    }
+    if (options.handBack == ApproxHandBack::Deflected && options.releaseTrigger != ApproxReleaseTrigger::Compliance) {
+        throw InputError("--hand-back: 'deflected' needs the compliance release trigger (--release-at compliance, or auto "
                          "on the merged bushing); this run's is " + toString(options.releaseTrigger));
     }
     if (options.qThreshold > 0 && options.qMinimum >= options.qThreshold) {

@@ -147,6 +147,44 @@ TEST(GraspCapacity, ReleaseOnTheLoadedSideAlongBallXGivesFullContactsOnsetRampAn
     expectBallCellAgrees(makeBallRamp(SimTK::Vec3(1, 0, 0), "x"), {"translation x -"}, 0.1);
 }
 
+// The deflected hand-back on the ball tripod's -y, where full contact's ball has given 1.9 mm and
+// rolled 0.33 rad by the load of the release (0.72 N). Oracle: full contact's own ramp (the second
+// method) at the first sample after the release: handed back engaged, the object is where the
+// bushing held it (0.01 mm, 0.19 mm at the next sample); deflected, the compliance model's state must put it nearer to full
+// contact's give in slip and in rotation (measured 1.17 mm and 0.26 rad), and full contact must
+// keep it there rather than let it spring back (within 20 % 0.1 s later).
+TEST(GraspCapacity, DeflectedHandBackStartsFullContactNearerItsOwnGiveOnTheTripod) {
+    const scenario::Scenario tripod = scenario::findBuiltinScenario("ball-tripod");
+    GraspCapacityRequest request;
+    request.direction = SimTK::UnitVec3(0, -1, 0);
+    request.directionName = "-y";
+    request.maxRampDuration = 1.4;
+    simulation::SimulationOptions options;
+    options.integrator = simulation::IntegratorChoice::LinearlyImplicit;
+    options.accuracy = 3e-4;
+    const GraspCapacity full = measureGraspCapacityRamp(tripod, options, request);
+    options.mode = simulation::SimulationMode::Approx;
+    const GraspCapacity engaged = measureGraspCapacityRamp(tripod, options, request);
+    options.approx.handBack = simulation::ApproxHandBack::Deflected;
+    const GraspCapacity deflected = measureGraspCapacityRamp(tripod, options, request);
+    ASSERT_TRUE(deflected.trace.figures.released);
+    EXPECT_NE(deflected.trace.releaseReason.find("handed back deflected by"), std::string::npos) << deflected.trace.releaseReason;
+    const double t = deflected.trace.figures.releaseTime;
+    const auto sampleAfter = [](const GraspCapacity& c, double time) {
+        for (const CapacitySample& s : c.trace.samples) {
+            if (s.time > time) return s;
+        }
+        return CapacitySample{};
+    };
+    const CapacitySample f = sampleAfter(full, t), e = sampleAfter(engaged, t), d = sampleAfter(deflected, t);
+    ASSERT_GT(f.time, 0);
+    EXPECT_LT(e.slip, 0.25 * f.slip);  // still near where the bushing held it
+    EXPECT_LT(std::abs(d.slip - f.slip), 0.5 * std::abs(e.slip - f.slip)) << d.slip << " " << f.slip;
+    EXPECT_LT(std::abs(d.rotation - f.rotation), 0.5 * std::abs(e.rotation - f.rotation)) << d.rotation << " " << f.rotation;
+    const CapacitySample later = sampleAfter(deflected, d.time + 0.1);
+    EXPECT_NEAR(later.slip, d.slip, 0.2 * d.slip);
+}
+
 // The planned key pinch loaded along +z: the key slips (0.75 N), pivots into the index finger's
 // crease and its contacts chatter, with steps of 0.5-0.9 us. The ramp stops at the stall with the
 // failure named (not hours later at its end), keeps the onset it measured, and its last sample is

@@ -91,6 +91,26 @@ TEST(CompliantGraspCapacity, PinchAxisLoadUnloadsOneFinger) {
     EXPECT_TRUE(std::isinf(c.ultimate));
 }
 
+// Followed to a load below the first event, the model ends where its springs put the object:
+// along the pinch axis F / (k_A + k_B), across it F / (k_t,A' + k_t,B') with each finger's
+// tangential chain 1 / (1 / k_t + c), and no rotation (the pinch is symmetric about its centre).
+TEST(CompliantGraspCapacity, DisplacementAtTheEndLoadIsTheSpringsDeflection) {
+    const double N = 5, kn = 4000, c = 2e-4, F = 0.5;
+    const double kNormal = 1 / (1 / kn + c), kTangential = 1 / (1 / (2.0 / 3.0 * kn) + c);
+    CompliantCapacityOptions options;
+    options.maxLoad = 1;
+    const auto pinch = makePinch(N, kn, kn, c, c);
+    const CompliantCapacity along = calcCompliantCapacityAlong(pinch, Eigen::Vector3d::Zero(), force({F, 0, 0}), options);
+    Vector6 expected = Vector6::Zero();
+    expected[3] = F / (2 * kNormal);
+    EXPECT_LT((along.displacement_G - expected).norm(), 1e-12) << along.displacement_G.transpose();
+    const CompliantCapacity across = calcCompliantCapacityAlong(pinch, Eigen::Vector3d::Zero(), force({0, 0, -F}), options);
+    expected.setZero();
+    expected[5] = -F / (2 * kTangential);
+    EXPECT_LT((across.displacement_G - expected).norm(), 1e-12) << across.displacement_G.transpose();
+    for (std::size_t i = 0; i < 2; ++i) EXPECT_NEAR(across.forces_G[i].z(), F / 2, 1e-12);  // balancing the load
+}
+
 TEST(CompliantGraspCapacity, NoTorqueAboutThePinchAxis) {
     CompliantCapacityOptions options;
     const CompliantCapacity c =

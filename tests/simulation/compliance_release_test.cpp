@@ -173,6 +173,25 @@ TEST(GraspSwitchRelease, AutomaticIsComplianceOnTheMergedBushingOnly) {
     EXPECT_EQ(simulation::resolveApproxOptions(options, spec).releaseTrigger, simulation::ApproxReleaseTrigger::None);
 }
 
+// The deflected hand-back is opt-in and needs the compliance trigger, which resolves from auto on
+// the merged bushing only.
+TEST(GraspSwitchRelease, DeflectedHandBackNeedsTheComplianceTrigger) {
+    EXPECT_EQ(simulation::parseApproxHandBack("deflected", "--hand-back"), simulation::ApproxHandBack::Deflected);
+    EXPECT_EQ(simulation::ApproxOptions{}.handBack, simulation::ApproxHandBack::Engaged);
+    EXPECT_THROW(simulation::parseApproxHandBack("bent", "--hand-back"), InputError);
+    const scenario::ApproximationSpec spec;
+    simulation::ApproxOptions options;
+    options.handBack = simulation::ApproxHandBack::Deflected;
+    EXPECT_NO_THROW(simulation::resolveApproxOptions(options, spec));
+    options.constraint = simulation::ApproxConstraint::Weld;
+    try {
+        simulation::resolveApproxOptions(options, spec);
+        ADD_FAILURE() << "deflected hand-back accepted on the weld";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("--hand-back"), std::string::npos) << e.what();
+    }
+}
+
 // The inside test of the engage rule and the trigger, on a hand-made wrench: a side is reached
 // at its own limit (the upper for a positive component, the lower for a negative one).
 TEST(GraspSwitchRelease, FindAxisAtLimitUsesEachSide) {

@@ -2,6 +2,7 @@
 // null space's effect on it.
 #include "graspsim/simulation/finger_compliance.h"
 
+#include "graspsim/error.h"
 #include "graspsim/model/model_description.h"
 #include "graspsim/scenario/scenario_file.h"
 #include "graspsim/simulation/grasp_experiment.h"
@@ -85,6 +86,36 @@ TEST(FingerCompliance, IkNullSpaceLeavesTheEndEffectorsComplianceAndSoftensTheRe
                                   fingers.calcCompliance(state, Kplain, "index_middle", p_middle);
     EXPECT_GT(Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(extra).eigenvalues().maxCoeff(), 1e-4);  // m/N, soft
     EXPECT_GT(Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(extra).eigenvalues().minCoeff(), -1e-12);
+}
+
+// The joints bent by calcJointDeflection for a force change df at a fingertip point move that
+// material point by -C_f df (the finger gives way before the push it takes up), measured by
+// setting the joint angles and reading the point's position: the Jacobian route and the moved
+// model agree to first order (df small: 0.05 N).
+TEST(FingerCompliance, JointDeflectionMovesThePointByMinusTheComplianceTimesTheForceChange) {
+    const scenario::Scenario pinch = scenario::findBuiltinScenario("phone-pinch");
+    GraspExperiment experiment(pinch, SimulationOptions{});
+    const GraspScene& scene = experiment.getScene();
+    const SimTK::State state = experiment.makeInitialState();
+    const FingerCompliance fingers = makeFingerCompliance(scene);
+    const Eigen::MatrixXd K = fingers.calcJointStiffness(state, true);
+    const SimTK::MobilizedBody& segment = scene.getModel().getMobilizedBody("index_distal");
+    const SimTK::Vec3 p_B(0.003, 0.008, -0.002);
+    const SimTK::Vec3 p_G = segment.findStationLocationInGround(state, p_B);
+    const Eigen::Vector3d df(0.03, -0.04, 0.02);
+    const Eigen::VectorXd dq = fingers.calcJointDeflection(state, K, {"index_distal"}, {p_G}, {df});
+    SimTK::State moved = state;
+    const std::vector<SimTK::MobilizedBodyIndex>& joints = scene.getFingerMobilizers();
+    for (std::size_t k = 0; k < joints.size(); ++k) {
+        const SimTK::MobilizedBody& joint = scene.getModel().getMatter().getMobilizedBody(joints[k]);
+        joint.setOneQ(moved, 0, joint.getOneQ(moved, 0) + dq[Eigen::Index(k)]);
+    }
+    scene.getSystem().realize(moved, SimTK::Stage::Position);
+    const SimTK::Vec3 u = segment.findStationLocationInGround(moved, p_B) - p_G;
+    const Eigen::Vector3d expected = -fingers.calcCompliance(state, K, "index_distal", p_G) * df;
+    EXPECT_GT(expected.norm(), 1e-5);
+    EXPECT_LT((Eigen::Vector3d(u[0], u[1], u[2]) - expected).norm(), 0.02 * expected.norm());
+    EXPECT_THROW(fingers.calcJointDeflection(state, K, {"index_distal"}, {p_G, p_G}, {df}), InputError);
 }
 
 }  // namespace

@@ -100,6 +100,9 @@ struct CompliantCapacity {
     std::vector<CompliantCapacityEvent> events;
     /// The contact forces on the object at the ultimate load (or at maxLoad), in G (N).
     std::vector<Eigen::Vector3d> forces_G;
+    /// The object's displacement from the load's start to the same load: rotation (rad, small,
+    /// as a rotation vector) then translation of the point at p_GO (m), both in G.
+    Eigen::Matrix<double, 6, 1> displacement_G = Eigen::Matrix<double, 6, 1>::Zero();
 };
 
 /// Shares the contacts' total tangential stiffness in proportion to their normal forces:

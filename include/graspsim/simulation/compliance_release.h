@@ -30,6 +30,9 @@ struct ComplianceReleaseLimits {
     /// in N, finger compliances in m/N, all along O's axes), for the load's own direction
     /// (findDirectionAtLimit); empty: the per-axis sides alone.
     std::vector<grasp::CompliantContact> contacts_O;
+    /// The finger segment (contact report's body a) of each of contacts_O, in the same order;
+    /// empty where calcComplianceLimits did not fill contacts_O.
+    std::vector<std::string> contactBodies;
     /// Where the model measures the slip (m, from O's origin, along O's axes); empty: the contacts.
     std::vector<Eigen::Vector3d> slipPoints_O;
     SimTK::Vec6 w0{0};  ///< the contacts' wrench at engagement (frame and order as the sides)

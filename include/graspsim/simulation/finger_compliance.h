@@ -79,6 +79,16 @@ public:
     Eigen::Matrix3d calcCompliance(const SimTK::State& state, const Eigen::MatrixXd& jointStiffness,
                                    const std::string& body, const SimTK::Vec3& p_G) const;
 
+    /// The finger joints' deflection dq = -K_q^-1 sum_i J_i^T df_i (rad, over the finger mobilizers
+    /// in order) that takes up the changes `forceChanges_G` (N, in G) of the forces the fingers
+    /// exert on the object at the material points of segments `bodies` at `points_G` (m, in G): the
+    /// object pushes back on each finger with -df_i. K_q is `jointStiffness` (calcJointStiffness).
+    /// Realizes `state` to Stage::Position.
+    /// @throws graspsim::InputError when the three lists differ in length.
+    Eigen::VectorXd calcJointDeflection(const SimTK::State& state, const Eigen::MatrixXd& jointStiffness,
+                                        const std::vector<std::string>& bodies, const std::vector<SimTK::Vec3>& points_G,
+                                        const std::vector<Eigen::Vector3d>& forceChanges_G) const;
+
     /// The compliance model's contacts, one per report with a positive normal force and depth, in
     /// the reports' order (Stage::Velocity is realized here).
     std::vector<grasp::CompliantContact> findCompliantContacts(const SimTK::State& state,

@@ -67,6 +67,14 @@ enum class ApproxReleaseTrigger {
     Compliance
 };
 
+/// In which state full contact takes the object back at a release of the compliance trigger.
+enum class ApproxHandBack {
+    Engaged,  ///< as the constraint holds it: the engaged pose, fingers at their engagement angles
+    /// deflected as the grasp's compliance model says full contact would be under the load the
+    /// constraint carried (deflected_hand_back.h): object displaced, finger joints bent
+    Deflected
+};
+
 /// Settings of the grasp switch of `--mode approx` (thesis Figure 4.1; see grasp_switch.h).
 /// Defaults are this project's choices, documented where they are used.
 struct ApproxOptions {
@@ -129,6 +137,9 @@ struct ApproxOptions {
     /// scenes' 18 capacity cells within 10 % of full contact, but not the can, and the phone
     /// chatters on CPodes).
     std::optional<double> releaseGive;
+    /// The state full contact starts from at a compliance-trigger release (Engaged, the default;
+    /// Deflected needs the compliance trigger).
+    ApproxHandBack handBack = ApproxHandBack::Engaged;
 };
 
 /// ApproxOptions::releaseGive's default (m): the model's slip onset, the capacity protocol's 2 mm.
@@ -172,6 +183,9 @@ std::string toString(ApproxAttach attach);
 /// Parses "auto", "none" or "compliance". @throws graspsim::InputError naming `source`, the value and the choices.
 ApproxReleaseTrigger parseApproxReleaseTrigger(const std::string& text, const std::string& source);
 std::string toString(ApproxReleaseTrigger trigger);
+/// Parses "engaged" or "deflected". @throws graspsim::InputError naming `source`, the value and the choices.
+ApproxHandBack parseApproxHandBack(const std::string& text, const std::string& source);
+std::string toString(ApproxHandBack handBack);
 
 /// Whether the scene of `scenario` supports `options.approx.attach` in approx mode: multi needs
 /// the bushing realization, and every goal end-effector on a body with contact geometry; and
