@@ -21,6 +21,7 @@
 #include <filesystem>
 #include <chrono>
 #include <iostream>
+#include <sstream>
 
 namespace graspsim::cli {
 
@@ -209,8 +210,28 @@ results::RunProvenance makeRunProvenance(const std::vector<std::string>& command
         run.run["q_minimum_n"] = formatOverride(options.approx.qMinimum);
         run.run["limits"] = grasp::toString(options.approx.limitModel);
         run.run["release_at"] = simulation::toString(simulation::resolveApproxOptions(options.approx, scenario.approximation).releaseTrigger);
+        if (options.approx.handBack != simulation::ApproxHandBack::Engaged) run.run["hand_back"] = simulation::toString(options.approx.handBack);
     }
     return run;
+}
+
+// Held and the drift after settling, or why they tell nothing: a run that ends while the object is
+// still fixed for the approach has tested no hold, and one that ends before the settle time has
+// no drift after it.
+std::string describeHold(const scenario::Scenario& scenario, const simulation::SimulationSummary& s) {
+    std::ostringstream text;
+    const double approach = scenario.controller.approachTime, settle = scenario.simulation.settleTime;
+    if (s.simTime < approach) {
+        text << "hold not tested (the object is fixed for the approach until " << approach << " s)";
+        return text.str();
+    }
+    text << "held " << (s.held ? "yes" : "no");
+    if (s.simTime < settle) {
+        text << " (the run ended before the settle time, " << settle << " s: no drift after settling measured)";
+    } else {
+        text << ", object moved " << s.objectDisplacement * 1000 << " mm after settling";
+    }
+    return text.str();
 }
 
 }  // namespace
@@ -239,9 +260,8 @@ int SimulateCommand::run(const std::vector<std::string>& commandLine) const {
     const simulation::SimulationSummary& s = result.summary;
     if (o.view) std::cout << "replay written to " << viewer::writeReplayPage(o.out) << ": open it in a web browser\n";
     std::cout << scenario.name << " (" << simulation::toString(s.contact) << ", " << simulation::toString(s.mode) << ", perturbation " << s.perturbation
-              << "): " << s.simTime << " s simulated in " << s.wallTime << " s, " << s.steps << " steps, held "
-              << (s.held ? "yes" : "no") << ", object moved " << s.objectDisplacement * 1000 << " mm after settling; "
-              << "results in " << o.out << "\n";
+              << "): " << s.simTime << " s simulated in " << s.wallTime << " s, " << s.steps << " steps, "
+              << describeHold(scenario, s) << "; results in " << o.out << "\n";
     if (s.mode == simulation::SimulationMode::Approx) {
         std::cout << "approximation (" << simulation::toString(options.approx.constraint) << ", "
                   << simulation::toString(options.approx.attach) << "): " << (s.engaged ? "engaged at t = " + std::to_string(s.engageTime) + " s" : "never engaged")

@@ -85,6 +85,14 @@ TEST_F(SimulateCommand, ShortRunWritesTheSummary) {
                             "\"object_displacement_m\"", "\"max_penetration_m\"", "\"initial_penetration_m\"", "\"held\"", "\"complete\": true"}) {
         EXPECT_NE(summary.find(key), std::string::npos) << key;
     }
+    // 0.2 s ends inside the 0.5 s approach, when the phone is still fixed: no hold to report.
+    EXPECT_NE(a.out.find("hold not tested (the object is fixed for the approach until 0.5 s)"), std::string::npos) << a.out;
+    EXPECT_EQ(a.out.find("held yes"), std::string::npos) << a.out;
+    // 0.7 s ends after the release but before the 1 s settle time: held, with no drift to report.
+    const RunResult b = run("simulate ball-clutch --duration 0.7 -q --out " + (dir_ / "unsettled").string());
+    ASSERT_EQ(b.exitCode, 0) << b.err;
+    EXPECT_NE(b.out.find("(the run ended before the settle time, 1 s: no drift after settling measured)"), std::string::npos) << b.out;
+    EXPECT_EQ(b.out.find("mm after settling"), std::string::npos) << b.out;
 }
 
 // The OpenSim files beside the CSVs: motion.mot has a row per trajectory.csv row and a column per
