@@ -8,6 +8,7 @@
 #include "graspsim/simulation/grasp_switch.h"
 #include "graspsim/simulation/rigid_stepping.h"
 #include "graspsim/simulation/scene_stepper.h"
+#include "graspsim/simulation/stall_guard.h"
 
 #include <algorithm>
 #include <chrono>
@@ -20,14 +21,6 @@ namespace graspsim::capacity {
 namespace {
 
 constexpr double kGravity = 9.81;  // m/s^2, for the default rate only
-
-// A stepper whose mean step over an advance of at least kStallWindow falls below this has
-// stalled: contacts that chatter (planned key-lateral, loaded in -x, z or about y: once the key
-// pivots into the index finger's crease, mean steps of 0.5-0.9 us) would hold a ramp for hours.
-// The ramp's trace ends there with the failure named, as on an integrator failure. The thesis
-// scenes', the tripod's and the can's ramps never trigger it (their figures are the same with it).
-constexpr double kStalledMeanStep = 1e-6;  // s
-constexpr double kStallWindow = 1e-3;      // s
 
 // The scene and its stepper: the options' integrator for compliant contact (scene_stepper.h), the
 // rigid stepper for rigid.
@@ -106,21 +99,12 @@ private:
             } catch (const integration::FixedStepTooLongError& e) {
                 throw simulation::describeFixedStepTooLong(scene_.getScenario(), options_, e);
             }
-            checkNotStalled(from, made_.stepper->getStatistics().steps - stepsBefore);
+            simulation::checkNotStalled("capacity", from, getState().getTime(), made_.stepper->getStatistics().steps - stepsBefore);
         }
         const SimTK::State& s = getState();
         for (int k = 0; k < s.getNQ(); ++k) {
             if (!std::isfinite(s.getQ()[k])) throw NumericalError("capacity: non-finite state at t = " + std::to_string(s.getTime()) + " s");
         }
-    }
-
-    void checkNotStalled(double from, long steps) const {
-        const double to = getState().getTime(), advance = to - from;
-        if (advance < kStallWindow || steps <= 0 || advance / static_cast<double>(steps) >= kStalledMeanStep) return;
-        char text[256];
-        std::snprintf(text, sizeof text, "capacity: the integrator stalled between t = %.6g and %.6g s: %ld steps, a mean step of %.3g s "
-                      "(below %g s; contacts chattering)", from, to, steps, advance / static_cast<double>(steps), kStalledMeanStep);
-        throw NumericalError(text);
     }
 
     void releaseObject() {

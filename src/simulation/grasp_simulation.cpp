@@ -6,6 +6,7 @@
 #include "graspsim/simulation/grasp_experiment.h"
 #include "graspsim/simulation/rigid_stepping.h"
 #include "graspsim/simulation/scene_stepper.h"
+#include "graspsim/simulation/stall_guard.h"
 
 #include <algorithm>
 #include <chrono>
@@ -177,7 +178,10 @@ void stepThroughSamples(const GraspExperiment& experiment, AnyStepper& stepper, 
                         std::string& lastEvent) {
     const GraspScene& scene = experiment.getScene();
     for (double t : makeSampleTimes(experiment, duration)) {
+        const double from = stepper.getState().getTime();
+        const long stepsBefore = countSteps(stepper);
         stepper.stepTo(t);
+        checkNotStalled("simulation", from, stepper.getState().getTime(), countSteps(stepper) - stepsBefore);
         checkFinite(stepper.getState(), lastEvent);
         phases.mark(stepper.getState(), countSteps(stepper));
         if (std::abs(t - scene.getReleaseTime()) < 1e-12) {
