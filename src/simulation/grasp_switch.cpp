@@ -3,8 +3,8 @@
 #include "graspsim/error.h"
 #include "graspsim/grasp/limited_bushing_law.h"
 #include "graspsim/simulation/compliance_release.h"
-#include "graspsim/simulation/deflected_hand_back.h"
 #include "graspsim/simulation/contact_grasp_quality.h"
+#include "graspsim/simulation/deflected_hand_back.h"
 #include "graspsim/simulation/multi_attachment_switch.h"
 #include "graspsim/system/simtk_conversion.h"
 
