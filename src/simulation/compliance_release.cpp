@@ -110,16 +110,21 @@ Eigen::Matrix<double, 6, 1> findLoadBeyondEngagement(const SimTK::Vec6& wrench, 
 
 // The model's onset along `load` in multiples of it, followed up to `maxLoad` (infinite beyond).
 double findOnsetAlong(const Eigen::Matrix<double, 6, 1>& load, const ComplianceReleaseLimits& limits, double maxLoad) {
+    return followDirectionModel(limits, load, maxLoad).onset;
+}
+
+}  // namespace
+
+grasp::CompliantCapacity followDirectionModel(const ComplianceReleaseLimits& limits, const Eigen::Matrix<double, 6, 1>& load,
+                                              double maxLoad) {
     grasp::CompliantCapacityOptions options;
     options.mu = limits.mu;
     options.kineticMu = limits.kineticMu;
     options.slipPoints_G = limits.slipPoints_O;  // O's origin as the model's origin: O is its G here
     options.maxLoad = maxLoad;
     options.slipDistance = limits.slipDistance;
-    return grasp::calcCompliantCapacityAlong(limits.contacts_O, Eigen::Vector3d::Zero(), load, options).onset;
+    return grasp::calcCompliantCapacityAlong(limits.contacts_O, Eigen::Vector3d::Zero(), load, options);
 }
-
-}  // namespace
 
 std::string findDirectionAtLimit(const SimTK::Vec6& wrench, const ComplianceReleaseLimits& limits) {
     if (limits.contacts_O.empty()) return {};

@@ -11,22 +11,6 @@
 
 namespace graspsim::simulation {
 
-namespace {
-
-// The model followed along the carried load to the load itself (multiples of it), with the
-// friction and slip points of the limits.
-grasp::CompliantCapacity followCarriedLoad(const ComplianceReleaseLimits& limits, const Eigen::Matrix<double, 6, 1>& load) {
-    grasp::CompliantCapacityOptions options;
-    options.mu = limits.mu;
-    options.kineticMu = limits.kineticMu;
-    options.slipPoints_G = limits.slipPoints_O;  // O's origin as the model's origin: O is its G here
-    options.slipDistance = limits.slipDistance;
-    options.maxLoad = 1;
-    return grasp::calcCompliantCapacityAlong(limits.contacts_O, Eigen::Vector3d::Zero(), load, options);
-}
-
-}  // namespace
-
 // Both the model's contacts and its displacement are along O's axes at the first engagement; the
 // object has turned by no more than the bushing's deflection since, so they are taken along O's
 // present axes.
@@ -40,7 +24,7 @@ HandBackDeflection calcHandBackDeflection(const ApproximationContext& context, c
     Eigen::Matrix<double, 6, 1> load;
     for (int k = 0; k < 6; ++k) load[k] = limits.w0[k] - reaction_O[k];
     if (load.isZero(0)) return result;
-    const grasp::CompliantCapacity answer = followCarriedLoad(limits, load);
+    const grasp::CompliantCapacity answer = followDirectionModel(limits, load, 1);  // up to the load itself
     result.loadFraction = std::isfinite(answer.ultimate) ? std::min(answer.ultimate, 1.0) : 1.0;
     for (int k = 0; k < 6; ++k) result.displacement_O[k] = answer.displacement_G[k];
     context.model.getSystem().realize(state, SimTK::Stage::Position);

@@ -457,11 +457,11 @@ void GraspSwitch::release(SimTK::State& state, double quality, const std::string
     const SimTK::MultibodySystem& system = context_.model.getSystem();
     system.realize(state, SimTK::Stage::Velocity);
     const SimTK::Vec3 v_before = context_.object.getBodyOriginVelocity(state);
-    const GraspSwitchRecord& record = getRecord(state);
+    const std::optional<ComplianceReleaseLimits>& limits = getRecord(state).releaseLimits;
     std::optional<HandBackDeflection> deflection;
-    if (options_.handBack == ApproxHandBack::Deflected && record.releaseLimits &&
-        !findComplianceLimitReached(findReactionInO(state), *record.releaseLimits).empty()) {
-        deflection = calcHandBackDeflection(context_, state, *record.releaseLimits, findReactionInO(state));
+    if (options_.handBack == ApproxHandBack::Deflected && limits) {
+        const SimTK::Vec6 reaction = findReactionInO(state);
+        if (!findComplianceLimitReached(reaction, *limits).empty()) deflection = calcHandBackDeflection(context_, state, *limits, reaction);
     }
     context_.attachment.release(state);
     if (!multi_) setFingersMerged(state, false);  // multi never merges them

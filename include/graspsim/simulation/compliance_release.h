@@ -67,6 +67,12 @@ std::string describeSlipOnsetSides(const ComplianceReleaseLimits& limits);
 void setDirectionModel(ComplianceReleaseLimits& limits, const std::vector<grasp::CompliantContact>& contacts_G,
                        const SimTK::Rotation& R_GO, const SimTK::Vec3& p_GO, const grasp::ComplianceLimitOptions& options);
 
+/// The direction model of `limits` (its contacts, friction and slip points; O's origin as the
+/// model's origin) followed along `load` (about O's origin, along O's axes, moment first: N m, N)
+/// up to `maxLoad` multiples of it (grasp::calcCompliantCapacityAlong).
+grasp::CompliantCapacity followDirectionModel(const ComplianceReleaseLimits& limits, const Eigen::Matrix<double, 6, 1>& load,
+                                              double maxLoad);
+
 /// The sides are the model's onsets for loads along one axis at a time; a load that combines axes
 /// draws on the same friction cones and can reach the model's onset inside every side (the
 /// phone's −z ramp, docs/capacity.md). The load the constraint carries beyond the engagement's,
