@@ -99,14 +99,13 @@ void setDirectionModel(ComplianceReleaseLimits& limits, const std::vector<grasp:
     limits.slipDistance = options.slipDistance;
 }
 
-namespace {
-
-// The load the constraint carries beyond the engagement's: w0 - `wrench`.
 Eigen::Matrix<double, 6, 1> findLoadBeyondEngagement(const SimTK::Vec6& wrench, const ComplianceReleaseLimits& limits) {
     Eigen::Matrix<double, 6, 1> load;
     for (int k = 0; k < 6; ++k) load[k] = limits.w0[k] - wrench[k];
     return load;
 }
+
+namespace {
 
 // The model's onset along `load` in multiples of it, followed up to `maxLoad` (infinite beyond).
 double findOnsetAlong(const Eigen::Matrix<double, 6, 1>& load, const ComplianceReleaseLimits& limits, double maxLoad) {

@@ -21,8 +21,7 @@ HandBackDeflection calcHandBackDeflection(const ApproximationContext& context, c
     }
     HandBackDeflection result;
     result.jointDeflection = Eigen::VectorXd::Zero(Eigen::Index(context.fingerMobilizers.size()));
-    Eigen::Matrix<double, 6, 1> load;
-    for (int k = 0; k < 6; ++k) load[k] = limits.w0[k] - reaction_O[k];
+    const Eigen::Matrix<double, 6, 1> load = findLoadBeyondEngagement(reaction_O, limits);
     if (load.isZero(0)) return result;
     const grasp::CompliantCapacity answer = followDirectionModel(limits, load, 1);  // up to the load itself
     result.loadFraction = std::isfinite(answer.ultimate) ? std::min(answer.ultimate, 1.0) : 1.0;

@@ -67,6 +67,10 @@ std::string describeSlipOnsetSides(const ComplianceReleaseLimits& limits);
 void setDirectionModel(ComplianceReleaseLimits& limits, const std::vector<grasp::CompliantContact>& contacts_G,
                        const SimTK::Rotation& R_GO, const SimTK::Vec3& p_GO, const grasp::ComplianceLimitOptions& options);
 
+/// The load the constraint carries beyond the engagement's, w0 - `wrench` (`wrench` the
+/// constraint's reaction on the object; frame, order and units as the sides).
+Eigen::Matrix<double, 6, 1> findLoadBeyondEngagement(const SimTK::Vec6& wrench, const ComplianceReleaseLimits& limits);
+
 /// The direction model of `limits` (its contacts, friction and slip points; O's origin as the
 /// model's origin) followed along `load` (about O's origin, along O's axes, moment first: N m, N)
 /// up to `maxLoad` multiples of it (grasp::calcCompliantCapacityAlong).
