@@ -3,12 +3,14 @@
 // 1 anything unexpected.
 
 #include "command_line.h"
+#include "output_folder.h"
 
 #include "graspsim/error.h"
 
 #include <iostream>
 
 int main(int argc, char** argv) {
+    graspsim::cli::removeFoldersOnInterrupt();
     graspsim::cli::CommandLine commandLine;
     try {
         commandLine.parse(argc, argv);

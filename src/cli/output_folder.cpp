@@ -5,10 +5,14 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
+#include <csignal>
 #include <cstring>
 #include <filesystem>
+#include <string>
 #include <system_error>
+#include <vector>
 
 namespace graspsim::cli {
 
@@ -49,7 +53,72 @@ std::string probeWriting(const std::string& folder) {
     return closed ? "" : std::strerror(closeError);
 }
 
+// What the signal handler may touch: fixed buffers written before a slot is published, so the
+// handler needs no allocation or lock (rmdir, write and raise are async-signal-safe).
+constexpr int kInterruptSlots = 4;
+constexpr int kInterruptLevels = 8;
+constexpr std::size_t kInterruptPath = 4096;
+struct InterruptSlot {
+    std::atomic<bool> used{false};
+    int levels = 0;                                   // created folders, leaf first
+    char paths[kInterruptLevels][kInterruptPath] = {};
+};
+InterruptSlot gInterruptSlots[kInterruptSlots];
+
+// The folders from `leaf` up to `top`, leaf first, in a free slot; -1 if none is free or a path
+// does not fit (the folder is then left to the default signal action, as before).
+int publishCreated(const fs::path& leaf, const fs::path& top) {
+    std::vector<std::string> levels;
+    for (fs::path p = leaf; !p.empty(); p = p.parent_path()) {
+        levels.push_back(p.string());
+        if (p == top || p == p.parent_path()) break;
+    }
+    if (levels.size() > static_cast<std::size_t>(kInterruptLevels)) return -1;
+    for (const std::string& level : levels) if (level.size() >= kInterruptPath) return -1;
+    for (int k = 0; k < kInterruptSlots; ++k) {
+        InterruptSlot& slot = gInterruptSlots[k];
+        if (slot.used.load()) continue;
+        for (std::size_t i = 0; i < levels.size(); ++i) std::memcpy(slot.paths[i], levels[i].c_str(), levels[i].size() + 1);
+        slot.levels = static_cast<int>(levels.size());
+        slot.used.store(true);
+        return k;
+    }
+    return -1;
+}
+
+void writeError(const char* text) {
+    const ssize_t ignored = ::write(STDERR_FILENO, text, std::strlen(text));
+    (void)ignored;
+}
+
+extern "C" void removeCreatedAndReraise(int signal) {
+    writeError("graspsim: interrupted");
+    for (InterruptSlot& slot : gInterruptSlots) {
+        if (!slot.used.load() || slot.levels == 0) continue;
+        const bool removed = ::rmdir(slot.paths[0]) == 0;
+        for (int i = 1; removed && i < slot.levels; ++i) {
+            if (::rmdir(slot.paths[i]) != 0) break;
+        }
+        writeError(removed ? "; removed the unfinished folder " : "; left ");
+        writeError(slot.paths[0]);
+        if (!removed) writeError(", which holds part of the results");
+    }
+    writeError("\n");
+    std::signal(signal, SIG_DFL);
+    std::raise(signal);
+}
+
 }  // namespace
+
+void removeFoldersOnInterrupt() {
+    for (int signal : {SIGINT, SIGTERM, SIGHUP}) {
+        struct sigaction action {};
+        action.sa_handler = removeCreatedAndReraise;
+        sigemptyset(&action.sa_mask);
+        for (int other : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&action.sa_mask, other);  // one cleanup at a time
+        ::sigaction(signal, &action, nullptr);
+    }
+}
 
 OutputFolder::OutputFolder(const std::string& path) : path_(path), topCreated_(findTopMissing(path)) {
     std::error_code ec;
@@ -59,9 +128,11 @@ OutputFolder::OutputFolder(const std::string& path) : path_(path), topCreated_(f
         removeCreated();  // a failed creation may have made some of the parents
         throw InputError("--out: folder '" + path + "' cannot be created or written (" + reason + ")");
     }
+    if (!topCreated_.empty()) interruptSlot_ = publishCreated(normalize(path_), topCreated_);
 }
 
 OutputFolder::~OutputFolder() {
+    if (interruptSlot_ >= 0) gInterruptSlots[interruptSlot_].used.store(false);
     if (!kept_) removeCreated();
 }
 

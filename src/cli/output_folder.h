@@ -3,7 +3,8 @@
 // that cannot be created, or a folder that refuses files, is refused before any work), and
 // removed again if the run fails before anything was written into it, so that a failed run
 // leaves no folder behind. Only what this object created goes, and only while empty: a folder
-// that existed before, or holds files, stays as it is.
+// that existed before, or holds files, stays as it is. So does an interrupted run (SIGINT,
+// SIGTERM, SIGHUP), once removeFoldersOnInterrupt() is installed.
 
 #include <string>
 
@@ -29,6 +30,14 @@ private:
     std::string path_;
     std::string topCreated_;  // the outermost folder this created; empty if `path` existed
     bool kept_ = false;
+    int interruptSlot_ = -1;  // where the interrupt handler finds the folders this created
 };
+
+// Installs handlers for SIGINT, SIGTERM (Slurm's scancel and time limit) and SIGHUP that remove
+// the folders every live OutputFolder created, leaf first and only while empty, say so in one
+// line on stderr, and then end the process by the same signal (so a calling shell or study
+// runner sees it was interrupted). A folder that already holds files stays, named as holding
+// part of the results.
+void removeFoldersOnInterrupt();
 
 }  // namespace graspsim::cli

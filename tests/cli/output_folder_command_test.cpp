@@ -9,6 +9,18 @@
 
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <thread>
+#include <vector>
+
+extern char** environ;
+
 namespace fs = std::filesystem;
 using graspsim::testing::RunResult;
 
@@ -56,5 +68,46 @@ TEST_P(OutputFolderCommand, AFolderThatCannotBeCreatedLeavesNothingBehind) {
 INSTANTIATE_TEST_SUITE_P(Commands, OutputFolderCommand,
                          ::testing::Values("simulate ball-clutch --duration 0.2", "capacity phone-pinch",
                                            "validate --quick --no-plots --no-capacity", "study run STUDY", "study submit STUDY"));
+
+// Started with posix_spawn, stderr into `err`, so that the test can signal it while it runs.
+pid_t startCli(const std::vector<std::string>& args, const fs::path& err) {
+    std::vector<std::string> words{GRASPSIM_CLI_PATH};
+    words.insert(words.end(), args.begin(), args.end());
+    std::vector<char*> argv;
+    for (std::string& w : words) argv.push_back(w.data());
+    argv.push_back(nullptr);
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_addopen(&actions, 2, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    pid_t pid = -1;
+    if (posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ) != 0) pid = -1;
+    posix_spawn_file_actions_destroy(&actions);
+    return pid;
+}
+
+class OutputFolderInterrupt : public graspsim::testing::CliProcess, public ::testing::WithParamInterface<int> {};
+
+// A run stopped by Ctrl-C (SIGINT) or by Slurm (SIGTERM) while it simulates: the folder it made,
+// with the parent it made, is gone, stderr says so in one line, and the process ends by that
+// signal. Oracle: the scratch folder's listing, and waitpid's status.
+TEST_P(OutputFolderInterrupt, AnInterruptedRunLeavesNoFolder) {
+    const int signal = GetParam();
+    const fs::path out = dir_ / "new" / "run", err = dir_ / "err.txt";
+    const pid_t pid = startCli({"simulate", "ball-clutch", "--duration", "1000", "-q", "--out", out.string()}, err);
+    ASSERT_GT(pid, 0);
+    for (int k = 0; k < 6000 && !fs::exists(out); ++k) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    const bool created = fs::exists(out);
+    ::kill(pid, signal);
+    int status = 0;
+    ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+    ASSERT_TRUE(created) << "the run made no folder within 60 s";
+    EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == signal) << status;
+    EXPECT_FALSE(fs::exists(dir_ / "new"));
+    const std::string text = graspsim::testing::slurp(err);
+    EXPECT_EQ(text, "graspsim: interrupted; removed the unfinished folder " + out.string() + "\n");
+}
+
+INSTANTIATE_TEST_SUITE_P(Signals, OutputFolderInterrupt, ::testing::Values(SIGINT, SIGTERM));
 
 }  // namespace
