@@ -46,7 +46,7 @@ grasp::CompliantRamp runCreepRamp(const scenario::Scenario& scenario, LoadStartG
     for (grasp::CompliantContact& c : start.contacts) c.tangentialStiffness = settings.creepTangentialStiffnessRatio * c.normalStiffness;
     grasp::CompliantRampOptions o;
     o.rate = r.rate > 0 ? r.rate : findDefaultRate(scenario, r.torque);
-    o.slipDistance = settings.slipDistance;
+    o.slipDistance = r.criteria.slip;
     o.maxLoad = o.rate * r.maxRampDuration;
     return grasp::runCompliantRamp(start.contacts, start.p_GO, toLoadDirection(r), scenario.contact, o);
 }
@@ -92,7 +92,7 @@ std::vector<CompliancePrediction> predictGraspCapacities(const scenario::Scenari
     std::vector<CompliancePrediction> predictions;
     for (const GraspCapacityRequest& r : requests) {
         grasp::CompliantCapacityOptions o;
-        o.slipDistance = settings.slipDistance;
+        o.slipDistance = r.criteria.slip;
         o.slipPoints_G = start.goals_G;  // where the ramp measures the slip
         CompliancePrediction p{r, {}, {}, {}};
         o.mu = scenario.contact.dynamicFriction;

@@ -33,6 +33,8 @@ struct CapacityCommand::Options {
     std::string hold = "1";
     std::string load;
     std::string guess;
+    std::string slipThreshold;
+    std::string dropThreshold;
     std::string contact = "compliant";
     std::string mode = "full";
     std::string constraint = "bushing";
@@ -89,6 +91,12 @@ CapacityCommand::CapacityCommand(CLI::App& app) : options_(std::make_shared<Opti
     command_->add_option("--hold", o.hold, "bisection, constant: how long each constant load is held, s (default 1)");
     command_->add_option("--load", o.load, "constant: the load, N (N m with --torque), > 0, applied at once at the load's start");
     command_->add_option("--guess", o.guess, "bisection: first load to try, N or N m (default: rate x 1 s)");
+    command_->add_option("--slip-threshold", o.slipThreshold,
+                         "slip onset: the object's slip relative to the palm, at the grasp goals, that counts as slipping, m "
+                         "(default 0.002; --method compliance predicts the load at it too)");
+    command_->add_option("--drop-threshold", o.dropThreshold,
+                         "drop: the slip that counts as dropped (so does the scenario's held criterion failing), m, "
+                         "above --slip-threshold (default 0.02)");
     command_->add_option("--contact", o.contact, "compliant (default) or rigid");
     command_->add_option("--mode", o.mode, "full (default) or approx");
     command_->add_option("--constraint", o.constraint, "approx: bushing (default) or weld");
@@ -124,13 +132,19 @@ bool CapacityCommand::parsed() const { return command_->parsed(); }
 
 namespace {
 
-// A number > 0; empty gives `fallback`.
-double parsePositive(const std::string& text, const std::string& flag, const std::string& what, double fallback) {
-    if (text.empty()) return fallback;
-    const std::string accepted = what + " must be a number > 0";
-    const double value = parseNumber(text, flag, accepted);
-    if (!(value > 0) || !std::isfinite(value)) throw InputError(flag + ": value " + text + " is not accepted; " + accepted);
-    return value;
+// The slip onset and drop distances (m): both > 0, the onset below the drop.
+capacity::SlipCriteria parseSlipCriteria(const std::string& slipText, const std::string& dropText) {
+    capacity::SlipCriteria criteria;
+    criteria.slip = parsePositiveNumber(slipText, "--slip-threshold", "m").value_or(criteria.slip);
+    criteria.drop = parsePositiveNumber(dropText, "--drop-threshold", "m").value_or(criteria.drop);
+    if (!(criteria.slip < criteria.drop)) {
+        const bool slipGiven = !slipText.empty();
+        throw InputError(std::string(slipGiven ? "--slip-threshold" : "--drop-threshold") + ": value " +
+                         (slipGiven ? slipText : dropText) + " is not accepted; the slip threshold (" +
+                         (slipGiven ? slipText : "0.002, the default") + " m) must be below the drop threshold (" +
+                         (dropText.empty() ? "0.02, the default" : dropText) + " m)");
+    }
+    return criteria;
 }
 
 std::vector<capacity::GraspCapacityRequest> makeRequests(const std::string& direction, bool torque) {
@@ -200,12 +214,11 @@ CapacityCommand::Plan CapacityCommand::makePlan() const {
     plan.simulation.stepSize = parseStepSize(o.stepSize);
     plan.simulation.approx.constraint = simulation::parseApproxConstraint(o.constraint, "--constraint");
     plan.simulation.approx.attach = simulation::parseApproxAttach(o.attach, "--attach");
-    plan.simulation.approx.releaseSlideDistance = parsePositive(o.releaseSlide, "--release-slide", "the release distance (m)",
-                                                                simulation::ApproxOptions{}.releaseSlideDistance);
+    plan.simulation.approx.releaseSlideDistance =
+        parsePositiveNumber(o.releaseSlide, "--release-slide", "m").value_or(simulation::ApproxOptions{}.releaseSlideDistance);
     plan.simulation.approx.releasePenetration =
-        parsePositive(o.releasePenetration, "--release-penetration", "the release penetration (m)",
-                      simulation::ApproxOptions{}.releasePenetration);
-    plan.simulation.approx.qMinimum = parsePositive(o.qMinimum, "--q-minimum", "the grasp quality (N)", 0);
+        parsePositiveNumber(o.releasePenetration, "--release-penetration", "m").value_or(simulation::ApproxOptions{}.releasePenetration);
+    plan.simulation.approx.qMinimum = parsePositiveNumber(o.qMinimum, "--q-minimum", "N").value_or(0);
     if (!o.limitsFriction.empty() && o.limitsFriction != "dynamic" && o.limitsFriction != "static") {
         throw InputError("--limits-friction: value '" + o.limitsFriction + "' is not accepted; use dynamic or static");
     }
@@ -221,20 +234,22 @@ CapacityCommand::Plan CapacityCommand::makePlan() const {
     plan.compliance = o.method == "compliance";
     plan.constant = o.method == "constant";
     checkConstantLoadOptions(o.method, o.load, o.direction);
-    plan.load = parsePositive(o.load, "--load", "the load (N, or N m with --torque)", 0);
+    plan.load = parsePositiveNumber(o.load, "--load", "N, or N m with --torque").value_or(0);
     checkComplianceMethodOptions(o.method, o.out, o.integrator, plan.simulation.integrator);
-    const double rate = parsePositive(o.rate, "--rate", "the rate", 0);
-    const double maxDuration = parsePositive(o.maxDuration, "--max-duration", "the ramp's duration (s)", 4);
-    const double initialLoad = parsePositive(o.initialLoad, "--initial-load", "the initial load", 0);
+    const double rate = parsePositiveNumber(o.rate, "--rate", "N/s, or N m/s with --torque").value_or(0);
+    const double maxDuration = parsePositiveNumber(o.maxDuration, "--max-duration", "s").value_or(4);
+    const double initialLoad = parsePositiveNumber(o.initialLoad, "--initial-load", "N, or N m with --torque").value_or(0);
+    const capacity::SlipCriteria criteria = parseSlipCriteria(o.slipThreshold, o.dropThreshold);
     if (initialLoad > 0 && o.method != "ramp") throw InputError("--initial-load: only with --method ramp (its step before the ramp)");
-    plan.hold = parsePositive(o.hold, "--hold", "the hold (s)", 1);
-    plan.guess = parsePositive(o.guess, "--guess", "the first load", 0);
+    plan.hold = parsePositiveNumber(o.hold, "--hold", "s").value_or(1);
+    plan.guess = parsePositiveNumber(o.guess, "--guess", "N, or N m with --torque").value_or(0);
     if (plan.guess > 0 && !plan.bisection) throw InputError("--guess: only with --method bisection (its first load)");
     plan.requests = makeRequests(o.direction, o.torque);
     for (capacity::GraspCapacityRequest& r : plan.requests) {
         r.rate = rate;
         r.maxRampDuration = maxDuration;
         r.initialLoad = initialLoad;
+        r.criteria = criteria;
     }
     plan.torqueRateFromForceRate = o.direction == "all";
     return plan;

@@ -17,18 +17,13 @@ double parseNumber(const std::string& text, const std::string& flag, const std::
     return value;
 }
 
-namespace {
-
-// A finite number > 0 in `unit`; empty: none.
-std::optional<double> parseFinitePositive(const std::string& text, const std::string& flag, const std::string& unit) {
+std::optional<double> parsePositiveNumber(const std::string& text, const std::string& flag, const std::string& unit) {
     if (text.empty()) return std::nullopt;
     const std::string accepted = "a finite number > 0 (" + unit + ")";
     const double value = parseNumber(text, flag, accepted);
     if (!(value > 0 && std::isfinite(value))) throw InputError(flag + ": value " + text + " is not accepted; use " + accepted);
     return value;
 }
-
-}  // namespace
 
 double parseAccuracy(const std::string& text) {
     if (text.empty()) return 0;
@@ -37,8 +32,8 @@ double parseAccuracy(const std::string& text) {
     return value;
 }
 
-double parseStepSize(const std::string& text) { return parseFinitePositive(text, "--step-size", "s").value_or(0); }
+double parseStepSize(const std::string& text) { return parsePositiveNumber(text, "--step-size", "s").value_or(0); }
 
-std::optional<double> parseReleaseGive(const std::string& text) { return parseFinitePositive(text, "--release-give", "m"); }
+std::optional<double> parseReleaseGive(const std::string& text) { return parsePositiveNumber(text, "--release-give", "m"); }
 
 }  // namespace graspsim::cli

@@ -11,6 +11,10 @@ namespace graspsim::cli {
 // rejects them with the accepted range). Throws InputError "<flag>: value '<text>' is not a number; <accepted>".
 double parseNumber(const std::string& text, const std::string& flag, const std::string& accepted);
 
+// A finite number > 0, in `unit` (named in the message); empty gives none. Throws InputError
+// "<flag>: value <text> is not accepted; use a finite number > 0 (<unit>)".
+std::optional<double> parsePositiveNumber(const std::string& text, const std::string& flag, const std::string& unit);
+
 // --accuracy: an integrator relative accuracy in (0, 1); empty keeps the scenario's (returns 0).
 double parseAccuracy(const std::string& text);
 

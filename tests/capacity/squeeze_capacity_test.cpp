@@ -153,3 +153,21 @@ TEST(SqueezeCapacity, RampAndBisectionAgree) {
     const auto b = runBisection(makeSqueezeRuns(c), p);
     EXPECT_NEAR((onset - added) / b.findEstimate(), 1, 0.02) << onset << " " << added << " " << b.held << " " << b.slipped;
 }
+
+// The thresholds are the user's (capacity --slip-threshold, --drop-threshold): at each, the ramp's
+// onset and drop are Coulomb's load at which the accelerating box has slid that far.
+TEST(SqueezeCapacity, OnsetAndDropFollowTheThresholdsAsCoulombSays) {
+    SqueezeCase c;
+    c.mu = 0.3;  // a small capacity (2.4 N), to which the ramp's slide through d adds 11-25 %
+    c.press = 4;
+    c.rigid = true;
+    for (const auto& [slip, drop] : {std::pair{0.0005, 0.004}, std::pair{0.006, 0.015}}) {
+        RampProtocol p = makeRamp(c);
+        p.criteria.slip = slip;
+        p.criteria.drop = drop;
+        const auto trace = runRamp(makeSqueezeRuns(c), p);
+        ASSERT_TRUE(trace.figures.slipped && trace.figures.dropped) << slip << " " << drop;
+        EXPECT_NEAR(trace.figures.slipOnsetLoad / findCoulombOnset(c, p.rate, slip, false), 1, 0.02) << slip;
+        EXPECT_NEAR(trace.figures.dropLoad / findCoulombOnset(c, p.rate, drop, false), 1, 0.02) << drop;
+    }
+}

@@ -57,6 +57,11 @@ TEST_F(CapacityCommand, BadInputIsOneLineAndWritesNothing) {
     expectRejected("--method constant --load 2 --hold=-1", "--hold");
     expectRejected("--method constant --load 2 --direction all", "--direction");
     expectRejected("--initial-load 0", "--initial-load");
+    expectRejected("--slip-threshold 0", "--slip-threshold");
+    expectRejected("--slip-threshold nan", "--slip-threshold");
+    expectRejected("--slip-threshold 0.03", "--slip-threshold");  // above the default drop, 0.02
+    expectRejected("--drop-threshold 0.001", "--drop-threshold");  // below the default slip, 0.002
+    expectRejected("--slip-threshold 0.01 --drop-threshold 0.01", "--slip-threshold");
     expectRejected("--method bisection --initial-load 1", "--initial-load");  // a ramp's step only
     expectRejected("--guess 2", "--guess: only with --method bisection");  // not silently unused by the ramp
     expectRejected("--constraint weld", "--constraint: value 'weld' is not accepted with --mode full");
@@ -82,14 +87,16 @@ TEST_F(CapacityCommand, AFixedStepTheStepperCannotTrustIsRefused) {
     EXPECT_FALSE(fs::exists(out));
 }
 
-// A fast ramp on the phone (8 N/s: it drops within 0.6 s of load): the files hold what the last
-// line states, and the time series starts at the load's start with no load and no slip.
+// A fast ramp on the phone (8 N/s: it drops within 0.6 s of load), with the user's thresholds: the
+// files hold what the last line states, and the time series starts at the load's start with no
+// load and no slip.
 TEST_F(CapacityCommand, RampWritesTheFiguresItPrints) {
     const std::string out = (dir_ / "cap").string();
-    const RunResult r = run("capacity phone-pinch --rate 8 --max-duration 0.6 --out " + out);
+    const RunResult r = run("capacity phone-pinch --rate 8 --max-duration 0.6 --slip-threshold 0.003 --drop-threshold 0.015 --out " + out);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const std::string json = slurp(fs::path(out) / "capacity.json");
-    for (const char* key : {"\"slip_onset_n\"", "\"drop_n\"", "\"mode\": \"full\"", "\"realization\": null", "\"rate\": 8.0"}) {
+    for (const char* key : {"\"slip_onset_n\"", "\"drop_n\"", "\"mode\": \"full\"", "\"realization\": null", "\"rate\": 8.0",
+                            "\"slip_threshold_m\": 0.003", "\"drop_threshold_m\": 0.015"}) {
         EXPECT_NE(json.find(key), std::string::npos) << key << " in " << json;
     }
     const std::string csv = slurp(fs::path(out) / "capacity.csv");

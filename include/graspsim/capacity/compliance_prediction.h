@@ -26,7 +26,6 @@ struct CompliancePredictionSettings {
     double tangentialStiffnessRatio = 2.0 / 3.0;  ///< k_t / k_n (> 0)
     /// The total k_t shared by normal force (simulation::FingerComplianceSettings)
     bool tangentialByNormalForce = true;
-    double slipDistance = 2e-3;                   ///< m, the ramp's slip-onset displacement
     /// k_t / k_n of the creep ramp (grasp/compliant_grasp_creep.h), where k_t only regularizes:
     /// stiff, since full contact's regularized friction has no tangential spring.
     double creepTangentialStiffnessRatio = 10;
@@ -61,7 +60,8 @@ struct LoadStartGrasp {
 LoadStartGrasp findLoadStartGrasp(const scenario::Scenario& scenario, simulation::SimulationOptions options,
                                   const CompliancePredictionSettings& settings);
 
-/// Predicts every request from findLoadStartGrasp's contacts.
+/// Predicts every request from findLoadStartGrasp's contacts, its slip onset at the request's
+/// criteria.slip (the displacement the ramp's onset is measured at).
 std::vector<CompliancePrediction> predictGraspCapacities(const scenario::Scenario& scenario,
                                                          const simulation::SimulationOptions& options,
                                                          const std::vector<GraspCapacityRequest>& requests,
