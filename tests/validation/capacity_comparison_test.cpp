@@ -106,5 +106,29 @@ TEST(CapacityComparison, AgreementCountsLoadsWithinTheBoundOfFullContactsOnset) 
         << formatCapacityMarkdown(rows);
 }
 
+// Read again at another threshold: the onsets come from the samples (slip against load, linear
+// between samples), not from the figures measured at 2 mm. Full contact gives 2 mm at 5 N and
+// slides 5 mm at 10 N; the approximation, stiff, first slips 2 mm at 6 N (+20 %) and 5 mm at
+// 10.5 N (+5 %).
+TEST(CapacityComparison, AgreementAtAnotherThresholdReadsTheSamples) {
+    const auto ramp = [](const std::string& variant, std::vector<std::pair<double, double>> loadSlip) {
+        CapacityRow row = makeRow("ball-clutch", "-z", variant, 0);
+        for (const auto& [load, slip] : loadSlip) row.measured.trace.samples.push_back({load / 10, load, slip, 0, true, -1});
+        row.measured.trace.figures = capacity::findCapacityFigures(row.measured.trace.samples, row.measured.criteria);
+        return row;
+    };
+    std::vector<CapacityRow> rows{ramp("full", {{0, 0}, {5, 0.002}, {10, 0.005}, {12, 0.03}}),
+                                  ramp("approx-bushing-merged", {{0, 0}, {6, 0.002}, {10.5, 0.005}, {12, 0.03}})};
+    rows.back().hasReference = true;
+    rows.back().relativeDifference = 0.2;
+    EXPECT_EQ(countCapacityAgreement(rows, "ball-clutch", "approx-bushing-merged", 0.1).within, 0u);
+    const CapacityAgreement a = countCapacityAgreementAt(rows, "ball-clutch", "approx-bushing-merged", 0.1, 0.005);
+    EXPECT_EQ(a.within, 1u);
+    EXPECT_EQ(a.compared, 1u);
+    EXPECT_EQ(countCapacityAgreementAt(rows, "ball-clutch", "approx-bushing-merged", 0.04, 0.005).within, 0u);  // +5 %
+    EXPECT_NE(formatCapacityMarkdown(rows).find("| ball-clutch | approx-bushing-merged (default) | 0 of 1 | 1 of 1 |"), std::string::npos)
+        << formatCapacityMarkdown(rows);
+}
+
 }  // namespace
 }  // namespace graspsim::validation

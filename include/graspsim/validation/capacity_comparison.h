@@ -91,6 +91,14 @@ struct CapacityAgreement {
 CapacityAgreement countCapacityAgreement(const std::vector<CapacityRow>& rows, const std::string& experiment,
                                          const std::string& variant, double bound);
 
+/// As countCapacityAgreement, with both ramps' slip onsets read again from their samples at the
+/// slip `threshold` (m) instead of the one they were measured at (the drop's stays). The report
+/// counts at a pad's radius too (the approximation's release slide distance, 5 mm): below it full
+/// contact's give (fingers yielding, creep, the ball rolling) reaches the protocol's 2 mm at about
+/// half the load at which the ball or the can slides (docs/capacity.md, "The slip threshold").
+CapacityAgreement countCapacityAgreementAt(const std::vector<CapacityRow>& rows, const std::string& experiment,
+                                           const std::string& variant, double bound, double threshold);
+
 /// The comparison's polar plots: writes each experiment's ramps per variant as
 /// `folder/capacity/EXPERIMENT/VARIANT/capacity.json` and `capacity.csv` (capacity_files.h), and
 /// draws `folder/capacity_EXPERIMENT.png` with every variant (capacity_plot.h). Returns the PNG
