@@ -1,6 +1,7 @@
 #include "capacity_command.h"
 
 #include "approx_only_options.h"
+#include "friction_option.h"
 #include "number_option.h"
 #include "output_folder.h"
 
@@ -36,6 +37,7 @@ struct CapacityCommand::Options {
     std::string slipThreshold;
     std::string dropThreshold;
     std::string contact = "compliant";
+    std::string friction;
     std::string mode = "full";
     std::string constraint = "bushing";
     std::string attach = "merged";
@@ -64,6 +66,7 @@ struct CapacityCommand::Plan {
     /// default rates' ratio (a lever, m).
     bool torqueRateFromForceRate = false;
     double hold = 1, guess = 0, load = 0;
+    std::optional<contact::FrictionModel> friction;  // --friction, over the scenario's
 };
 
 CapacityCommand::CapacityCommand(CLI::App& app) : options_(std::make_shared<Options>()) {
@@ -98,6 +101,9 @@ CapacityCommand::CapacityCommand(CLI::App& app) : options_(std::make_shared<Opti
                          "drop: the slip that counts as dropped (so does the scenario's held criterion failing), m, "
                          "above --slip-threshold (default 0.02)");
     command_->add_option("--contact", o.contact, "compliant (default) or rigid");
+    command_->add_option("--friction", o.friction,
+                         "compliant contact's friction law, regularized or anchor (true stiction; default: the "
+                         "scenario's contact.friction_model, itself regularized by default)");
     command_->add_option("--mode", o.mode, "full (default) or approx");
     command_->add_option("--constraint", o.constraint, "approx: bushing (default) or weld");
     command_->add_option("--attach", o.attach, "approx: merged (default) or multi");
@@ -206,6 +212,7 @@ CapacityCommand::Plan CapacityCommand::makePlan() const {
     const Options& o = *options_;
     Plan plan;
     plan.simulation.contact = simulation::parseContactModel(o.contact, "--contact");
+    plan.friction = parseFrictionOption(o.friction, plan.simulation.contact);
     plan.simulation.mode = simulation::parseSimulationMode(o.mode, "--mode");
     checkApproxOnlyOptions(*command_, o.mode, {"--constraint", "--attach", "--release-slide", "--release-penetration", "--q-minimum",
                                                "--limits-friction", "--limits", "--release-at", "--release-give", "--hand-back"});
@@ -260,7 +267,8 @@ void CapacityCommand::checkOptions() const { makePlan(); }
 int CapacityCommand::run() const {
     const Options& o = *options_;
     const Plan plan = makePlan();
-    const scenario::Scenario scenario = planning::loadScenario(o.scenario);
+    scenario::Scenario scenario = planning::loadScenario(o.scenario);
+    if (plan.friction) scenario.friction.model = *plan.friction;
     simulation::checkApproxAttach(scenario, plan.simulation);
     for (const capacity::GraspCapacityRequest& r : plan.requests) capacity::checkLoadResistible(scenario, r);
     simulation::checkScenarioSetup(scenario, plan.simulation);  // before the folder exists
@@ -296,7 +304,9 @@ int CapacityCommand::run() const {
         std::cout << (plot.skipped.empty() ? "plot: " + plot.file : plot.skipped) << "\n";
     }
     const capacity::GraspCapacity& first = measurements.front();
-    std::string last = "capacity of " + scenario.name + " (" + simulation::toString(first.contact) + ", " + simulation::toString(first.mode) +
+    const bool anchor = first.contact == simulation::ContactModel::Compliant && first.friction != contact::FrictionModel::Regularized;
+    std::string last = "capacity of " + scenario.name + " (" + simulation::toString(first.contact) +
+                       (anchor ? ", " + contact::toString(first.friction) + " friction" : "") + ", " + simulation::toString(first.mode) +
                        (first.realization.empty() ? "" : ", " + first.realization) + "): ";
     for (std::size_t k = 0; k < measurements.size(); ++k) last += (k ? "; " : "") + capacity::describeCapacity(measurements[k]);
     std::cout << last << (o.out.empty() ? "" : "; files in " + o.out) << "\n";

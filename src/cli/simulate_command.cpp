@@ -1,12 +1,12 @@
 #include "simulate_command.h"
 
 #include "approx_only_options.h"
+#include "friction_option.h"
 #include "number_option.h"
 #include "output_folder.h"
 #include "progress_meter.h"
 
 #include "graspsim/planning/planned_scenario.h"
-#include "graspsim/contact/anchor_friction.h"
 #include "graspsim/error.h"
 #include "graspsim/opensim/opensim_storage.h"
 #include "graspsim/results/result_folder.h"
@@ -147,13 +147,7 @@ simulation::SimulationOptions SimulateCommand::parseOptions() const {
     const Options& o = *options_;
     simulation::SimulationOptions options;
     options.contact = simulation::parseContactModel(o.contact, "--contact");
-    if (!o.friction.empty()) {  // refused before any work
-        contact::parseFrictionModel(o.friction, "--friction");
-        if (options.contact == simulation::ContactModel::Rigid) {
-            throw InputError("--friction: '" + o.friction + "' is not accepted with --contact rigid; it chooses the "
-                             "compliant contact's friction law (rigid contact has Coulomb friction)");
-        }
-    }
+    parseFrictionOption(o.friction, options.contact);  // refused before any work
     options.mode = simulation::parseSimulationMode(o.mode, "--mode");
     checkApproxOnlyOptions(*command_, o.mode,
                            {"--constraint", "--attach", "--q-threshold", "--q-minimum", "--limits", "--release-at", "--release-give", "--hand-back"});
@@ -244,7 +238,7 @@ int SimulateCommand::run(const std::vector<std::string>& commandLine) const {
     const bool planned = !scenario.graspType.empty();
     planning::completeScenario(scenario);  // plans the grasp if the file asks for one
     const double planTime = planned ? std::chrono::duration<double>(std::chrono::steady_clock::now() - planStart).count() : 0.0;
-    if (!o.friction.empty()) scenario.friction.model = contact::parseFrictionModel(o.friction, "--friction");  // scenario.yaml records it
+    if (const auto friction = parseFrictionOption(o.friction, options.contact)) scenario.friction.model = *friction;  // scenario.yaml records it
     checkPerturbation(o.perturbation, scenario);
     options.perturbation = o.perturbation;
     simulation::checkApproxAttach(scenario, options);

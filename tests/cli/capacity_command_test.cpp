@@ -57,6 +57,8 @@ TEST_F(CapacityCommand, BadInputIsOneLineAndWritesNothing) {
     expectRejected("--method constant --load 2 --hold=-1", "--hold");
     expectRejected("--method constant --load 2 --direction all", "--direction");
     expectRejected("--initial-load 0", "--initial-load");
+    expectRejected("--friction sticky", "--friction");
+    expectRejected("--contact rigid --friction anchor", "--friction");  // rigid contact's is Coulomb's
     expectRejected("--slip-threshold 0", "--slip-threshold");
     expectRejected("--slip-threshold nan", "--slip-threshold");
     expectRejected("--slip-threshold 0.03", "--slip-threshold");  // above the default drop, 0.02
@@ -99,6 +101,7 @@ TEST_F(CapacityCommand, RampWritesTheFiguresItPrints) {
                             "\"slip_threshold_m\": 0.003", "\"drop_threshold_m\": 0.015"}) {
         EXPECT_NE(json.find(key), std::string::npos) << key << " in " << json;
     }
+    EXPECT_EQ(json.find("\"friction\""), std::string::npos) << "the default law is not named: " << json;
     const std::string csv = slurp(fs::path(out) / "capacity.csv");
     EXPECT_EQ(csv.rfind("direction,load,time_s,load_value,slip_m,rotation_rad,held,engaged\n-y,force,1.1000,0,0,", 0), 0u) << csv.substr(0, 200);
     const std::string last = r.out.substr(r.out.rfind('\n', r.out.size() - 2) + 1);
@@ -127,6 +130,17 @@ TEST_F(CapacityCommand, TheImplicitStepperFindsTheFiguresCpodesFinds) {
     ASSERT_GT(cpodesDrop, 0);
     EXPECT_NEAR(implicitSlip, cpodesSlip, 0.03 * cpodesSlip);
     EXPECT_NEAR(implicitDrop, cpodesDrop, 0.03 * cpodesDrop);
+}
+
+// --friction anchor (true stiction) instead of the scenario's regularized law: named in the last
+// line and in capacity.json, as the law the figures were measured with.
+TEST_F(CapacityCommand, TheFrictionLawGivenIsUsedAndNamed) {
+    const std::string out = (dir_ / "cap").string();
+    const RunResult r = run("capacity phone-pinch --friction anchor --rate 8 --max-duration 0.6 --out " + out);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(slurp(fs::path(out) / "capacity.json").find("\"friction\": \"anchor\""), std::string::npos);
+    const std::string last = r.out.substr(r.out.rfind('\n', r.out.size() - 2) + 1);
+    EXPECT_EQ(last.rfind("capacity of phone-pinch (compliant, anchor friction, full): -y force (ramp): slips at ", 0), 0u) << last;
 }
 
 // A constant load on the phone above its capacity (2.5 N along -y; its ramp slips at about 2 N on

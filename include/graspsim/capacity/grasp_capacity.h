@@ -12,6 +12,7 @@
 /// within the scenario's held_tolerance of its goal on the object.
 
 #include "graspsim/capacity/capacity_protocol.h"
+#include "graspsim/contact/friction_settings.h"
 #include "graspsim/scenario/scenario.h"
 #include "graspsim/simulation/simulation_options.h"
 
@@ -65,6 +66,8 @@ struct GraspCapacity {
     bool torque = false;
     std::string method;       ///< "ramp", "bisection" or "constant"
     simulation::ContactModel contact = simulation::ContactModel::Compliant;
+    /// Compliant contact's friction law (the scenario's contact.friction_model, or --friction).
+    contact::FrictionModel friction = contact::FrictionModel::Regularized;
     simulation::SimulationMode mode = simulation::SimulationMode::Full;
     std::string realization;  ///< "" in full mode, else e.g. "bushing merged, limits thesis, release at compliance"
     double start = 0;         ///< load start (s)
