@@ -103,25 +103,6 @@ bool SimulateCommand::parsed() const { return command_->parsed(); }
 
 namespace {
 
-// A quality threshold (N): empty keeps the automatic choice (0).
-double parseQuality(const std::string& text, const std::string& source) {
-    if (text.empty()) return 0;
-    const double value = parseNumber(text, source, "the grasp quality must be a number of newtons > 0");
-    if (!(value > 0) || !std::isfinite(value)) {
-        throw InputError(source + ": value " + text + " is not accepted; the grasp quality must be a number of newtons > 0");
-    }
-    return value;
-}
-
-double parseDuration(const std::string& text) {
-    if (text.empty()) return 0;
-    const double value = parseNumber(text, "--duration", "the duration must be a number of seconds > 0");
-    if (!(value > 0) || !std::isfinite(value)) {
-        throw InputError("--duration: value " + text + " is not accepted; the duration must be a number of seconds > 0");
-    }
-    return value;
-}
-
 // The perturbation must be one of the scenario's.
 void checkPerturbation(const std::string& perturbation, const scenario::Scenario& scenario) {
     if (perturbation == "none" || scenario.findPerturbation(perturbation)) return;
@@ -151,14 +132,14 @@ simulation::SimulationOptions SimulateCommand::parseOptions() const {
     options.mode = simulation::parseSimulationMode(o.mode, "--mode");
     checkApproxOnlyOptions(*command_, o.mode,
                            {"--constraint", "--attach", "--q-threshold", "--q-minimum", "--limits", "--release-at", "--release-give", "--hand-back"});
-    options.duration = parseDuration(o.duration);
+    options.duration = parsePositiveNumber(o.duration, "--duration", "s").value_or(0);  // 0: the scenario's
     options.integrator = simulation::parseIntegratorChoice(o.integrator, "--integrator");
     options.accuracy = parseAccuracy(o.accuracy);
     options.stepSize = parseStepSize(o.stepSize);
     options.approx.constraint = simulation::parseApproxConstraint(o.constraint, "--constraint");
     options.approx.attach = simulation::parseApproxAttach(o.attach, "--attach");
-    options.approx.qThreshold = parseQuality(o.qThreshold, "--q-threshold");
-    options.approx.qMinimum = parseQuality(o.qMinimum, "--q-minimum");
+    options.approx.qThreshold = parsePositiveNumber(o.qThreshold, "--q-threshold", "N").value_or(0);  // 0: automatic
+    options.approx.qMinimum = parsePositiveNumber(o.qMinimum, "--q-minimum", "N").value_or(0);
     options.approx.limitModel = grasp::parseFrictionLimitModel(o.limits, "--limits");
     options.approx.releaseTrigger = simulation::parseApproxReleaseTrigger(o.releaseAt, "--release-at");
     options.approx.releaseGive = parseReleaseGive(o.releaseGive);
