@@ -15,7 +15,6 @@
 #include "graspsim/viewer/replay_page.h"
 #include "graspsim/simulation/setup_check.h"
 
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
