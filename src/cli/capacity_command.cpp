@@ -4,6 +4,7 @@
 #include "friction_option.h"
 #include "number_option.h"
 #include "output_folder.h"
+#include "parallel_runs.h"
 
 #include "graspsim/planning/planned_scenario.h"
 #include "graspsim/capacity/capacity_files.h"
@@ -19,6 +20,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <mutex>
 #include <optional>
 
 namespace graspsim::cli {
@@ -52,6 +54,7 @@ struct CapacityCommand::Options {
     std::string accuracy;
     std::string integrator = "auto";
     std::string stepSize;
+    std::string jobs = "1";
     std::string out;
 };
 
@@ -67,6 +70,7 @@ struct CapacityCommand::Plan {
     bool torqueRateFromForceRate = false;
     double hold = 1, guess = 0, load = 0;
     std::optional<contact::FrictionModel> friction;  // --friction, over the scenario's
+    int jobs = 1;  // directions measured at once
 };
 
 CapacityCommand::CapacityCommand(CLI::App& app) : options_(std::make_shared<Options>()) {
@@ -131,6 +135,8 @@ CapacityCommand::CapacityCommand(CLI::App& app) : options_(std::make_shared<Opti
                          "grasp's compliance-model limit on any axis side, or the model's onset along the load's own "
                          "direction; bushing, merged), none (the thesis's rules only) or auto (default: compliance on the "
                          "merged bushing, none otherwise)");
+    command_->add_option("--jobs", o.jobs,
+                         "directions measured at once, each on its own thread (default 1; the figures do not depend on it)");
     command_->add_option("--out", o.out, "output folder; receives capacity.json and capacity.csv (default: none written)");
 }
 
@@ -259,10 +265,39 @@ CapacityCommand::Plan CapacityCommand::makePlan() const {
         r.criteria = criteria;
     }
     plan.torqueRateFromForceRate = o.direction == "all";
+    plan.jobs = parseCount(o.jobs, "--jobs");
     return plan;
 }
 
 void CapacityCommand::checkOptions() const { makePlan(); }
+
+std::vector<capacity::GraspCapacity> CapacityCommand::measureAll(const scenario::Scenario& scenario, const Plan& plan) const {
+    std::vector<std::optional<capacity::GraspCapacity>> measured(plan.requests.size());
+    std::mutex printing;
+    std::size_t printed = 0;  // lines are printed in the requests' order, each once it and those before it are done
+    runInParallel(plan.requests.size(), plan.jobs, [&](std::size_t k) {
+        capacity::GraspCapacityRequest r = plan.requests[k];
+        r.rate = findRate(scenario, plan.torqueRateFromForceRate, r);
+        capacity::GraspCapacity c;
+        if (plan.constant) {
+            c = capacity::measureGraspCapacityConstant(scenario, plan.simulation, r, plan.load, plan.hold);
+        } else if (plan.bisection) {
+            const double rate = r.rate > 0 ? r.rate : capacity::findDefaultRate(scenario, r.torque);
+            c = capacity::measureGraspCapacityBisection(scenario, plan.simulation, r, plan.guess > 0 ? plan.guess : rate, plan.hold);
+        } else {
+            c = capacity::measureGraspCapacityRamp(scenario, plan.simulation, r);
+        }
+        const std::lock_guard<std::mutex> lock(printing);
+        measured[k] = std::move(c);
+        for (; printed < measured.size() && measured[printed]; ++printed) {
+            std::cout << scenario.name << " " << capacity::describeCapacity(*measured[printed]) << " [" << measured[printed]->wallTime
+                      << " s wall]" << std::endl;
+        }
+    });
+    std::vector<capacity::GraspCapacity> measurements;
+    for (std::optional<capacity::GraspCapacity>& m : measured) measurements.push_back(std::move(*m));
+    return measurements;
+}
 
 int CapacityCommand::run() const {
     const Options& o = *options_;
@@ -282,21 +317,7 @@ int CapacityCommand::run() const {
     }
     std::optional<OutputFolder> folder;  // gone again if a measurement throws (a step size it cannot use, ...)
     if (!o.out.empty()) folder.emplace(o.out);
-    std::vector<capacity::GraspCapacity> measurements;
-    for (capacity::GraspCapacityRequest r : plan.requests) {
-        r.rate = findRate(scenario, plan.torqueRateFromForceRate, r);
-        if (plan.constant) {
-            measurements.push_back(capacity::measureGraspCapacityConstant(scenario, plan.simulation, r, plan.load, plan.hold));
-        } else if (plan.bisection) {
-            const double rate = r.rate > 0 ? r.rate : capacity::findDefaultRate(scenario, r.torque);
-            const double guess = plan.guess > 0 ? plan.guess : rate;
-            measurements.push_back(capacity::measureGraspCapacityBisection(scenario, plan.simulation, r, guess, plan.hold));
-        } else {
-            measurements.push_back(capacity::measureGraspCapacityRamp(scenario, plan.simulation, r));
-        }
-        std::cout << scenario.name << " " << capacity::describeCapacity(measurements.back()) << " ["
-                  << measurements.back().wallTime << " s wall]\n";
-    }
+    const std::vector<capacity::GraspCapacity> measurements = measureAll(scenario, plan);
     if (folder) folder->keep();
     if (!o.out.empty()) capacity::writeCapacityFiles(o.out, scenario.name, measurements);
     if (!o.out.empty() && o.direction == "all") {

@@ -3,7 +3,11 @@
 
 #include <CLI/CLI.hpp>
 
+#include "graspsim/capacity/grasp_capacity.h"
+#include "graspsim/scenario/scenario.h"
+
 #include <memory>
+#include <vector>
 
 namespace graspsim::cli {
 
@@ -21,6 +25,8 @@ private:
     struct Options;
     struct Plan;
     Plan makePlan() const;
+    // Every request of `plan`, --jobs at a time, each line printed as it and those before it end.
+    std::vector<capacity::GraspCapacity> measureAll(const scenario::Scenario& scenario, const Plan& plan) const;
     std::shared_ptr<Options> options_;
     CLI::App* command_ = nullptr;
 };

@@ -25,6 +25,14 @@ std::optional<double> parsePositiveNumber(const std::string& text, const std::st
     return value;
 }
 
+int parseCount(const std::string& text, const std::string& flag) {
+    const double value = parseNumber(text, flag, "a whole number >= 1");
+    if (!(value >= 1 && value <= 100000 && value == static_cast<int>(value))) {
+        throw InputError(flag + ": value " + text + " is not accepted; give a whole number >= 1");
+    }
+    return static_cast<int>(value);
+}
+
 double parseAccuracy(const std::string& text) {
     if (text.empty()) return 0;
     const double value = parseNumber(text, "--accuracy", "a number in (0, 1)");

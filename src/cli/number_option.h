@@ -15,6 +15,9 @@ double parseNumber(const std::string& text, const std::string& flag, const std::
 // "<flag>: value <text> is not accepted; use a finite number > 0 (<unit>)".
 std::optional<double> parsePositiveNumber(const std::string& text, const std::string& flag, const std::string& unit);
 
+// A whole number >= 1 (a count: --jobs, --array-size). Throws InputError naming the flag.
+int parseCount(const std::string& text, const std::string& flag);
+
 // --accuracy: an integrator relative accuracy in (0, 1); empty keeps the scenario's (returns 0).
 double parseAccuracy(const std::string& text);
 

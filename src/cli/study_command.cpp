@@ -60,14 +60,6 @@ bool StudyCommand::parsed() const { return command_->parsed(); }
 
 namespace {
 
-int parseCount(const std::string& text, const std::string& option) {
-    const double value = parseNumber(text, option, "a whole number >= 1");
-    if (!(value >= 1 && value <= 100000 && value == static_cast<int>(value))) {
-        throw InputError(option + ": value " + text + " is not accepted; give a whole number >= 1");
-    }
-    return static_cast<int>(value);
-}
-
 // The binary running now, so that every case runs the same graspsim.
 std::string findExecutable() {
     std::error_code ec;

@@ -1,6 +1,7 @@
 #include "cli_process.h"
 
 #include <cstdio>
+#include <regex>
 
 using graspsim::testing::CliProcess;
 using graspsim::testing::RunResult;
@@ -58,6 +59,8 @@ TEST_F(CapacityCommand, BadInputIsOneLineAndWritesNothing) {
     expectRejected("--method constant --load 2 --direction all", "--direction");
     expectRejected("--initial-load 0", "--initial-load");
     expectRejected("--friction sticky", "--friction");
+    expectRejected("--jobs 0", "--jobs");
+    expectRejected("--jobs 1.5", "--jobs");
     expectRejected("--contact rigid --friction anchor", "--friction");  // rigid contact's is Coulomb's
     expectRejected("--slip-threshold 0", "--slip-threshold");
     expectRejected("--slip-threshold nan", "--slip-threshold");
@@ -141,6 +144,24 @@ TEST_F(CapacityCommand, TheFrictionLawGivenIsUsedAndNamed) {
     EXPECT_NE(slurp(fs::path(out) / "capacity.json").find("\"friction\": \"anchor\""), std::string::npos);
     const std::string last = r.out.substr(r.out.rfind('\n', r.out.size() - 2) + 1);
     EXPECT_EQ(last.rfind("capacity of phone-pinch (compliant, anchor friction, full): -y force (ramp): slips at ", 0), 0u) << last;
+}
+
+// --jobs measures directions at once on threads: the same files as one at a time (wall times
+// aside), and the lines printed in the directions' order.
+TEST_F(CapacityCommand, DirectionsMeasuredAtOnceGiveTheSameFiles) {
+    std::string printed[2];
+    for (int jobs : {1, 3}) {
+        const std::string out = (dir_ / ("cap" + std::to_string(jobs))).string();
+        const RunResult r = run("capacity phone-pinch --direction all --rate 8 --max-duration 0.6 --jobs " + std::to_string(jobs) + " --out " + out);
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        printed[jobs / 3] = r.out.substr(0, r.out.find("plot:"));
+    }
+    EXPECT_EQ(slurp(dir_ / "cap1" / "capacity.csv"), slurp(dir_ / "cap3" / "capacity.csv"));
+    const auto withoutWallTimes = [](const std::string& text) {
+        return std::regex_replace(text, std::regex(R"(("wall_time_s": [^,\n]*)|(\[[^\]]* s wall\]))"), "");
+    };
+    EXPECT_EQ(withoutWallTimes(slurp(dir_ / "cap1" / "capacity.json")), withoutWallTimes(slurp(dir_ / "cap3" / "capacity.json")));
+    EXPECT_EQ(withoutWallTimes(printed[0]), withoutWallTimes(printed[1]));
 }
 
 // A constant load on the phone above its capacity (2.5 N along -y; its ramp slips at about 2 N on
