@@ -22,6 +22,7 @@
 #include <iostream>
 #include <mutex>
 #include <optional>
+#include <sstream>
 
 namespace graspsim::cli {
 
@@ -150,11 +151,15 @@ capacity::SlipCriteria parseSlipCriteria(const std::string& slipText, const std:
     criteria.slip = parsePositiveNumber(slipText, "--slip-threshold", "m").value_or(criteria.slip);
     criteria.drop = parsePositiveNumber(dropText, "--drop-threshold", "m").value_or(criteria.drop);
     if (!(criteria.slip < criteria.drop)) {
+        const auto shown = [](const std::string& given, double value) {
+            std::ostringstream text;
+            text << value << " m" << (given.empty() ? ", the default" : "");
+            return text.str();
+        };
         const bool slipGiven = !slipText.empty();
-        throw InputError(std::string(slipGiven ? "--slip-threshold" : "--drop-threshold") + ": value " +
-                         (slipGiven ? slipText : dropText) + " is not accepted; the slip threshold (" +
-                         (slipGiven ? slipText : "0.002, the default") + " m) must be below the drop threshold (" +
-                         (dropText.empty() ? "0.02, the default" : dropText) + " m)");
+        throw InputError(std::string(slipGiven ? "--slip-threshold" : "--drop-threshold") + ": value " + (slipGiven ? slipText : dropText) +
+                         " is not accepted; the slip threshold (" + shown(slipText, criteria.slip) +
+                         ") must be below the drop threshold (" + shown(dropText, criteria.drop) + ")");
     }
     return criteria;
 }
@@ -325,9 +330,9 @@ int CapacityCommand::run() const {
         std::cout << (plot.skipped.empty() ? "plot: " + plot.file : plot.skipped) << "\n";
     }
     const capacity::GraspCapacity& first = measurements.front();
-    const bool anchor = first.contact == simulation::ContactModel::Compliant && first.friction != contact::FrictionModel::Regularized;
+    const bool namedFriction = first.contact == simulation::ContactModel::Compliant && first.friction != contact::FrictionModel::Regularized;
     std::string last = "capacity of " + scenario.name + " (" + simulation::toString(first.contact) +
-                       (anchor ? ", " + contact::toString(first.friction) + " friction" : "") + ", " + simulation::toString(first.mode) +
+                       (namedFriction ? ", " + contact::toString(first.friction) + " friction" : "") + ", " + simulation::toString(first.mode) +
                        (first.realization.empty() ? "" : ", " + first.realization) + "): ";
     for (std::size_t k = 0; k < measurements.size(); ++k) last += (k ? "; " : "") + capacity::describeCapacity(measurements[k]);
     std::cout << last << (o.out.empty() ? "" : "; files in " + o.out) << "\n";
