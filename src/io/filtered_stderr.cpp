@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <mutex>
 #include <utility>
 
 namespace graspsim::io {
@@ -68,51 +69,83 @@ std::string filterBlocks(const std::string& text, const std::vector<std::string>
     return kept;
 }
 
-FilteredStderr::FilteredStderr(std::vector<std::string> dropPrefixes) : dropPrefixes_(std::move(dropPrefixes)) {
-#ifndef GRASPSIM_SANITIZED
+namespace {
+
+// The redirection all live instances share (see the header), under `mutex`.
+struct SharedRedirection {
+    std::mutex mutex;
+    int users = 0;
+    int saved = -1;    // duplicate of the original fd 2, -1 when not redirected
+    int capture = -1;  // the scratch file, -1 when not redirected
+};
+
+SharedRedirection& getRedirection() {
+    static SharedRedirection shared;
+    return shared;
+}
+
+// Passes on what the scratch file holds, minus the dropped blocks, and empties it; with the lock held.
+void forwardCaptured(SharedRedirection& r, const std::vector<std::string>& dropPrefixes, std::string& dropped) {
     std::cerr.flush();
     std::fflush(stderr);
-    capture_ = findScratchFile();
-    if (capture_ < 0 || ::ftruncate(capture_, 0) != 0 || ::lseek(capture_, 0, SEEK_SET) < 0) {
-        capture_ = -1;
+    // fd 2 shares the scratch file's offset: a non-zero offset means something was written.
+    if (::lseek(r.capture, 0, SEEK_CUR) <= 0) return;
+    const std::string kept = filterBlocks(readAll(r.capture), dropPrefixes, dropped);
+    if (::ftruncate(r.capture, 0) != 0 || ::lseek(r.capture, 0, SEEK_SET) < 0) {
+        // The scratch file cannot be reused: stop filtering rather than lose or repeat text.
+        ::dup2(r.saved, 2);
+        ::close(r.saved);
+        r.saved = r.capture = -1;
+    }
+    writeAll(r.saved >= 0 ? r.saved : 2, kept);
+}
+
+}  // namespace
+
+FilteredStderr::FilteredStderr(std::vector<std::string> dropPrefixes) : dropPrefixes_(std::move(dropPrefixes)) {
+#ifndef GRASPSIM_SANITIZED
+    SharedRedirection& r = getRedirection();
+    const std::lock_guard<std::mutex> lock(r.mutex);
+    if (r.users > 0) {  // already redirected by another instance (or its setup failed: left alone)
+        joined_ = true;
+        ++r.users;
         return;
     }
-    saved_ = ::dup(2);
-    if (saved_ < 0 || ::dup2(capture_, 2) < 0) {
-        if (saved_ >= 0) ::close(saved_);
-        saved_ = capture_ = -1;
+    std::cerr.flush();
+    std::fflush(stderr);
+    const int capture = findScratchFile();
+    if (capture < 0 || ::ftruncate(capture, 0) != 0 || ::lseek(capture, 0, SEEK_SET) < 0) return;
+    const int saved = ::dup(2);
+    if (saved < 0 || ::dup2(capture, 2) < 0) {
+        if (saved >= 0) ::close(saved);
+        return;
     }
+    r.saved = saved;
+    r.capture = capture;
+    r.users = 1;
+    joined_ = true;
 #endif
 }
 
 FilteredStderr::~FilteredStderr() { release(); }
 
 void FilteredStderr::forward() {
-    if (saved_ < 0) return;
-    std::cerr.flush();
-    std::fflush(stderr);
-    // fd 2 shares the scratch file's offset: a non-zero offset means something was written.
-    if (::lseek(capture_, 0, SEEK_CUR) <= 0) return;
-    const std::string kept = filterBlocks(readAll(capture_), dropPrefixes_, dropped_);
-    if (::ftruncate(capture_, 0) != 0 || ::lseek(capture_, 0, SEEK_SET) < 0) {
-        // The scratch file cannot be reused: stop filtering rather than lose or repeat text.
-        ::dup2(saved_, 2);
-        ::close(saved_);
-        saved_ = capture_ = -1;
-    }
-    writeAll(saved_ >= 0 ? saved_ : 2, kept);
+    if (!joined_) return;
+    SharedRedirection& r = getRedirection();
+    const std::lock_guard<std::mutex> lock(r.mutex);
+    if (r.saved >= 0) forwardCaptured(r, dropPrefixes_, dropped_);
 }
 
 void FilteredStderr::release() {
-    if (saved_ < 0) return;
-    std::cerr.flush();
-    std::fflush(stderr);
-    ::dup2(saved_, 2);
-    ::close(saved_);
-    saved_ = -1;
-    const std::string kept = filterBlocks(readAll(capture_), dropPrefixes_, dropped_);
-    capture_ = -1;  // the scratch file stays open for the next scope
-    if (!kept.empty()) std::cerr << kept << std::flush;
+    if (!joined_) return;
+    joined_ = false;
+    SharedRedirection& r = getRedirection();
+    const std::lock_guard<std::mutex> lock(r.mutex);
+    if (r.saved >= 0) forwardCaptured(r, dropPrefixes_, dropped_);
+    if (--r.users > 0 || r.saved < 0) return;
+    ::dup2(r.saved, 2);
+    ::close(r.saved);
+    r.saved = r.capture = -1;  // the scratch file stays open for the next scope
 }
 
 }  // namespace graspsim::io

@@ -2,8 +2,14 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <cstdio>
+#include <memory>
 #include <string>
+#include <thread>
+#include <utility>
+#include <vector>
 
 namespace graspsim::io {
 namespace {
@@ -66,6 +72,60 @@ TEST(FilteredStderr, ForwardPassesOnEachBatchAndStaysRedirected) {
     }
     EXPECT_EQ(testing::internal::GetCapturedStderr(), "first\n\nsecond\n");
     EXPECT_EQ(dropped, kCpodesBlock + kCpodesBlock);
+}
+
+// Overlapping instances (capacity --jobs runs CPodes steppers at once, each holding one): they
+// share one redirection, so the first to end leaves fd 2 redirected for the other, the last
+// restores it, and nothing is lost or passed on twice. Oracle: fd 2's file (device and inode)
+// before and after, and the captured text.
+TEST(FilteredStderr, OverlappingInstancesShareOneRedirection) {
+#ifdef GRASPSIM_SANITIZED
+    GTEST_SKIP() << "sanitizer builds leave stderr alone (io/filtered_stderr.h)";
+#endif
+    const auto identify = [] {
+        struct stat s {};
+        ::fstat(2, &s);
+        return std::pair{s.st_dev, s.st_ino};
+    };
+    testing::internal::CaptureStderr();
+    const auto before = identify();
+    std::string dropped;
+    {
+        auto first = std::make_unique<FilteredStderr>(std::vector<std::string>{"[CPODES ERROR]"});
+        FilteredStderr second({"[CPODES ERROR]"});
+        std::fprintf(stderr, "one\n\n");
+        std::fprintf(stderr, "%s", kCpodesBlock.c_str());
+        first.reset();  // the first ends while the second lives: fd 2 stays redirected
+        EXPECT_NE(identify(), before);
+        std::fprintf(stderr, "%s", kCpodesBlock.c_str());
+        std::fprintf(stderr, "two\n");
+        second.release();
+        dropped = second.getDropped();
+        EXPECT_EQ(identify(), before);
+    }
+    EXPECT_EQ(testing::internal::GetCapturedStderr(), "one\n\ntwo\n");
+    EXPECT_EQ(dropped, kCpodesBlock);  // the first's block was the first's
+}
+
+// Many threads, each with its own instance for a while: fd 2 is the original at the end.
+TEST(FilteredStderr, ThreadsLeaveStderrAsTheyFoundIt) {
+#ifdef GRASPSIM_SANITIZED
+    GTEST_SKIP() << "sanitizer builds leave stderr alone (io/filtered_stderr.h)";
+#endif
+    testing::internal::CaptureStderr();
+    std::vector<std::thread> threads;
+    for (int t = 0; t < 4; ++t) {
+        threads.emplace_back([] {
+            for (int k = 0; k < 50; ++k) {
+                FilteredStderr filter({"[CPODES ERROR]"});
+                std::fprintf(stderr, "%s", kCpodesBlock.c_str());
+                filter.forward();
+            }
+        });
+    }
+    for (std::thread& t : threads) t.join();
+    std::fprintf(stderr, "after\n");
+    EXPECT_EQ(testing::internal::GetCapturedStderr(), "after\n");
 }
 
 }  // namespace

@@ -16,8 +16,11 @@
 
 namespace graspsim::io {
 
-/// Redirects fd 2 while alive (see the file comment). Not thread-safe: fd 2 and the scratch file
-/// are shared by the whole process; do not nest. If the redirection cannot be set up, stderr is left alone.
+/// Redirects fd 2 while alive (see the file comment). fd 2 and the scratch file belong to the
+/// whole process, so instances share one redirection: the first to start redirects, the last to
+/// end restores, and each forward() passes on what any of them captured (its dropped blocks
+/// count as the caller's). So instances may overlap, in one thread or in several (capacity
+/// --jobs runs CPodes steppers at once). If the redirection cannot be set up, stderr is left alone.
 class FilteredStderr {
 public:
     /// @param dropPrefixes a block (text between blank lines) starting with one of these, after
@@ -39,8 +42,7 @@ public:
 private:
     std::vector<std::string> dropPrefixes_;
     std::string dropped_;
-    int saved_ = -1;    // duplicate of the original fd 2, -1 when not redirected
-    int capture_ = -1;  // the scratch file, -1 when not redirected
+    bool joined_ = false;  // counted among the shared redirection's users
 };
 
 /// The kept part of `text`: its blocks (separated by blank lines) minus those that start with
