@@ -14,6 +14,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <string>
 #include <utility>
 
@@ -262,6 +264,14 @@ private:
     std::chrono::steady_clock::time_point start_;
 };
 
+bool isFinite(const std::vector<double>& v) {
+    return std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); });
+}
+bool isFinite(const SimTK::Vector& v) {
+    for (int i = 0; i < v.size(); ++i) if (!std::isfinite(v[i])) return false;
+    return true;
+}
+
 std::vector<double> toStd(const SimTK::Vector& v) { return std::vector<double>(&v[0], &v[0] + v.size()); }
 SimTK::Vector toSimTK(const std::vector<double>& v) { return SimTK::Vector(static_cast<int>(v.size()), v.data()); }
 
@@ -284,6 +294,18 @@ std::vector<double> addScaled(const std::vector<double>& a, double s, const std:
 bool LinearlyImplicitStepper::takeStep(double h, double& error) {
     const double t0 = state_.getTime();
     error = options_.order == 2 ? takeRosenbrockStep(h) : (takeEulerStep(h), 0.0);
+    if (!std::isfinite(error)) {
+        // A state gone non-finite (a rate that blew up within the step) is the largest error there
+        // is: the step is taken again shorter, and is never realized (Simbody throws on a NaN inertia).
+        error = std::numeric_limits<double>::infinity();
+        if (options_.accuracy > 0 && h > StepSizeControl::kMinStepSize) return false;
+        if (options_.accuracy > 0) {
+            char text[160];
+            std::snprintf(text, sizeof text, "linearly implicit stepper: the state is not finite after a step of %g s from t = %.9g s, "
+                          "the shortest step it takes", h, t0);
+            throw NumericalError(text);
+        }
+    }
     if (options_.accuracy == 0 && error > kUntrustedStepEstimate) throw FixedStepTooLongError(h, t0, error);
     project(state_);
     system_.realize(state_, SimTK::Stage::Acceleration);
@@ -359,6 +381,9 @@ double LinearlyImplicitStepper::takeRosenbrockStep(double h) {
     n0_->capture(matter, state_);                           // N(q0) for a2, after stage 2 moved the State
     const double landing = findNextLanding(t0), t1 = t0 + h;
     const bool endsOnLanding = landing <= t1 && t1 - landing <= 1e-12 * std::max(1.0, std::abs(t1));
+    if (!isFinite(a1) || !isFinite(b1) || !isFinite(zdot0)) {
+        return std::numeric_limits<double>::infinity();  // the stage state would not be finite: no step to realize
+    }
     setState(endsOnLanding ? std::nextafter(landing, t0) : t1, q0 + h * qdot1, toSimTK(addScaled(u0, h, b1)), z0 + h * zdot0);
     system_.realize(state_, SimTK::Stage::Acceleration);
     ++evaluations_;

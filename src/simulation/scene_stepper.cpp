@@ -8,6 +8,7 @@
 #include "graspsim/scenario/scenario.h"
 #include "graspsim/simulation/grasp_experiment.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace graspsim::simulation {
@@ -53,7 +54,13 @@ SceneStepper makeSceneStepper(const GraspExperiment& experiment, const Simulatio
     const double accuracy = options.accuracy > 0 ? options.accuracy : spec.accuracy;
     const IntegratorChoice integrator = resolveIntegrator(scene.getScenario(), options);
     if (integrator == IntegratorChoice::LinearlyImplicit) {
-        return makeLinearlyImplicitStepper(experiment, options.stepSize > 0 ? options.stepSize : spec.stepSize, accuracy);
+        double longest = options.stepSize > 0 ? options.stepSize : spec.stepSize;
+        // Its error estimate watches q and u, not the anchors' states, which it integrates
+        // explicitly: past this bound they blow up unseen (checkIntegratorChoice's fixed-step limit).
+        if (scene.getScenario().friction.model == contact::FrictionModel::Anchor) {
+            longest = std::min(longest, kAnchorStabilityLimit * scene.getScenario().friction.anchor.relaxationTime);
+        }
+        return makeLinearlyImplicitStepper(experiment, longest, accuracy);
     }
     if (integrator == IntegratorChoice::LinearlyImplicitFixed) {
         return makeLinearlyImplicitStepper(experiment, options.stepSize > 0 ? options.stepSize : spec.stepSize, 0.0);

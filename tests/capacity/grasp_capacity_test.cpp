@@ -1,6 +1,7 @@
 #include "graspsim/capacity/grasp_capacity.h"
 #include "graspsim/capacity/overload.h"
 
+#include "graspsim/contact/friction_settings.h"
 #include "graspsim/error.h"
 #include "graspsim/scenario/scenario_file.h"
 
@@ -183,6 +184,38 @@ TEST(GraspCapacity, DeflectedHandBackStartsFullContactNearerItsOwnGiveOnTheTripo
     EXPECT_LT(std::abs(d.rotation - f.rotation), 0.5 * std::abs(e.rotation - f.rotation)) << d.rotation << " " << f.rotation;
     const CapacitySample later = sampleAfter(deflected, d.time + 0.1);
     EXPECT_NEAR(later.slip, d.slip, 0.2 * d.slip);
+}
+
+// The anchor friction law on the error-controlled linearly implicit stepper, engaged under a
+// growing load: the stepper's error estimate does not watch the anchors' states, which it
+// integrates explicitly, and with the engaged approximation's long steps an anchor's sliding state
+// blew up to infinity at t = 2.68 s (then NaN, and Simbody's "Inertia matrix contains a NaN").
+// With the longest step capped at kAnchorStabilityLimit x the relaxation time, the ramp runs
+// through, and follows CPodes's (the second method): the same engaged object to 2 um.
+TEST(GraspCapacity, AnchorFrictionOnTheImplicitStepperFollowsCpodesUnderLoad) {
+    scenario::Scenario ball = scenario::findBuiltinScenario("ball-clutch");
+    ball.friction.model = contact::FrictionModel::Anchor;
+    GraspCapacityRequest request;
+    request.direction = SimTK::UnitVec3(1, 0, 0);
+    request.directionName = "x";
+    request.rate = 6;
+    request.maxRampDuration = 1.8;  // to t = 2.9 s: 10.8 N, held engaged
+    simulation::SimulationOptions options;
+    options.mode = simulation::SimulationMode::Approx;
+    options.accuracy = 3e-4;
+    options.integrator = simulation::IntegratorChoice::LinearlyImplicit;
+    const GraspCapacity implicit = measureGraspCapacityRamp(ball, options, request);
+    options.integrator = simulation::IntegratorChoice::SimbodyCpodes;
+    const GraspCapacity cpodes = measureGraspCapacityRamp(ball, options, request);
+    EXPECT_EQ(implicit.trace.failure, "");
+    ASSERT_EQ(cpodes.trace.failure, "");
+    ASSERT_EQ(implicit.trace.samples.size(), cpodes.trace.samples.size());
+    const CapacitySample& a = implicit.trace.samples.back();
+    const CapacitySample& b = cpodes.trace.samples.back();
+    EXPECT_NEAR(a.time, 2.9, 1e-9);
+    EXPECT_EQ(a.engaged, 1);
+    EXPECT_EQ(b.engaged, 1);
+    EXPECT_NEAR(a.slip, b.slip, 2e-6) << a.slip << " " << b.slip;
 }
 
 // The planned key pinch loaded along +z: the key slips (0.75 N), pivots into the index finger's

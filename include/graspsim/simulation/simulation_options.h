@@ -214,8 +214,10 @@ IntegratorChoice resolveIntegrator(const scenario::Scenario& scenario, const Sim
 /// LinearlyImplicitFixed, its stepSize or the scenario's simulation.step_size) must be stable with
 /// the scenario's friction law: with the anchor law at most kAnchorStabilityLimit x its relaxation
 /// time (measured on the ball clutch at the default 1 ms: 2 ms runs, 2.5 ms blows up; at 2 ms
-/// relaxation: 4 ms runs, 5 ms blows up). Error-controlled integrators shrink their steps
-/// themselves and pass. Call before anything is written. @throws graspsim::InputError naming the
+/// relaxation: 4 ms runs, 5 ms blows up). Error-controlled integrators pass: CPodes and CVODE
+/// control every state's error; the error-controlled linearly implicit stepper controls q and u
+/// only, so with the anchor law its longest step is capped at the same limit (makeSceneStepper).
+/// Call before anything is written. @throws graspsim::InputError naming the
 /// field (--integrator, --step-size or the file's simulation.step_size), its value and what is
 /// accepted.
 void checkIntegratorChoice(const scenario::Scenario& scenario, const SimulationOptions& options);
