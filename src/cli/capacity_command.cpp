@@ -4,7 +4,6 @@
 #include "friction_option.h"
 #include "number_option.h"
 #include "output_folder.h"
-#include "parallel_runs.h"
 
 #include "graspsim/planning/planned_scenario.h"
 #include "graspsim/capacity/capacity_files.h"
@@ -12,6 +11,7 @@
 #include "graspsim/capacity/compliance_prediction.h"
 #include "graspsim/capacity/load_direction.h"
 #include "graspsim/error.h"
+#include "graspsim/io/parallel_runs.h"
 #include "graspsim/scenario/scenario_file.h"
 #include "graspsim/simulation/multi_attachment_switch.h"
 #include "graspsim/simulation/setup_check.h"
@@ -280,7 +280,7 @@ std::vector<capacity::GraspCapacity> CapacityCommand::measureAll(const scenario:
     std::vector<std::optional<capacity::GraspCapacity>> measured(plan.requests.size());
     std::mutex printing;
     std::size_t printed = 0;  // lines are printed in the requests' order, each once it and those before it are done
-    runInParallel(plan.requests.size(), plan.jobs, [&](std::size_t k) {
+    io::runInParallel(plan.requests.size(), plan.jobs, [&](std::size_t k) {
         capacity::GraspCapacityRequest r = plan.requests[k];
         r.rate = findRate(scenario, plan.torqueRateFromForceRate, r);
         capacity::GraspCapacity c;

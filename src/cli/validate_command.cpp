@@ -23,6 +23,7 @@ struct ValidateCommand::Options {
     bool plots = true;
     std::vector<std::string> experiments, modes;
     std::string longHold;
+    std::string jobs = "1";
     std::string out = "out/validation";
     bool quiet = false;
 };
@@ -40,6 +41,8 @@ ValidateCommand::ValidateCommand(CLI::App& app) : options_(std::make_shared<Opti
     command_->add_flag("!--no-capacity", o.capacity,
                        "skip the holding-capacity comparison (full contact against each approximation variant, nine loads "
                        "per experiment; without --experiment also the planned scenes against the default; --quick: the -y force only)");
+    command_->add_option("--jobs", o.jobs,
+                         "capacity ramps run at once, each on its own thread (default 1; the results do not depend on it)");
     command_->add_option("--out", o.out, "output folder (default out/validation)");
     command_->add_flag("-q,--quiet", o.quiet, "no progress display (it appears only on a terminal anyway)");
 }
@@ -87,6 +90,7 @@ private:
 int ValidateCommand::run() const {
     const Options& o = *options_;
     validation::PlanOptions plan{o.quick, o.experiments, o.modes};
+    const int jobs = parseCount(o.jobs, "--jobs");
     if (!o.longHold.empty()) {
         plan.longHoldDuration = parseNumber(o.longHold, "--long-hold", "a number of seconds >= 0");
         if (!(plan.longHoldDuration >= 0) || !std::isfinite(plan.longHoldDuration)) {
@@ -110,6 +114,7 @@ int ValidateCommand::run() const {
         capacityPlan.experiments = o.experiments.empty() && o.quick ? std::vector<std::string>{"ball-clutch"} : o.experiments;
         capacityPlan.variants = o.modes;
         capacityPlan.quick = o.quick;
+        capacityPlan.jobs = jobs;
         // The planned scenes with the whole suite only: --experiment names the thesis scenes to run.
         if (o.experiments.empty() && !o.quick) capacityPlan.defaultOnlyExperiments = validation::getPlannedExperiments();
         results.capacity = validation::runCapacityComparison(

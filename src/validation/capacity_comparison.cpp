@@ -5,6 +5,7 @@
 #include "graspsim/capacity/capacity_plot.h"
 #include "graspsim/capacity/load_direction.h"
 #include "graspsim/capacity/overload.h"
+#include "graspsim/io/parallel_runs.h"
 #include "graspsim/scenario/scenario_file.h"
 #include "graspsim/validation/validation_plan.h"
 
@@ -13,6 +14,7 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <mutex>
 #include <optional>
 #include <sstream>
 
@@ -78,15 +80,19 @@ capacity::OverloadFigures findOverloadTimes(const capacity::GraspCapacity& c) {
     return capacity::findOverloadFigures(c.trace.figures, c.start);
 }
 
-// `row`'s constant load: kOverloadFactor x full contact's ramp onset (none if that ramp did not
-// slip), on `row`'s variant, its slip-onset time set against full contact's (`full`, run first).
+// `row`'s constant load: kOverloadFactor x full contact's ramp onset (`full`'s; none if that ramp
+// did not slip), on `row`'s variant.
 void runOverload(const scenario::Scenario& scenario, const Load& load, const CapacityPlan& plan, const CapacityRow& full,
                  CapacityRow& row) {
     const capacity::CapacityFigures& ramp = full.measured.trace.figures;
     if (!ramp.slipped) return;
     row.overload = capacity::measureGraspCapacityConstant(scenario, makeOptions(row.variant, plan), makeRequest(load),
                                                           kOverloadFactor * ramp.slipOnsetLoad, kOverloadHold);
-    if (&row == &full) return;
+}
+
+// `row`'s constant load's slip-onset time set against full contact's (`full`'s), both run.
+void compareOverload(const CapacityRow& full, CapacityRow& row) {
+    if (&row == &full || row.overload.method.empty() || full.overload.method.empty()) return;
     const capacity::OverloadFigures f = findOverloadTimes(row.overload), reference = findOverloadTimes(full.overload);
     if (!f.slipped || !reference.slipped) return;
     row.hasOverloadReference = true;
@@ -161,30 +167,35 @@ std::string formatTables(const std::vector<CapacityRow>& rows, const std::string
 
 using Announce = std::function<void(const std::string& label)>;
 
-// Every load of `experiment` on every variant: the ramps, full contact's first, then each
-// variant's constant load above full contact's capacity.
+// Every load of `experiment` on every variant (full contact first, each load's reference): the
+// ramps, then each variant's constant load above full contact's capacity; plan.jobs runs at once.
 void runExperiment(const std::string& experiment, const std::vector<std::string>& variants, const std::vector<Load>& loads,
                    const CapacityPlan& plan, const Announce& announce, std::vector<CapacityRow>& rows) {
     const scenario::Scenario scenario = scenario::findBuiltinScenario(experiment);
+    const std::size_t first = rows.size(), perLoad = variants.size();
     for (const Load& load : loads) {
-        const std::size_t full = rows.size();  // this load's full-contact row, run first
-        for (const std::string& variant : variants) {
-            announce(experiment + " " + load.name + " " + variant);
-            CapacityRow row{experiment, load.name, variant, {}, false, 0, {}, false, 0};
-            row.measured = capacity::measureGraspCapacityRamp(scenario, makeOptions(variant, plan), makeRequest(load));
-            const capacity::CapacityFigures& f = row.measured.trace.figures;
-            if (variant != "full" && rows[full].measured.trace.figures.slipped && f.slipped) {
-                row.hasReference = true;
-                const double reference = rows[full].measured.trace.figures.slipOnsetLoad;
-                row.relativeDifference = (f.slipOnsetLoad - reference) / reference;
-            }
-            rows.push_back(std::move(row));
-        }
-        for (std::size_t k = full; k < rows.size(); ++k) {
-            announce(experiment + " " + load.name + " " + rows[k].variant + " constant");
-            runOverload(scenario, load, plan, rows[full], rows[k]);
-        }
+        for (const std::string& variant : variants) rows.push_back(CapacityRow{experiment, load.name, variant, {}, false, 0, {}, false, 0});
     }
+    const std::size_t count = rows.size() - first;
+    const auto fullOf = [&](std::size_t k) -> const CapacityRow& { return rows[first + k / perLoad * perLoad]; };
+    io::runInParallel(count, plan.jobs, [&](std::size_t k) {
+        CapacityRow& row = rows[first + k];
+        announce(experiment + " " + row.load + " " + row.variant);
+        row.measured = capacity::measureGraspCapacityRamp(scenario, makeOptions(row.variant, plan), makeRequest(loads[k / perLoad]));
+    });
+    for (std::size_t k = 0; k < count; ++k) {
+        CapacityRow& row = rows[first + k];
+        const capacity::CapacityFigures& f = row.measured.trace.figures;
+        const capacity::CapacityFigures& reference = fullOf(k).measured.trace.figures;
+        if (row.variant == "full" || !reference.slipped || !f.slipped) continue;
+        row.hasReference = true;
+        row.relativeDifference = (f.slipOnsetLoad - reference.slipOnsetLoad) / reference.slipOnsetLoad;
+    }
+    io::runInParallel(count, plan.jobs, [&](std::size_t k) {
+        announce(experiment + " " + rows[first + k].load + " " + rows[first + k].variant + " constant");
+        runOverload(scenario, loads[k / perLoad], plan, fullOf(k), rows[first + k]);
+    });
+    for (std::size_t k = 0; k < count; ++k) compareOverload(fullOf(k), rows[first + k]);
 }
 
 }  // namespace
@@ -197,7 +208,9 @@ std::vector<CapacityRow> runCapacityComparison(const CapacityPlan& plan, const C
     // A ramp and a constant load each.
     const std::size_t count = 2 * loads.size() * (experiments.size() * variants.size() + plan.defaultOnlyExperiments.size() * defaultOnly.size());
     std::size_t index = 0;
+    std::mutex announcing;  // runs announce themselves from plan.jobs threads
     const Announce announce = [&](const std::string& label) {
+        const std::lock_guard<std::mutex> lock(announcing);
         if (progress) progress(index, count, label);
         ++index;
     };

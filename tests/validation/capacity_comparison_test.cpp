@@ -130,5 +130,24 @@ TEST(CapacityComparison, AgreementAtAnotherThresholdReadsTheSamples) {
         << formatCapacityMarkdown(rows);
 }
 
+// validate --jobs: the ramps and constant loads of the comparison run on threads; the rows (every
+// figure, reference and difference; wall times aside) are those of one job. Quick phone plan:
+// full contact and the default on the -y force, a ramp and a constant load each.
+TEST(CapacityComparison, RowsAreTheSameForAnyNumberOfJobs) {
+    CapacityPlan plan;
+    plan.experiments = {"phone-pinch"};
+    plan.quick = true;
+    std::string csv[2];
+    for (int jobs : {1, 2}) {
+        plan.jobs = jobs;
+        std::vector<CapacityRow> rows = runCapacityComparison(plan);
+        ASSERT_EQ(rows.size(), 2u);
+        for (CapacityRow& r : rows) r.measured.wallTime = r.overload.wallTime = 0;
+        EXPECT_TRUE(rows[1].hasReference);
+        csv[jobs - 1] = formatCapacityCsv(rows);
+    }
+    EXPECT_EQ(csv[0], csv[1]);
+}
+
 }  // namespace
 }  // namespace graspsim::validation

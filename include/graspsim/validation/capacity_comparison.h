@@ -64,14 +64,18 @@ struct CapacityPlan {
     /// -z), and each ramp cost about 20 times as much; full contact's figures agree within 0.2 %
     /// between the two (docs/capacity.md).
     simulation::IntegratorChoice integrator = simulation::IntegratorChoice::LinearlyImplicit;
+    /// Runs at once, each on its own thread (io/parallel_runs.h): the rows are the same for any
+    /// number, the progress labels come in another order.
+    int jobs = 1;
 };
 
 /// Called before each run with its index, the number of runs (ramps and constant loads), and a
 /// label ("ball-clutch -y full", "ball-clutch -y full constant").
 using CapacityProgress = std::function<void(std::size_t index, std::size_t count, const std::string& label)>;
 
-/// Runs every ramp of `plan`, full contact first for each experiment and load, then each
-/// variant's constant load.
+/// Runs every ramp of `plan` (full contact first for each experiment and load, in the rows' order),
+/// then each variant's constant load; plan.jobs at a time, `progress` called from those threads
+/// one at a time.
 std::vector<CapacityRow> runCapacityComparison(const CapacityPlan& plan, const CapacityProgress& progress = {});
 
 /// DIR/capacity.csv: one row per ramp (slip onset, drop, release, failure, difference to full),

@@ -1,4 +1,4 @@
-#include "parallel_runs.h"
+#include "graspsim/io/parallel_runs.h"
 
 #include <algorithm>
 #include <atomic>
@@ -6,7 +6,7 @@
 #include <thread>
 #include <vector>
 
-namespace graspsim::cli {
+namespace graspsim::io {
 
 void runInParallel(std::size_t count, int jobs, const std::function<void(std::size_t)>& work) {
     const std::size_t threads = std::min(count, static_cast<std::size_t>(std::max(jobs, 1)));
@@ -35,4 +35,4 @@ void runInParallel(std::size_t count, int jobs, const std::function<void(std::si
     }
 }
 
-}  // namespace graspsim::cli
+}  // namespace graspsim::io

@@ -1,4 +1,4 @@
-#include "parallel_runs.h"
+#include "graspsim/io/parallel_runs.h"
 
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-using graspsim::cli::runInParallel;
+using graspsim::io::runInParallel;
 
 // Every run once, whatever the number of threads (more threads than runs, too).
 TEST(ParallelRuns, EveryRunHappensOnce) {
