@@ -66,9 +66,7 @@ Json formatMeasurement(const GraspCapacity& c) {
     j["load"] = c.torque ? "torque" : "force";
     j["method"] = c.method;
     j["contact"] = simulation::toString(c.contact);
-    if (c.contact == simulation::ContactModel::Compliant && c.friction != contact::FrictionModel::Regularized) {
-        j["friction"] = contact::toString(c.friction);  // the default law's files stay as they were
-    }
+    if (c.friction) j["friction"] = contact::toString(*c.friction);  // the default law's files stay as they were
     j["mode"] = simulation::toString(c.mode);
     j["realization"] = c.realization.empty() ? Json(nullptr) : Json(c.realization);
     j["load_start_s"] = c.start;

@@ -148,7 +148,9 @@ GraspCapacity makeHeader(const simulation::SimulationOptions& options, const Gra
     c.torque = request.torque;
     c.method = method;
     c.contact = options.contact;
-    c.friction = scenario.friction.model;
+    if (options.contact == simulation::ContactModel::Compliant && scenario.friction.model != contact::FrictionModel::Regularized) {
+        c.friction = scenario.friction.model;
+    }
     c.mode = options.mode;
     if (options.mode == simulation::SimulationMode::Approx) {
         const simulation::ApproxOptions approx = simulation::resolveApproxOptions(options.approx, scenario.approximation);

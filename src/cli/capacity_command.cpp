@@ -330,9 +330,8 @@ int CapacityCommand::run() const {
         std::cout << (plot.skipped.empty() ? "plot: " + plot.file : plot.skipped) << "\n";
     }
     const capacity::GraspCapacity& first = measurements.front();
-    const bool namedFriction = first.contact == simulation::ContactModel::Compliant && first.friction != contact::FrictionModel::Regularized;
     std::string last = "capacity of " + scenario.name + " (" + simulation::toString(first.contact) +
-                       (namedFriction ? ", " + contact::toString(first.friction) + " friction" : "") + ", " + simulation::toString(first.mode) +
+                       (first.friction ? ", " + contact::toString(*first.friction) + " friction" : "") + ", " + simulation::toString(first.mode) +
                        (first.realization.empty() ? "" : ", " + first.realization) + "): ";
     for (std::size_t k = 0; k < measurements.size(); ++k) last += (k ? "; " : "") + capacity::describeCapacity(measurements[k]);
     std::cout << last << (o.out.empty() ? "" : "; files in " + o.out) << "\n";

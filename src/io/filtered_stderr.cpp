@@ -106,7 +106,7 @@ FilteredStderr::FilteredStderr(std::vector<std::string> dropPrefixes) : dropPref
 #ifndef GRASPSIM_SANITIZED
     SharedRedirection& r = getRedirection();
     const std::lock_guard<std::mutex> lock(r.mutex);
-    if (r.users > 0) {  // already redirected by another instance (or its setup failed: left alone)
+    if (r.users > 0) {  // another instance's redirection (or none, if the scratch file failed under it)
         joined_ = true;
         ++r.users;
         return;

@@ -16,6 +16,7 @@
 #include "graspsim/scenario/scenario.h"
 #include "graspsim/simulation/simulation_options.h"
 
+#include <optional>
 #include <string>
 
 namespace graspsim::capacity {
@@ -66,8 +67,9 @@ struct GraspCapacity {
     bool torque = false;
     std::string method;       ///< "ramp", "bisection" or "constant"
     simulation::ContactModel contact = simulation::ContactModel::Compliant;
-    /// Compliant contact's friction law (the scenario's contact.friction_model, or --friction).
-    contact::FrictionModel friction = contact::FrictionModel::Regularized;
+    /// Compliant contact's friction law (the scenario's contact.friction_model, or --friction) when it
+    /// is not the default, regularized; none for that law and for rigid contact. Reports name it.
+    std::optional<contact::FrictionModel> friction;
     simulation::SimulationMode mode = simulation::SimulationMode::Full;
     std::string realization;  ///< "" in full mode, else e.g. "bushing merged, limits thesis, release at compliance"
     double start = 0;         ///< load start (s)
