@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 
@@ -17,6 +18,14 @@ using Json = nlohmann::ordered_json;
 
 Json valueOrNull(bool valid, double value) { return valid ? Json(value) : Json(nullptr); }
 
+Json numberOrNull(double value) { return valueOrNull(std::isfinite(value), value); }
+
+// Grip force at the load's start and at the slip onset (null where the approximation was engaged).
+void addGripForces(const CapacityFigures& f, Json& j) {
+    j["grip_force_start_n"] = numberOrNull(f.gripForceAtStart);
+    j["grip_force_onset_n"] = valueOrNull(f.slipped && std::isfinite(f.gripForceAtOnset), f.gripForceAtOnset);
+}
+
 // The ramp's figures: loads and times (on the scene's clock) of slip onset, drop and release.
 void addRampFigures(const GraspCapacity& c, const std::string& unit, Json& j) {
     const CapacityFigures& f = c.trace.figures;
@@ -24,6 +33,7 @@ void addRampFigures(const GraspCapacity& c, const std::string& unit, Json& j) {
     j["drop_" + unit] = valueOrNull(f.dropped, f.dropLoad);
     j["slip_onset_time_s"] = valueOrNull(f.slipped, f.slipOnsetTime);
     j["drop_time_s"] = valueOrNull(f.dropped, f.dropTime);
+    addGripForces(f, j);
     if (c.mode != simulation::SimulationMode::Approx) return;
     j["release_" + unit] = valueOrNull(f.released, f.releaseLoad);
     j["release_time_s"] = valueOrNull(f.released, f.releaseTime);
@@ -38,6 +48,7 @@ void addConstantFigures(const GraspCapacity& c, const std::string& unit, Json& j
     j["hold_s"] = c.hold;
     j["slip_onset_time_s"] = valueOrNull(f.slipped, f.slipOnsetTime);
     j["drop_time_s"] = valueOrNull(f.dropped, f.dropTime);
+    addGripForces(c.trace.figures, j);
     if (c.mode != simulation::SimulationMode::Approx) return;
     j["release_time_s"] = valueOrNull(f.released, f.releaseTime);
     j["release_reason"] = c.trace.releaseReason.empty() ? Json(nullptr) : Json(c.trace.releaseReason);
@@ -114,12 +125,13 @@ std::string formatCapacityJson(const std::string& scenario, const std::vector<Gr
 
 std::string formatCapacityCsv(const std::vector<GraspCapacity>& measurements) {
     std::ostringstream out;
-    out << "direction,load,time_s,load_value,slip_m,rotation_rad,held,engaged\n";
+    out << "direction,load,time_s,load_value,slip_m,rotation_rad,held,engaged,grip_force_n\n";
     for (const GraspCapacity& c : measurements) {
         for (const CapacitySample& s : c.trace.samples) {
             out << c.directionName << ',' << (c.torque ? "torque" : "force") << ',' << formatNumber(s.time, "%.4f") << ','
                 << formatNumber(s.load, "%.6g") << ',' << formatNumber(s.slip, "%.6g") << ','
-                << formatNumber(s.rotation, "%.6g") << ',' << (s.held ? 1 : 0) << ',' << s.engaged << '\n';
+                << formatNumber(s.rotation, "%.6g") << ',' << (s.held ? 1 : 0) << ',' << s.engaged << ','
+                << (std::isfinite(s.gripForce) ? formatNumber(s.gripForce, "%.6g") : "") << '\n';
         }
     }
     return out.str();

@@ -8,17 +8,22 @@ bool isDropped(const CapacitySample& sample, const SlipCriteria& criteria) {
 
 namespace {
 
-// Time and load where the slip crosses `threshold` between samples a and b (a below, b above).
-void interpolateCrossing(const CapacitySample& a, const CapacitySample& b, double threshold, double& time, double& load) {
+// Time, load and grip force where the slip crosses `threshold` between samples a and b (a below,
+// b above). A grip force not measured on either side (NaN) stays unmeasured.
+struct Crossing {
+    double time = 0, load = 0, gripForce = 0;
+};
+
+Crossing interpolateCrossing(const CapacitySample& a, const CapacitySample& b, double threshold) {
     const double f = b.slip > a.slip ? (threshold - a.slip) / (b.slip - a.slip) : 1.0;
-    time = a.time + f * (b.time - a.time);
-    load = a.load + f * (b.load - a.load);
+    return {a.time + f * (b.time - a.time), a.load + f * (b.load - a.load), a.gripForce + f * (b.gripForce - a.gripForce)};
 }
 
 }  // namespace
 
 CapacityFigures findCapacityFigures(const std::vector<CapacitySample>& samples, const SlipCriteria& criteria) {
     CapacityFigures figures;
+    if (!samples.empty()) figures.gripForceAtStart = samples.front().gripForce;
     for (std::size_t k = 0; k < samples.size(); ++k) {
         const CapacitySample& s = samples[k];
         if (!figures.released && k > 0 && samples[k - 1].engaged == 1 && s.engaged == 0) {
@@ -28,23 +33,22 @@ CapacityFigures findCapacityFigures(const std::vector<CapacitySample>& samples, 
         }
         if (!figures.slipped && s.slip > criteria.slip) {
             figures.slipped = true;
-            if (k == 0) {
-                figures.slipOnsetTime = s.time;
-                figures.slipOnsetLoad = s.load;
-            } else {
-                interpolateCrossing(samples[k - 1], s, criteria.slip, figures.slipOnsetTime, figures.slipOnsetLoad);
-            }
+            const Crossing onset = k == 0 ? Crossing{s.time, s.load, s.gripForce} : interpolateCrossing(samples[k - 1], s, criteria.slip);
+            figures.slipOnsetTime = onset.time;
+            figures.slipOnsetLoad = onset.load;
+            figures.gripForceAtOnset = onset.gripForce;
         }
         if (isDropped(s, criteria)) {
+            const Crossing drop = s.held && k > 0 ? interpolateCrossing(samples[k - 1], s, criteria.drop) : Crossing{s.time, s.load, s.gripForce};
             figures.dropped = true;
-            figures.dropTime = s.time;
-            figures.dropLoad = s.load;
-            if (s.held && k > 0) interpolateCrossing(samples[k - 1], s, criteria.drop, figures.dropTime, figures.dropLoad);
+            figures.dropTime = drop.time;
+            figures.dropLoad = drop.load;
             // A grasp that lets go without sliding 2 mm first (a torque that unwraps it) slips there too.
             if (!figures.slipped) {
                 figures.slipped = true;
-                figures.slipOnsetTime = figures.dropTime;
-                figures.slipOnsetLoad = figures.dropLoad;
+                figures.slipOnsetTime = drop.time;
+                figures.slipOnsetLoad = drop.load;
+                figures.gripForceAtOnset = drop.gripForce;
             }
             break;
         }

@@ -69,6 +69,7 @@ public:
         for (std::size_t k = 0; k < now.size(); ++k) s.slip = std::max(s.slip, (now[k] - reference_[k]).norm());
         if (const simulation::GraspSwitch* grasp = findSwitch()) s.engaged = grasp->isEngaged(getState()) ? 1 : 0;
         s.held = scene_.findMaxFingertipGoalDistance(getState()) <= scene_.getScenario().simulation.heldTolerance;
+        if (s.engaged != 1) s.gripForce = calcGripForce();
         return s;
     }
 
@@ -121,6 +122,15 @@ private:
         const SimTK::State& s = getState();
         scene_.getSystem().realize(s, SimTK::Stage::Position);
         return ~scene_.getPalm().getBodyTransform(s) * scene_.getObject().getBodyTransform(s);
+    }
+
+    // Friction is tangential, so the contacts' forces along their normals are their normal forces.
+    double calcGripForce() const {
+        const SimTK::State& s = getState();
+        scene_.getSystem().realize(s, SimTK::Stage::Velocity);
+        double sum = 0;
+        for (const contact::ContactReport& c : scene_.findContactReports(s)) sum += c.normalForce;
+        return sum;
     }
 
     // The goal points (object material points where the fingertips press), in the palm frame H.

@@ -55,6 +55,7 @@ public:
     CapacitySample sampleNow() override {
         CapacitySample s;
         s.slip = std::abs(box_.getOneQ(getState(), 0) - reference_);
+        if (!case_.rigid) s.gripForce = calcGripForce();
         return s;
     }
 
@@ -62,6 +63,14 @@ private:
     const SimTK::State& getState() const {
         if (implicit_) return implicit_->getState();
         return case_.rigid ? rigid_->getState() : timeStepper_->getState();
+    }
+
+    double calcGripForce() const {
+        const SimTK::State& s = getState();
+        system_.realize(s, SimTK::Stage::Velocity);
+        double sum = 0;
+        for (const contact::ContactReport& c : contacts_.findContactReports(s)) sum += c.normalForce;
+        return sum;
     }
 
     // A Slider translates along its frames' x axis: x is turned onto the wanted Ground axis.

@@ -72,3 +72,27 @@ TEST(CapacityTrace, TheReleaseIsTheFirstSampleNoLongerEngaged) {
     samples[0].engaged = samples[1].engaged = samples[3].engaged = -1;
     EXPECT_FALSE(findCapacityFigures(samples, SlipCriteria{}).released);
 }
+
+// The grip force is read at the load's start and, at the slip onset, interpolated as the load is:
+// linear in time here (20 + 5 t N), so at the onset it is 20 + 5 t_onset to rounding. A grip not measured on
+// either side of the crossing (NaN: the approximation engaged there) stays unmeasured.
+TEST(CapacityTrace, GripForceAtTheStartAndInterpolatedAtTheOnset) {
+    std::vector<CapacitySample> samples;
+    for (int k = 0; k <= 2000; ++k) {
+        const double t = 1e-3 * k;
+        samples.push_back(makeSample(t, 10 * t, t > 1 ? (t - 1) * (t - 1) : 0.0));
+        samples.back().gripForce = 20 + 5 * t;
+    }
+    const auto f = findCapacityFigures(samples, SlipCriteria{});
+    EXPECT_DOUBLE_EQ(f.gripForceAtStart, 20);
+    EXPECT_NEAR(f.gripForceAtOnset, 20 + 5 * f.slipOnsetTime, 1e-9);
+
+    // Engaged until just after the onset's crossing: the onset's grip is not measured.
+    for (CapacitySample& s : samples) {
+        if (s.time <= 1 + std::sqrt(0.002)) s.gripForce = std::nan("");
+    }
+    const auto engaged = findCapacityFigures(samples, SlipCriteria{});
+    EXPECT_TRUE(std::isnan(engaged.gripForceAtStart));
+    EXPECT_TRUE(std::isnan(engaged.gripForceAtOnset));
+    EXPECT_NEAR(engaged.slipOnsetLoad, f.slipOnsetLoad, 1e-12);
+}

@@ -171,3 +171,25 @@ TEST(SqueezeCapacity, OnsetAndDropFollowTheThresholdsAsCoulombSays) {
         EXPECT_NEAR(trace.figures.dropLoad / findCoulombOnset(c, p.rate, drop, false), 1, 0.02) << drop;
     }
 }
+
+// The grip force is the sum of the contacts' normal forces: each slider is pressed by a constant
+// N along x and slides only along x, so at equilibrium, and while the box slides along y (which
+// moves no slider), the two contacts push back with N each: 2 N, at the start and at the onset.
+TEST(SqueezeCapacity, GripForceIsTwiceThePress) {
+    for (double press : {7.0, 18.0}) {
+        SqueezeCase c;
+        c.mu = 0.45;
+        c.press = press;
+        const auto trace = runRamp(makeSqueezeRuns(c), makeRamp(c));
+        ASSERT_TRUE(trace.figures.slipped) << press;
+        EXPECT_NEAR(trace.figures.gripForceAtStart / (2 * press), 1, 1e-3) << press;
+        EXPECT_NEAR(trace.figures.gripForceAtOnset / (2 * press), 1, 1e-3) << press;
+        // Coulomb: at the onset the load exceeds mu times the grip by what the ramp adds while the
+        // box slides 2 mm (findCoulombOnset), so the grip accounts for the capacity.
+        EXPECT_NEAR(trace.figures.slipOnsetLoad / findCoulombOnset(c, makeRamp(c).rate, 0.002, true), 1, 0.02);
+        EXPECT_GT(trace.figures.slipOnsetLoad, 0.98 * c.mu * trace.figures.gripForceAtOnset);
+    }
+    SqueezeCase rigid;
+    rigid.rigid = true;
+    EXPECT_TRUE(std::isnan(runRamp(makeSqueezeRuns(rigid), makeRamp(rigid)).figures.gripForceAtStart));
+}

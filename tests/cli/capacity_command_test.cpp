@@ -105,8 +105,13 @@ TEST_F(CapacityCommand, RampWritesTheFiguresItPrints) {
         EXPECT_NE(json.find(key), std::string::npos) << key << " in " << json;
     }
     EXPECT_EQ(json.find("\"friction\""), std::string::npos) << "the default law is not named: " << json;
+    // Held at rest, the phone's weight (0.981 N: half the default rate of 1.96 N/s) is carried by
+    // friction, at most mu_s = 0.9 times the normal forces: so the grip is at least 1.09 N.
+    const std::size_t grip = json.find("\"grip_force_start_n\": ");
+    ASSERT_NE(grip, std::string::npos) << json;
+    EXPECT_GT(std::stod(json.substr(grip + 22)), 0.981 / 0.9) << json;
     const std::string csv = slurp(fs::path(out) / "capacity.csv");
-    EXPECT_EQ(csv.rfind("direction,load,time_s,load_value,slip_m,rotation_rad,held,engaged\n-y,force,1.1000,0,0,", 0), 0u) << csv.substr(0, 200);
+    EXPECT_EQ(csv.rfind("direction,load,time_s,load_value,slip_m,rotation_rad,held,engaged,grip_force_n\n-y,force,1.1000,0,0,", 0), 0u) << csv.substr(0, 200);
     const std::string last = r.out.substr(r.out.rfind('\n', r.out.size() - 2) + 1);
     EXPECT_EQ(last.rfind("capacity of phone-pinch (compliant, full): -y force (ramp): slips at ", 0), 0u) << last;
     EXPECT_NE(last.find(", drops at "), std::string::npos) << last;
@@ -190,6 +195,6 @@ TEST_F(CapacityCommand, ConstantLoadWritesTheTimesItPrints) {
     std::snprintf(expected, sizeof expected, "slips after %.4g s, drops after %.4g s of 2.5 N held 0.5 s", onset, drop);
     EXPECT_NE(last.find(expected), std::string::npos) << last << " vs " << expected;
     const std::string csv = slurp(fs::path(out) / "capacity.csv");
-    EXPECT_EQ(csv.rfind("direction,load,time_s,load_value,slip_m,rotation_rad,held,engaged\n-y,force,1.1000,2.5,0,", 0), 0u)
+    EXPECT_EQ(csv.rfind("direction,load,time_s,load_value,slip_m,rotation_rad,held,engaged,grip_force_n\n-y,force,1.1000,2.5,0,", 0), 0u)
         << csv.substr(0, 200);
 }

@@ -12,8 +12,12 @@
 ///   Constant-load entries (method "constant", overload.h) give load_n / load_nm and hold_s instead
 ///   of the onset and drop loads, and slip_onset_time_s, drop_time_s and (approx) release_time_s as
 ///   seconds AFTER the load's start (load_start_s), null where it did not happen within the hold.
+///   Ramp and constant-load entries give grip_force_start_n and grip_force_onset_n (N, the summed
+///   normal forces of the finger-object contacts at the load's start and at the slip onset; null
+///   where the approximation was engaged, or without slip).
 /// - capacity.csv: the ramps' and constant loads' time series: direction, load kind, time (s), load (N or N m), slip
-///   (m), rotation relative to the palm (rad), held (1/0), engaged (1/0 in approx mode, -1 in full mode).
+///   (m), rotation relative to the palm (rad), held (1/0), engaged (1/0 in approx mode, -1 in full mode),
+///   grip_force_n (N; empty while the approximation is engaged).
 /// Each file is written whole to a temporary name and renamed.
 
 #include "graspsim/capacity/grasp_capacity.h"

@@ -7,6 +7,7 @@
 /// palm, of the object's material points at the grasp goals since the load began (m). Onset is
 /// the first time it exceeds SlipCriteria::slip, by linear interpolation between samples.
 
+#include <limits>
 #include <vector>
 
 namespace graspsim::capacity {
@@ -22,6 +23,10 @@ struct CapacitySample {
     bool held = true;   ///< the grasp still holds the object (the scenario's held criterion)
     /// Whether the grasp approximation is engaged: 1 or 0 in approx mode, -1 where there is none.
     int engaged = -1;
+    /// Grip force (N): the sum of the normal forces of the finger-object contacts, the F_perp of
+    /// the thesis's limits (eq. 4.1). NaN where it is not measured: while the approximation is
+    /// engaged (its constraint replaces the contacts), or in a scene that does not report it.
+    double gripForce = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// When a run counts as slipping and as dropped.
@@ -47,6 +52,11 @@ struct CapacityFigures {
     bool released = false;     ///< the approximation released during the load (engaged 1 -> 0)
     double releaseLoad = 0;    ///< N or N m, at the first sample after the release
     double releaseTime = 0;    ///< s, that sample's time
+    /// Grip force (N) at the first sample (the load's start), NaN where not measured there.
+    double gripForceAtStart = std::numeric_limits<double>::quiet_NaN();
+    /// Grip force (N) at the slip onset, interpolated as the onset's load is; NaN where it is not
+    /// measured on both sides of the crossing, or without slip.
+    double gripForceAtOnset = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// Reads slip onset and drop off `samples` (time order).
