@@ -220,21 +220,24 @@ std::vector<CapacityRow> runCapacityComparison(const CapacityPlan& plan, const C
     return rows;
 }
 
-CapacityAgreement countCapacityAgreement(const std::vector<CapacityRow>& rows, const std::string& experiment,
-                                         const std::string& variant, double bound) {
+namespace {
+
+// Counts the experiment's loads full contact slips in (by `slips`) and, of those, the ones whose
+// row of `variant` agrees with full contact's (by `agrees`).
+template <class Slips, class Agrees>
+CapacityAgreement countAgreement(const std::vector<CapacityRow>& rows, const std::string& experiment, const std::string& variant,
+                                 Slips slips, Agrees agrees) {
     CapacityAgreement agreement;
     for (const CapacityRow& r : rows) {
-        if (r.experiment != experiment || r.variant != "full" || !r.measured.trace.figures.slipped) continue;
+        if (r.experiment != experiment || r.variant != "full" || !slips(r)) continue;
         ++agreement.compared;
         const auto same = std::find_if(rows.begin(), rows.end(), [&](const CapacityRow& v) {
             return v.experiment == experiment && v.load == r.load && v.variant == variant;
         });
-        if (same != rows.end() && same->hasReference && std::abs(same->relativeDifference) <= bound) ++agreement.within;
+        if (same != rows.end() && agrees(r, *same)) ++agreement.within;
     }
     return agreement;
 }
-
-namespace {
 
 // The ramp's slip onset at another slip threshold, from its samples (none if it did not slip).
 std::optional<double> findOnsetAt(const CapacityRow& row, double threshold) {
@@ -246,22 +249,21 @@ std::optional<double> findOnsetAt(const CapacityRow& row, double threshold) {
 
 }  // namespace
 
+CapacityAgreement countCapacityAgreement(const std::vector<CapacityRow>& rows, const std::string& experiment,
+                                         const std::string& variant, double bound) {
+    return countAgreement(
+        rows, experiment, variant, [](const CapacityRow& full) { return full.measured.trace.figures.slipped; },
+        [bound](const CapacityRow&, const CapacityRow& v) { return v.hasReference && std::abs(v.relativeDifference) <= bound; });
+}
+
 CapacityAgreement countCapacityAgreementAt(const std::vector<CapacityRow>& rows, const std::string& experiment,
                                            const std::string& variant, double bound, double threshold) {
-    CapacityAgreement agreement;
-    for (const CapacityRow& r : rows) {
-        if (r.experiment != experiment || r.variant != "full") continue;
-        const std::optional<double> full = findOnsetAt(r, threshold);
-        if (!full) continue;
-        ++agreement.compared;
-        for (const CapacityRow& v : rows) {
-            if (v.experiment != experiment || v.load != r.load || v.variant != variant) continue;
-            const std::optional<double> onset = findOnsetAt(v, threshold);
-            if (onset && std::abs(*onset - *full) <= bound * std::abs(*full)) ++agreement.within;
-            break;
-        }
-    }
-    return agreement;
+    return countAgreement(
+        rows, experiment, variant, [threshold](const CapacityRow& full) { return findOnsetAt(full, threshold).has_value(); },
+        [bound, threshold](const CapacityRow& full, const CapacityRow& v) {
+            const std::optional<double> reference = findOnsetAt(full, threshold), onset = findOnsetAt(v, threshold);
+            return onset && std::abs(*onset - *reference) <= bound * std::abs(*reference);
+        });
 }
 
 namespace {
