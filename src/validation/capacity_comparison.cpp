@@ -105,13 +105,18 @@ std::string describeFailure(const std::string& failure) {
     return failure.find("not engaged") != std::string::npos ? "not engaged at the load's start" : "failed (integrator)";
 }
 
+// A relative difference as a signed percentage, "+4.1 %".
+std::string formatSignedPercent(double fraction) {
+    return std::string(fraction >= 0 ? "+" : "") + formatBriefNumber(100 * fraction) + " %";
+}
+
 std::string describeSlip(const CapacityRow& row) {
     const capacity::CapacityFigures& f = row.measured.trace.figures;
     const std::string unit = row.measured.torque ? " N m" : " N";
     if (!row.measured.trace.failure.empty() && !f.slipped) return describeFailure(row.measured.trace.failure);
     if (!f.slipped) return "no slip";
     std::string text = formatBriefNumber(f.slipOnsetLoad) + unit;
-    if (row.hasReference) text += " (" + std::string(row.relativeDifference >= 0 ? "+" : "") + formatBriefNumber(100 * row.relativeDifference) + " %)";
+    if (row.hasReference) text += " (" + formatSignedPercent(row.relativeDifference) + ")";
     if (f.released && f.releaseLoad <= f.slipOnsetLoad) text += ", released first";
     return text;
 }
@@ -123,9 +128,7 @@ std::string describeOverload(const CapacityRow& row) {
     if (!row.overload.trace.failure.empty() && !f.slipped) return describeFailure(row.overload.trace.failure);
     if (!f.slipped) return "no slip";
     std::string text = formatBriefNumber(1000 * f.slipOnsetTime) + " ms";
-    if (row.hasOverloadReference) {
-        text += " (" + std::string(row.overloadTimeDifference >= 0 ? "+" : "") + formatBriefNumber(100 * row.overloadTimeDifference) + " %)";
-    }
+    if (row.hasOverloadReference) text += " (" + formatSignedPercent(row.overloadTimeDifference) + ")";
     if (f.released) text += ", released at " + formatBriefNumber(1000 * f.releaseTime) + " ms";
     return text;
 }
@@ -281,6 +284,9 @@ std::string formatOverloadCsv(const CapacityRow& r) {
     return csv.str();
 }
 
+// A figure, or nothing where it was not measured (NaN).
+std::string formatMeasured(double value) { return std::isfinite(value) ? formatExactNumber(value) : std::string(); }
+
 }  // namespace
 
 std::string formatCapacityCsv(const std::vector<CapacityRow>& rows) {
@@ -288,7 +294,7 @@ std::string formatCapacityCsv(const std::vector<CapacityRow>& rows) {
     csv << "experiment,load,variant,unit,rate,slipped,slip_onset,slip_onset_time_s,dropped,drop,released,release_load,"
            "relative_difference_to_full,release_reason,failure,wall_time_s,overload_load,overload_slipped,"
            "overload_slip_onset_time_s,overload_drop_time_s,overload_release_time_s,overload_time_difference_to_full,"
-           "overload_failure,overload_wall_time_s\n";
+           "overload_failure,overload_wall_time_s,grip_force_start_n,grip_force_onset_n\n";
     for (const CapacityRow& r : rows) {
         const capacity::CapacityFigures& f = r.measured.trace.figures;
         csv << r.experiment << "," << r.load << "," << r.variant << "," << (r.measured.torque ? "N m" : "N") << ","
@@ -296,7 +302,8 @@ std::string formatCapacityCsv(const std::vector<CapacityRow>& rows) {
             << (f.slipped ? formatExactNumber(f.slipOnsetTime) : "") << "," << (f.dropped ? 1 : 0) << "," << (f.dropped ? formatExactNumber(f.dropLoad) : "")
             << "," << (f.released ? 1 : 0) << "," << (f.released ? formatExactNumber(f.releaseLoad) : "") << ","
             << (r.hasReference ? formatExactNumber(r.relativeDifference) : "") << ",\"" << r.measured.trace.releaseReason << "\",\""
-            << r.measured.trace.failure << "\"," << formatExactNumber(r.measured.wallTime) << formatOverloadCsv(r) << "\n";
+            << r.measured.trace.failure << "\"," << formatExactNumber(r.measured.wallTime) << formatOverloadCsv(r) << ","
+            << formatMeasured(f.gripForceAtStart) << "," << (f.slipped ? formatMeasured(f.gripForceAtOnset) : std::string()) << "\n";
     }
     return csv.str();
 }
@@ -326,6 +333,25 @@ std::string formatAgreement(const std::vector<CapacityRow>& rows) {
     return md.str();
 }
 
+// Full contact's grip force at the load's start and at the slip onset, per experiment and load.
+std::string formatGripForces(const std::vector<CapacityRow>& rows) {
+    std::ostringstream md;
+    md << "\n### Full contact's grip force under load\n\n"
+       << "The summed normal forces of the finger-object contacts (N) at the load's start and at the slip onset: how far "
+          "the grasp's grip moves from the one the approximation's limits are computed from (docs/capacity.md, \"Grip "
+          "force under load\").\n\n"
+       << "| experiment | load | at the start | at the slip onset | change |\n|---|---|---|---|---|\n";
+    for (const CapacityRow& r : rows) {
+        const capacity::CapacityFigures& f = r.measured.trace.figures;
+        if (r.variant != "full" || !std::isfinite(f.gripForceAtStart)) continue;
+        const bool atOnset = f.slipped && std::isfinite(f.gripForceAtOnset);
+        md << "| " << r.experiment << " | " << r.load << " | " << formatBriefNumber(f.gripForceAtStart) << " | "
+           << (atOnset ? formatBriefNumber(f.gripForceAtOnset) : "-") << " | "
+           << (atOnset ? formatSignedPercent(f.gripForceAtOnset / f.gripForceAtStart - 1) : "-") << " |\n";
+    }
+    return md.str();
+}
+
 }  // namespace
 
 std::string formatCapacityMarkdown(const std::vector<CapacityRow>& rows) {
@@ -340,6 +366,7 @@ std::string formatCapacityMarkdown(const std::vector<CapacityRow>& rows) {
           "the default only. Every ramp's figures are in capacity.csv.\n";
     md << formatTables(rows, "###", describeSlip);
     md << formatAgreement(rows);
+    md << formatGripForces(rows);
     md << "\n### Slip-onset times under a constant load above capacity\n\n"
        << "A constant load of " << formatBriefNumber(kOverloadFactor) << " x full contact's ramp slip onset (column \"constant load\"), "
        << "applied at once at the load's start and held " << formatBriefNumber(kOverloadHold)

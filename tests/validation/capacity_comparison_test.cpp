@@ -40,6 +40,25 @@ TEST(CapacityComparison, ReportTablesHaveALinePerLoadAndAColumnPerVariant) {
     EXPECT_TRUE(formatCapacityMarkdown({}).empty());
 }
 
+// Full contact's grip at the load's start and at the onset, with its change, in report.md and
+// capacity.csv's last two columns; the approximation's rows (engaged: not measured) stay out of the
+// table and leave the columns empty.
+TEST(CapacityComparison, GripForcesOfFullContactAreTabledWithTheirChange) {
+    std::vector<CapacityRow> rows{makeRow("phone-pinch", "-y", "full", 2), makeRow("phone-pinch", "-y", "approx-bushing-merged", 2.1)};
+    rows[0].measured.trace.figures.gripForceAtStart = 4;
+    rows[0].measured.trace.figures.gripForceAtOnset = 7;
+    const std::string md = formatCapacityMarkdown(rows);
+    EXPECT_NE(md.find("| experiment | load | at the start | at the slip onset | change |\n|---|---|---|---|---|\n"
+                      "| phone-pinch | -y | 4 | 7 | +75 % |\n\n"),
+              std::string::npos)
+        << md;
+    const std::string csv = formatCapacityCsv(rows);
+    EXPECT_NE(csv.find(",grip_force_start_n,grip_force_onset_n\n"), std::string::npos) << csv;
+    EXPECT_NE(csv.find(",4,7\n"), std::string::npos) << csv;
+    EXPECT_NE(csv.find("approx-bushing-merged"), std::string::npos);
+    EXPECT_EQ(csv.substr(csv.size() - 3), ",,\n") << csv;
+}
+
 // A constant load held from t = 1.1 s whose slip passed 2 mm at `onset` s after it.
 capacity::GraspCapacity makeOverload(double load, double onset) {
     capacity::GraspCapacity c;
