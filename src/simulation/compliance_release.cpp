@@ -23,7 +23,7 @@ ComplianceReleaseLimits calcComplianceLimits(const ApproximationContext& context
                                              const std::vector<contact::ContactReport>& reports, double mu,
                                              const SimTK::Vec6& box, const SimTK::Rotation& R_GM, const SimTK::Vec3& p_GM,
                                              double slipDistance) {
-    const FingerCompliance fingers(context.model, context.fingerMobilizers, context.jointImpedances, context.goals.getEndEffectors());
+    const FingerCompliance fingers = makeFingerCompliance(context);
     const std::vector<grasp::CompliantContact> contacts = fingers.findCompliantContacts(state, reports, {});
     grasp::ComplianceLimitOptions options;
     options.mu = mu;

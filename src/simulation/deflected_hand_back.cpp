@@ -37,7 +37,7 @@ HandBackDeflection calcHandBackDeflection(const ApproximationContext& context, c
         const SimTK::Vec3 df_G = X_GO.R() * SimTK::Vec3(df_O.x(), df_O.y(), df_O.z());
         forceChanges_G.emplace_back(df_G[0], df_G[1], df_G[2]);
     }
-    const FingerCompliance fingers(context.model, context.fingerMobilizers, context.jointImpedances, context.goals.getEndEffectors());
+    const FingerCompliance fingers = makeFingerCompliance(context);
     const Eigen::MatrixXd stiffness = fingers.calcJointStiffness(state, FingerComplianceSettings{}.ikFollowsNullSpace);
     result.jointDeflection = fingers.calcJointDeflection(state, stiffness, limits.contactBodies, points_G, forceChanges_G);
     return result;

@@ -1,5 +1,7 @@
 #include "graspsim/simulation/finger_compliance.h"
 
+#include "graspsim/simulation/approximation_context.h"
+
 #include "graspsim/error.h"
 #include "graspsim/model/model_description.h"
 #include "graspsim/simulation/grasp_scene.h"
@@ -126,6 +128,10 @@ std::optional<grasp::CompliantContact> findPressingContact(const contact::Contac
 
 FingerCompliance makeFingerCompliance(const GraspScene& scene) {
     return FingerCompliance(scene.getModel(), scene.getFingerMobilizers(), scene.findJointImpedances(), scene.getGoalEndEffectors());
+}
+
+FingerCompliance makeFingerCompliance(const ApproximationContext& context) {
+    return FingerCompliance(context.model, context.fingerMobilizers, context.jointImpedances, context.goals.getEndEffectors());
 }
 
 }  // namespace graspsim::simulation

@@ -37,6 +37,7 @@
 namespace graspsim::simulation {
 
 class GraspScene;
+struct ApproximationContext;
 
 /// The model's free choices at the contacts and fingers.
 struct FingerComplianceSettings {
@@ -107,5 +108,8 @@ private:
 
 /// The fingers of `scene` (its finger mobilizers, joint impedances and goal end-effectors).
 FingerCompliance makeFingerCompliance(const GraspScene& scene);
+
+/// The same fingers as the approximation's switch sees them, from its context.
+FingerCompliance makeFingerCompliance(const ApproximationContext& context);
 
 }  // namespace graspsim::simulation
