@@ -23,7 +23,7 @@ Json numberOrNull(double value) { return valueOrNull(std::isfinite(value), value
 // Grip force at the load's start and at the slip onset (null where the approximation was engaged).
 void addGripForces(const CapacityFigures& f, Json& j) {
     j["grip_force_start_n"] = numberOrNull(f.gripForceAtStart);
-    j["grip_force_onset_n"] = valueOrNull(f.slipped && std::isfinite(f.gripForceAtOnset), f.gripForceAtOnset);
+    j["grip_force_onset_n"] = numberOrNull(f.gripForceAtOnset);  // NaN without slip
 }
 
 // The ramp's figures: loads and times (on the scene's clock) of slip onset, drop and release.

@@ -124,13 +124,10 @@ private:
         return ~scene_.getPalm().getBodyTransform(s) * scene_.getObject().getBodyTransform(s);
     }
 
-    // Friction is tangential, so the contacts' forces along their normals are their normal forces.
     double calcGripForce() const {
         const SimTK::State& s = getState();
         scene_.getSystem().realize(s, SimTK::Stage::Velocity);
-        double sum = 0;
-        for (const contact::ContactReport& c : scene_.findContactReports(s)) sum += c.normalForce;
-        return sum;
+        return contact::sumNormalForces(scene_.findContactReports(s));
     }
 
     // The goal points (object material points where the fingertips press), in the palm frame H.

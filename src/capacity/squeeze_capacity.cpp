@@ -68,9 +68,7 @@ private:
     double calcGripForce() const {
         const SimTK::State& s = getState();
         system_.realize(s, SimTK::Stage::Velocity);
-        double sum = 0;
-        for (const contact::ContactReport& c : contacts_.findContactReports(s)) sum += c.normalForce;
-        return sum;
+        return contact::sumNormalForces(contacts_.findContactReports(s));
     }
 
     // A Slider translates along its frames' x axis: x is turned onto the wanted Ground axis.

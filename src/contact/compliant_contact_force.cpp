@@ -423,6 +423,12 @@ void CompliantContactForce::setPairsEnabled(SimTK::State& state,
     for (int i : pairIndices) flags[i] = enabled;
 }
 
+double sumNormalForces(const std::vector<ContactReport>& reports) {
+    double sum = 0;
+    for (const ContactReport& r : reports) sum += r.normalForce;
+    return sum;
+}
+
 ContactReport makePairReport(const ContactPair& pair, int pairIndex) {
     ContactReport report;
     report.pairIndex = pairIndex;

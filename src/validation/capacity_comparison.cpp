@@ -303,7 +303,7 @@ std::string formatCapacityCsv(const std::vector<CapacityRow>& rows) {
             << "," << (f.released ? 1 : 0) << "," << (f.released ? formatExactNumber(f.releaseLoad) : "") << ","
             << (r.hasReference ? formatExactNumber(r.relativeDifference) : "") << ",\"" << r.measured.trace.releaseReason << "\",\""
             << r.measured.trace.failure << "\"," << formatExactNumber(r.measured.wallTime) << formatOverloadCsv(r) << ","
-            << formatMeasured(f.gripForceAtStart) << "," << (f.slipped ? formatMeasured(f.gripForceAtOnset) : std::string()) << "\n";
+            << formatMeasured(f.gripForceAtStart) << "," << formatMeasured(f.gripForceAtOnset) << "\n";
     }
     return csv.str();
 }

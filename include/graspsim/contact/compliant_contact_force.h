@@ -62,6 +62,9 @@ struct ContactDepth {
 /// start of each contact model's reports.
 ContactReport makePairReport(const ContactPair& pair, int pairIndex);
 
+/// The sum of the reports' normal forces f_n (N): a grasp's grip force, friction being tangential.
+double sumNormalForces(const std::vector<ContactReport>& reports);
+
 /// The compliant contact force element (a Simbody Force::Custom handle; copies refer to the
 /// same element, and the element itself belongs to the GeneralForceSubsystem).
 ///
