@@ -344,7 +344,7 @@ std::string formatGripForces(const std::vector<CapacityRow>& rows) {
     for (const CapacityRow& r : rows) {
         const capacity::CapacityFigures& f = r.measured.trace.figures;
         if (r.variant != "full" || !std::isfinite(f.gripForceAtStart)) continue;
-        const bool atOnset = f.slipped && std::isfinite(f.gripForceAtOnset);
+        const bool atOnset = std::isfinite(f.gripForceAtOnset);  // NaN without slip
         md << "| " << r.experiment << " | " << r.load << " | " << formatBriefNumber(f.gripForceAtStart) << " | "
            << (atOnset ? formatBriefNumber(f.gripForceAtOnset) : "-") << " | "
            << (atOnset ? formatSignedPercent(f.gripForceAtOnset / f.gripForceAtStart - 1) : "-") << " |\n";
