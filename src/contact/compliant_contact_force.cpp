@@ -260,7 +260,8 @@ private:
         const ContactPair& pair = pairs_[i].pair;
         std::vector<ContactPoint>& contacts = updScratchContacts();
         appendContacts(pair.a.shape, pair.a.body.getBodyTransform(state) * pair.a.X_BS,
-                       pair.b.shape, pair.b.body.getBodyTransform(state) * pair.b.X_BS, contacts);
+                       pair.b.shape, pair.b.body.getBodyTransform(state) * pair.b.X_BS, contacts,
+                       pairs_[i].parameters.capsuleContact);
         return contacts;
     }
 

@@ -32,6 +32,16 @@ void checkPositive(const std::string& source, const std::string& field, double v
 
 }  // namespace
 
+std::string toString(CapsuleContact rule) {
+    return rule == CapsuleContact::Ends ? "ends" : "deepest";
+}
+
+CapsuleContact parseCapsuleContact(const std::string& text, const std::string& source) {
+    if (text == "deepest") return CapsuleContact::Deepest;
+    if (text == "ends") return CapsuleContact::Ends;
+    throw InputError(source + ": '" + text + "' is not accepted; use deepest or ends");
+}
+
 void ContactParameters::validate(const std::string& source) const {
     checkPositive(source, "effectiveStiffness", effectiveStiffness, " (Pa)");
     checkNonNegative(source, "dissipation", dissipation, " (s/m)");

@@ -29,8 +29,8 @@ SimTK::Vec3 findDeepestObjectCorePoint(const SimTK::Vec3& c0_S, const SimTK::Vec
 
 }  // namespace
 
-void appendSweptObjectContact(const SweptSphere& swept, const ContactShape& solid,
-                              const SimTK::Transform& X_GS, std::vector<ContactPoint>& contacts) {
+void appendSweptObjectContact(const SweptSphere& swept, const ContactShape& solid, const SimTK::Transform& X_GS,
+                              CapsuleContact rule, std::vector<ContactPoint>& contacts) {
     const SimTK::Vec3 c0_S = ~X_GS * swept.p0_G, c1_S = ~X_GS * swept.p1_G;
     const double sweptBound = swept.radius + 0.5 * (c1_S - c0_S).norm();
     if ((0.5 * (c0_S + c1_S)).norm() >= sweptBound + solid.calcBoundingRadius()) return;
@@ -41,15 +41,16 @@ void appendSweptObjectContact(const SweptSphere& swept, const ContactShape& soli
         const double f1 = calcObjectSignedDistance(solid, c1_S);
         if (0.5 * (f0 + f1 - (c1_S - c0_S).norm()) >= swept.radius) return;
     }
-    const SimTK::Vec3 core_S = findDeepestObjectCorePoint(c0_S, c1_S, solid);
-    const ObjectSurface surface = findObjectSurface(solid, core_S);
-    if (surface.distance >= swept.radius) return;
-    ContactPoint contact;
-    contact.depth = swept.radius - surface.distance;
-    contact.p_G = X_GS * (core_S - (0.5 * (surface.distance + swept.radius)) * surface.n_S);
-    contact.n_G = -(X_GS.R() * surface.n_S);
-    contact.radius = combineRadii(swept.radius, surface.curvatureRadius);
-    contacts.push_back(contact);
+    const auto surfaceAt = [&](const SimTK::Vec3& core_S) {
+        const ObjectSurface surface = findObjectSurface(solid, core_S);
+        return CoreSurface{core_S, surface.distance, surface.n_S, combineRadii(swept.radius, surface.curvatureRadius)};
+    };
+    const CoreSurface deepest = surfaceAt(findDeepestObjectCorePoint(c0_S, c1_S, solid));
+    if (rule == CapsuleContact::Ends && c0_S != c1_S) {
+        appendCoreEndContacts(surfaceAt(c0_S), surfaceAt(c1_S), deepest, swept.radius, X_GS, contacts);
+    } else {
+        appendCoreContact(deepest, swept.radius, 0, X_GS, contacts);
+    }
 }
 
 namespace {

@@ -18,10 +18,11 @@ namespace graspsim::contact {
 /// radius Infinity and leaves the other's.
 double combineRadii(double a, double b);
 
-/// Appends the contact between a swept sphere and an object solid posed at X_GS, if any; its
-/// normal points from the swept sphere toward the solid.
-void appendSweptObjectContact(const SweptSphere& swept, const ContactShape& solid,
-                              const SimTK::Transform& X_GS, std::vector<ContactPoint>& contacts);
+/// Appends the contacts between a swept sphere and an object solid posed at X_GS, if any (one, or
+/// for a capsule under CapsuleContact::Ends up to three); normals point from the swept sphere
+/// toward the solid.
+void appendSweptObjectContact(const SweptSphere& swept, const ContactShape& solid, const SimTK::Transform& X_GS,
+                              CapsuleContact rule, std::vector<ContactPoint>& contacts);
 
 /// Appends the contacts of an object solid (at X_GS) below the surface of a half-space (at
 /// X_GH); normals point from the solid toward the half-space.

@@ -47,16 +47,16 @@ void appendSolidSolidContacts(const ContactShape& first, const SimTK::Transform&
 
 // Contacts for the pair in canonical order (findRank). Normals point from `first` to `second`.
 void appendOrderedContacts(const ContactShape& first, const SimTK::Transform& X_GF,
-                           const ContactShape& second, const SimTK::Transform& X_GS,
+                           const ContactShape& second, const SimTK::Transform& X_GS, CapsuleContact rule,
                            std::vector<ContactPoint>& contacts) {
     if (isSwept(first)) {
         const SweptSphere swept = makeSweptSphere(first, X_GF);
         if (isSwept(second)) {
             appendSweptSweptContact(swept, makeSweptSphere(second, X_GS), contacts);
         } else if (isObjectSolid(second)) {
-            appendSweptObjectContact(swept, second, X_GS, contacts);
+            appendSweptObjectContact(swept, second, X_GS, rule, contacts);
         } else {
-            appendSweptSolidContact(swept, second, X_GS, contacts);
+            appendSweptSolidContact(swept, second, X_GS, rule, contacts);
         }
     } else {
         appendSolidSolidContacts(first, X_GF, second, X_GS, contacts);
@@ -69,16 +69,16 @@ bool isReversed(const ContactShape& a, const ContactShape& b) { return findRank(
 }  // namespace
 
 void appendContacts(const ContactShape& a, const SimTK::Transform& X_GA, const ContactShape& b,
-                    const SimTK::Transform& X_GB, std::vector<ContactPoint>& contacts) {
+                    const SimTK::Transform& X_GB, std::vector<ContactPoint>& contacts, CapsuleContact rule) {
     if (a.type == ContactShape::Type::HalfSpace && b.type == ContactShape::Type::HalfSpace) {
         throw InputError("contact between two half-spaces is not supported");
     }
     if (!isReversed(a, b)) {
-        appendOrderedContacts(a, X_GA, b, X_GB, contacts);
+        appendOrderedContacts(a, X_GA, b, X_GB, rule, contacts);
         return;
     }
     const std::size_t first = contacts.size();
-    appendOrderedContacts(b, X_GB, a, X_GA, contacts);
+    appendOrderedContacts(b, X_GB, a, X_GA, rule, contacts);
     for (std::size_t i = first; i < contacts.size(); ++i) {
         contacts[i].n_G = -contacts[i].n_G;  // computed from b toward a
     }

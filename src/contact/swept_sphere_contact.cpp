@@ -136,8 +136,33 @@ BoxSurfacePoint findSolidSurface(const ContactShape& solid, const SimTK::Vec3& p
 
 }  // namespace
 
-void appendSweptSolidContact(const SweptSphere& swept, const ContactShape& solid,
-                             const SimTK::Transform& X_GS, std::vector<ContactPoint>& contacts) {
+void appendCoreContact(const CoreSurface& surface, double radius, double depthOffset, const SimTK::Transform& X_GS,
+                       std::vector<ContactPoint>& contacts) {
+    const double depth = radius - surface.distance - depthOffset;
+    if (!(depth > 0)) return;
+    ContactPoint contact;
+    contact.depth = depth;
+    // Solid surface point: core - distance n; swept surface point: core - radius n.
+    contact.p_G = X_GS * (surface.core_S - (0.5 * (surface.distance + radius)) * surface.n_S);
+    contact.n_G = -(X_GS.R() * surface.n_S);
+    contact.radius = surface.radius;
+    contacts.push_back(contact);
+}
+
+void appendCoreEndContacts(const CoreSurface& end0, const CoreSurface& end1, const CoreSurface& deepest, double radius,
+                           const SimTK::Transform& X_GS, std::vector<ContactPoint>& contacts) {
+    appendCoreContact(end0, radius, 0, X_GS, contacts);
+    appendCoreContact(end1, radius, 0, X_GS, contacts);
+    // The interior minimum fades out as it reaches an end: its depth less the deeper end's is 0 there.
+    // Where the core lies parallel to a face its minimum is an end's to rounding; no contact of
+    // kFlatTolerance joins the two ends'.
+    const double endDepth = std::max(0.0, radius - std::min(end0.distance, end1.distance));
+    if (endDepth > 0 && !(radius - deepest.distance - endDepth > kFlatTolerance)) return;
+    appendCoreContact(deepest, radius, endDepth, X_GS, contacts);
+}
+
+void appendSweptSolidContact(const SweptSphere& swept, const ContactShape& solid, const SimTK::Transform& X_GS,
+                             CapsuleContact rule, std::vector<ContactPoint>& contacts) {
     const SimTK::Vec3 centre_S = ~X_GS * findCentre(swept);
     const double sweptBound = calcBoundingRadius(swept);
     if (solid.type == ContactShape::Type::Box
@@ -150,16 +175,16 @@ void appendSweptSolidContact(const SweptSphere& swept, const ContactShape& solid
         isSurelyOutOfReach(c0_S, c1_S, solid, swept.radius)) {
         return;
     }
-    const SimTK::Vec3 core_S = findDeepestCorePoint(c0_S, c1_S, solid);
-    const BoxSurfacePoint surface = findSolidSurface(solid, core_S);
-    if (surface.distance >= swept.radius) return;
-    ContactPoint contact;
-    contact.depth = swept.radius - surface.distance;
-    // Solid surface point: core - distance n; swept surface point: core - radius n.
-    contact.p_G = X_GS * (core_S - (0.5 * (surface.distance + swept.radius)) * surface.n_S);
-    contact.n_G = -(X_GS.R() * surface.n_S);
-    contact.radius = swept.radius;
-    contacts.push_back(contact);
+    const auto surfaceAt = [&](const SimTK::Vec3& core_S) {
+        const BoxSurfacePoint surface = findSolidSurface(solid, core_S);
+        return CoreSurface{core_S, surface.distance, surface.n_S, swept.radius};
+    };
+    const CoreSurface deepest = surfaceAt(findDeepestCorePoint(c0_S, c1_S, solid));
+    if (rule == CapsuleContact::Ends && c0_S != c1_S) {
+        appendCoreEndContacts(surfaceAt(c0_S), surfaceAt(c1_S), deepest, swept.radius, X_GS, contacts);
+    } else {
+        appendCoreContact(deepest, swept.radius, 0, X_GS, contacts);
+    }
 }
 
 }  // namespace graspsim::contact

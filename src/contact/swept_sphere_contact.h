@@ -6,6 +6,7 @@
 
 #include <vector>
 
+#include "graspsim/contact/contact_parameters.h"
 #include "graspsim/contact/contact_shape.h"
 #include "graspsim/contact/shape_contact.h"
 
@@ -32,9 +33,30 @@ SweptSphere makeSweptSphere(const ContactShape& shape, const SimTK::Transform& X
 void appendSweptSweptContact(const SweptSphere& a, const SweptSphere& b,
                              std::vector<ContactPoint>& contacts);
 
-/// Appends the contact between a swept sphere and a box or half-space `solid` posed at X_GS, if
-/// any; its normal points from the swept sphere toward the solid.
-void appendSweptSolidContact(const SweptSphere& swept, const ContactShape& solid,
-                             const SimTK::Transform& X_GS, std::vector<ContactPoint>& contacts);
+/// A point of a swept sphere's core, in the solid's frame S, with its signed distance to the solid
+/// (m), the solid's outward normal there and the contact's Hertz radius (m).
+struct CoreSurface {
+    SimTK::Vec3 core_S{0, 0, 0};
+    double distance = 0;
+    SimTK::UnitVec3 n_S{0, 0, 1};
+    double radius = 0;
+};
+
+/// Appends the contact of a swept sphere of `radius` at `surface`, `depthOffset` (m) shallower
+/// than its penetration, if it is still a contact.
+void appendCoreContact(const CoreSurface& surface, double radius, double depthOffset, const SimTK::Transform& X_GS,
+                       std::vector<ContactPoint>& contacts);
+
+/// Appends a capsule's contacts under CapsuleContact::Ends: each end within reach, with its own
+/// depth, then the deepest core point with the deeper end's depth taken off (nothing where it is an
+/// end, or no deeper than one).
+void appendCoreEndContacts(const CoreSurface& end0, const CoreSurface& end1, const CoreSurface& deepest, double radius,
+                           const SimTK::Transform& X_GS, std::vector<ContactPoint>& contacts);
+
+/// Appends the contacts between a swept sphere and a box or half-space `solid` posed at X_GS, if
+/// any (one, or for a capsule under CapsuleContact::Ends up to three); normals point from the swept
+/// sphere toward the solid.
+void appendSweptSolidContact(const SweptSphere& swept, const ContactShape& solid, const SimTK::Transform& X_GS,
+                             CapsuleContact rule, std::vector<ContactPoint>& contacts);
 
 }  // namespace graspsim::contact

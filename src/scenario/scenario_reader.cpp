@@ -204,6 +204,12 @@ contact::ContactParameters readContactParameters(const YamlField& section) {
         "viscous_friction", NumberRule::nonNegative("viscous friction", "s/m"), contact.viscousFriction);
     contact.transitionVelocity = section.findNumber(
         "transition_velocity", NumberRule::positive("transition velocity", "m/s"), contact.transitionVelocity);
+    if (const std::optional<YamlField> capsule = section.find("capsule_contact")) {
+        const std::string accepted = "capsule_contact must be deepest or ends";
+        const std::string text = capsule->asText(accepted);
+        if (text != "deepest" && text != "ends") capsule->reject(accepted);
+        contact.capsuleContact = contact::parseCapsuleContact(text, "contact.capsule_contact");
+    }
     validateContactParameters(section, contact);
     return contact;
 }
@@ -211,8 +217,8 @@ contact::ContactParameters readContactParameters(const YamlField& section) {
 void readContact(const YamlField& root, Scenario& scenario) {
     const YamlField section = root.getSection(
         "contact", {"stiffness", "dissipation", "static_friction", "dynamic_friction", "viscous_friction",
-                    "transition_velocity", "friction_model", "anchor_stiffness_ratio", "anchor_damping_mass",
-                    "anchor_relaxation_time"});
+                    "transition_velocity", "capsule_contact", "friction_model", "anchor_stiffness_ratio",
+                    "anchor_damping_mass", "anchor_relaxation_time"});
     scenario.contact = readContactParameters(section);
     scenario.friction = readFriction(section);
 }

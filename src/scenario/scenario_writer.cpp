@@ -89,6 +89,8 @@ void writeSettings(std::ostringstream& out, const Scenario& s) {
         << "\n  static_friction: " << formatNumber(c.staticFriction) << "\n  dynamic_friction: " << formatNumber(c.dynamicFriction)
         << "\n  viscous_friction: " << formatNumber(c.viscousFriction)
         << "\n  transition_velocity: " << formatNumber(c.transitionVelocity) << "\n";
+    // The default rule leaves the file as it was.
+    if (c.capsuleContact != contact::CapsuleContact::Deepest) out << "  capsule_contact: " << contact::toString(c.capsuleContact) << "\n";
     const contact::FrictionSettings& f = s.friction;
     if (f.model != contact::FrictionModel::Regularized) {  // the default law leaves the file as it was
         out << "  friction_model: " << contact::toString(f.model)

@@ -126,6 +126,41 @@ TEST(CompliantContactForce, ReportsNameBodiesAndGiveForcesOfEachContact) {
     EXPECT_LE((r.frictionForce_G - Vec3(0.48 * fn, 0, 0)).norm(), 1e-12 * fn);
 }
 
+// The pair's capsule rule reaches the element: a capsule lying flat 1 mm deep on the plate,
+// tilted so that one end is 0.2 mm deeper, presses at its deeper end alone under Deepest, at both
+// ends with the Hertz force of each end's depth under Ends.
+TEST(CompliantContactForce, ThePairsCapsuleRuleChoosesWhereACapsulePresses) {
+    for (const CapsuleContact rule : {CapsuleContact::Deepest, CapsuleContact::Ends}) {
+        Scene scene;
+        const SimTK::MobilizedBody::Free plate = scene.addFree(1.0, 0.05);
+        const SimTK::MobilizedBody::Free finger = scene.addFree(0.01, kRadius);
+        ContactParameters parameters = test::makeParameters(kEStar, kDissipation, 0.6, 0.4, 0.01);
+        parameters.capsuleContact = rule;
+        const double length = 0.04, tilt = std::asin(0.0002 / length);
+        const CompliantContactForce force(
+            scene.forces, {{test::makeSurface(finger, "finger", ContactShape::capsule(kRadius, length)),
+                            test::makeSurface(plate, "plate", ContactShape::box(Vec3(0.06, 0.04, 0.02))), parameters}});
+        SimTK::State state = scene.system.realizeTopology();
+        scene.system.realizeModel(state);
+        // Core along x, its x > 0 end 0.2 mm lower; its centre 0.9 mm deep.
+        finger.setQToFitTransform(state, Transform(SimTK::Rotation(SimTK::Pi / 2 + tilt, SimTK::YAxis),
+                                                   Vec3(0, 0, 0.02 + kRadius - 0.0009)));
+        scene.system.realize(state, SimTK::Stage::Dynamics);
+        const std::vector<ContactReport> reports = force.findContactReports(state);
+        const std::vector<double> depths =
+            rule == CapsuleContact::Ends ? std::vector<double>{0.0008, 0.001} : std::vector<double>{0.001};
+        ASSERT_EQ(reports.size(), depths.size()) << toString(rule);
+        double total = 0;
+        for (std::size_t k = 0; k < depths.size(); ++k) {
+            EXPECT_NEAR(reports[k].depth, depths[k], 1e-12) << toString(rule);
+            total += reports[k].normalForce;
+        }
+        double expected = 0;
+        for (const double x : depths) expected += 4.0 / 3.0 * kEStar * std::sqrt(kRadius) * std::pow(x, 1.5);
+        EXPECT_NEAR(total, expected, 1e-9 * expected) << toString(rule);
+    }
+}
+
 TEST(CompliantContactForce, PotentialEnergyIsTheHertzEnergyOfEveryContact) {
     FiveSpheresOnAPlate s;
     double expected = 0;

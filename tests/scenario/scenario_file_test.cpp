@@ -351,6 +351,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"a list, not a map", kBase, "- a\n- b\n", {"the document", "'[a, b]'", "must be a map"}},
         BadInput{"unknown friction law", "  stiffness: 5.0e5\n", "  stiffness: 5.0e5\n  friction_model: lugre\n",
                  {"'contact.friction_model'", "'lugre'", "regularized or anchor"}},
+        BadInput{"unknown capsule contact rule", "  stiffness: 5.0e5\n", "  stiffness: 5.0e5\n  capsule_contact: both\n",
+                 {"'contact.capsule_contact'", "'both'", "deepest or ends"}},
         BadInput{"zero anchor damping mass", "  stiffness: 5.0e5\n", "  stiffness: 5.0e5\n  anchor_damping_mass: 0\n",
                  {"'contact.anchor_damping_mass'", "'0'", "> 0 kg"}},
         BadInput{"infinite anchor relaxation time", "  stiffness: 5.0e5\n",

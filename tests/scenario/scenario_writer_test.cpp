@@ -59,6 +59,7 @@ void expectSameScenario(const Scenario& a, const Scenario& b) {
     EXPECT_EQ(a.contact.dynamicFriction, b.contact.dynamicFriction);
     EXPECT_EQ(a.contact.viscousFriction, b.contact.viscousFriction);
     EXPECT_EQ(a.contact.transitionVelocity, b.contact.transitionVelocity);
+    EXPECT_EQ(a.contact.capsuleContact, b.contact.capsuleContact);
     EXPECT_EQ(a.friction.model, b.friction.model);
     EXPECT_EQ(a.friction.anchor.stiffnessRatio, b.friction.anchor.stiffnessRatio);
     EXPECT_EQ(a.friction.anchor.dampingMass, b.friction.anchor.dampingMass);
@@ -133,6 +134,18 @@ TEST(ScenarioWriter, AnchorFrictionIsWrittenOnlyWhenChosen) {
     const std::string text = formatScenarioYaml(s);
     EXPECT_NE(text.find("friction_model: anchor"), std::string::npos);
     expectSameScenario(s, parseScenario(text, "written.yaml"));
+}
+
+// The default capsule rule writes nothing new; the ends rule writes itself and reads back.
+TEST(ScenarioWriter, CapsuleContactIsWrittenOnlyWhenChosen) {
+    Scenario s = findBuiltinScenario("key-lateral");
+    EXPECT_EQ(formatScenarioYaml(s).find("capsule_contact"), std::string::npos);
+    s.contact.capsuleContact = contact::CapsuleContact::Ends;
+    const std::string text = formatScenarioYaml(s);
+    EXPECT_NE(text.find("capsule_contact: ends"), std::string::npos);
+    const Scenario back = parseScenario(text, "written.yaml");
+    EXPECT_EQ(back.contact.capsuleContact, contact::CapsuleContact::Ends);
+    expectSameScenario(s, back);
 }
 
 // The point where the ray from O through p meets the surface (every shape is star-shaped from

@@ -13,6 +13,28 @@
 
 namespace graspsim::contact {
 
+/// Where a capsule touches a box, a half-space or an object solid (cylinder, ellipsoid, convex
+/// mesh) in compliant contact (shape_contact.h). Rigid contact, the planner and the set-up check
+/// always use Deepest.
+enum class CapsuleContact {
+    /// One contact, at the core point deepest in the solid. A capsule lying flat on a face has its
+    /// deepest point at one end or the other with the sign of a tilt of a few microradians, so its
+    /// contact jumps by the capsule's length (docs/contact.md, "A capsule lying flat").
+    Deepest,
+    /// A contact at each end of the core within reach of the solid, each with its own depth, and
+    /// one at a deeper interior minimum (a box edge across the capsule) with the deeper end's
+    /// depth taken off: the force and moment are continuous as the capsule tilts through flat.
+    Ends,
+};
+
+/// "deepest" or "ends".
+std::string toString(CapsuleContact rule);
+
+/// Parses "deepest" or "ends".
+/// @param source names the field or flag for the message (e.g. "contact.capsule_contact").
+/// @throws graspsim::InputError "<source>: '<text>' is not accepted; use deepest or ends".
+CapsuleContact parseCapsuleContact(const std::string& text, const std::string& source);
+
 /// Contact parameters of one pair of surfaces.
 struct ContactParameters {
     /// Effective (pair) plane-strain modulus E* (Pa), > 0: 1/E* = (1 - nu_a^2)/E_a +
@@ -33,6 +55,8 @@ struct ContactParameters {
     /// slower slip counts as sticking. Unused by the anchor law and by rigid contact.
     /// Default 1e-3.
     double transitionVelocity = 1e-3;
+    /// Where a capsule touches a solid (compliant contact only). Default Deepest.
+    CapsuleContact capsuleContact = CapsuleContact::Deepest;
 
     /// Checks every field: effectiveStiffness and transitionVelocity finite and > 0;
     /// dissipation and the three friction coefficients finite and >= 0; dynamicFriction <=

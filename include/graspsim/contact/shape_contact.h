@@ -10,14 +10,15 @@
 ///  - sphere/capsule vs sphere/capsule: one contact, between the closest points of the two
 ///    cores (closed form);
 ///  - sphere/capsule vs box or half-space: one contact, at the core point where the solid's SDF
-///    is least;
+///    is least; for a capsule under CapsuleContact::Ends (compliant contact's choice), one at each
+///    core end within reach and one at a deeper interior minimum, less the deeper end's depth;
 ///  - box vs box: each vertex of either box inside the other, and each edge of either box whose
 ///    deepest point inside the other is interior to the edge (an edge crossing the other box's
 ///    edge, or lying across one of its faces);
 ///  - box vs half-space: each vertex below the surface.
 ///
 ///  - sphere/capsule vs cylinder, ellipsoid or convex mesh: one contact, at the core point
-///    where the solid's exact SDF is least (as for boxes);
+///    where the solid's exact SDF is least (as for boxes, CapsuleContact::Ends too);
 ///  - box vs cylinder, ellipsoid or convex mesh: each box vertex inside the solid and each box
 ///    edge whose deepest point inside it is interior to the edge; for a convex mesh also its
 ///    vertices and edges inside the box, with the box-box edge-edge rule (so a mesh of a box
@@ -73,6 +74,7 @@
 
 #include <vector>
 
+#include "graspsim/contact/contact_parameters.h"
 #include "graspsim/contact/contact_shape.h"
 #include "graspsim/model/model_description.h"
 
@@ -93,9 +95,12 @@ struct ContactPoint {
 std::vector<ContactPoint> findContacts(const ContactShape& a, const SimTK::Transform& X_GA,
                                        const ContactShape& b, const SimTK::Transform& X_GB);
 
-/// As above, appending to `contacts` (so a caller can reuse one buffer without allocating).
+/// As above, appending to `contacts` (so a caller can reuse one buffer without allocating), with
+/// `rule` choosing where a capsule touches a box, half-space or object solid (CapsuleContact;
+/// findContacts() uses Deepest).
 void appendContacts(const ContactShape& a, const SimTK::Transform& X_GA, const ContactShape& b,
-                    const SimTK::Transform& X_GB, std::vector<ContactPoint>& contacts);
+                    const SimTK::Transform& X_GB, std::vector<ContactPoint>& contacts,
+                    CapsuleContact rule = CapsuleContact::Deepest);
 
 /// Contacts between two model geometries; X_GA and X_GB are the poses of the geometry frames in
 /// Ground (the geometries' own X_BG are not used here: compose X_GA = X_GBody * X_BG yourself).
