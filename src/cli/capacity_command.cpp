@@ -1,6 +1,7 @@
 #include "capacity_command.h"
 
 #include "approx_only_options.h"
+#include "capsule_contact_option.h"
 #include "friction_option.h"
 #include "number_option.h"
 #include "output_folder.h"
@@ -41,6 +42,7 @@ struct CapacityCommand::Options {
     std::string dropThreshold;
     std::string contact = "compliant";
     std::string friction;
+    std::string capsuleContact;
     std::string mode = "full";
     std::string constraint = "bushing";
     std::string attach = "merged";
@@ -71,6 +73,7 @@ struct CapacityCommand::Plan {
     bool torqueRateFromForceRate = false;
     double hold = 1, guess = 0, load = 0;
     std::optional<contact::FrictionModel> friction;  // --friction, over the scenario's
+    std::optional<contact::CapsuleContact> capsuleContact;  // --capsule-contact, over the scenario's
     int jobs = 1;  // directions measured at once
 };
 
@@ -109,6 +112,10 @@ CapacityCommand::CapacityCommand(CLI::App& app) : options_(std::make_shared<Opti
     command_->add_option("--friction", o.friction,
                          "compliant contact's friction law, regularized or anchor (true stiction; default: the "
                          "scenario's contact.friction_model, itself regularized by default)");
+    command_->add_option("--capsule-contact", o.capsuleContact,
+                         "where a capsule (a phalanx) presses on a solid in compliant contact, deepest (one point, "
+                         "default: the scenario's contact.capsule_contact) or ends (each end of its core: continuous as it "
+                         "tilts through lying flat; docs/contact.md)");
     command_->add_option("--mode", o.mode, "full (default) or approx");
     command_->add_option("--constraint", o.constraint, "approx: bushing (default) or weld");
     command_->add_option("--attach", o.attach, "approx: merged (default) or multi");
@@ -224,6 +231,7 @@ CapacityCommand::Plan CapacityCommand::makePlan() const {
     Plan plan;
     plan.simulation.contact = simulation::parseContactModel(o.contact, "--contact");
     plan.friction = parseFrictionOption(o.friction, plan.simulation.contact);
+    plan.capsuleContact = parseCapsuleContactOption(o.capsuleContact, plan.simulation.contact);
     plan.simulation.mode = simulation::parseSimulationMode(o.mode, "--mode");
     checkApproxOnlyOptions(*command_, o.mode, {"--constraint", "--attach", "--release-slide", "--release-penetration", "--q-minimum",
                                                "--limits-friction", "--limits", "--release-at", "--release-give", "--hand-back"});
@@ -309,6 +317,7 @@ int CapacityCommand::run() const {
     const Plan plan = makePlan();
     scenario::Scenario scenario = planning::loadScenario(o.scenario);
     if (plan.friction) scenario.friction.model = *plan.friction;
+    if (plan.capsuleContact) scenario.contact.capsuleContact = *plan.capsuleContact;
     simulation::checkApproxAttach(scenario, plan.simulation);
     for (const capacity::GraspCapacityRequest& r : plan.requests) capacity::checkLoadResistible(scenario, r);
     simulation::checkScenarioSetup(scenario, plan.simulation);  // before the folder exists
@@ -331,7 +340,9 @@ int CapacityCommand::run() const {
     }
     const capacity::GraspCapacity& first = measurements.front();
     std::string last = "capacity of " + scenario.name + " (" + simulation::toString(first.contact) +
-                       (first.friction ? ", " + contact::toString(*first.friction) + " friction" : "") + ", " + simulation::toString(first.mode) +
+                       (first.friction ? ", " + contact::toString(*first.friction) + " friction" : "") +
+                       (scenario.contact.capsuleContact == contact::CapsuleContact::Ends ? ", capsules at ends" : "") + ", " +
+                       simulation::toString(first.mode) +
                        (first.realization.empty() ? "" : ", " + first.realization) + "): ";
     for (std::size_t k = 0; k < measurements.size(); ++k) last += (k ? "; " : "") + capacity::describeCapacity(measurements[k]);
     std::cout << last << (o.out.empty() ? "" : "; files in " + o.out) << "\n";

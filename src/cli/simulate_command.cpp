@@ -1,6 +1,7 @@
 #include "simulate_command.h"
 
 #include "approx_only_options.h"
+#include "capsule_contact_option.h"
 #include "friction_option.h"
 #include "number_option.h"
 #include "output_folder.h"
@@ -28,6 +29,7 @@ struct SimulateCommand::Options {
     std::string scenario;
     std::string contact = "compliant";
     std::string friction;
+    std::string capsuleContact;
     std::string mode = "full";
     std::string constraint = "bushing";
     std::string attach = "merged";
@@ -54,6 +56,10 @@ SimulateCommand::SimulateCommand(CLI::App& app) : options_(std::make_shared<Opti
     command_->add_option("--friction", o.friction,
                          "compliant contact's friction law, regularized or anchor (true stiction; default: the "
                          "scenario's contact.friction_model, itself regularized by default)");
+    command_->add_option("--capsule-contact", o.capsuleContact,
+                         "where a capsule (a phalanx) presses on a solid in compliant contact, deepest (one point, "
+                         "default: the scenario's contact.capsule_contact) or ends (each end of its core: continuous as it "
+                         "tilts through lying flat; docs/contact.md)");
     command_->add_option("--mode", o.mode, "full (default) or approx");
     command_->add_option("--constraint", o.constraint,
                          "approx: the friction-limited palm-object constraint, bushing (compliant, default) or weld (rigid)");
@@ -128,6 +134,7 @@ simulation::SimulationOptions SimulateCommand::parseOptions() const {
     simulation::SimulationOptions options;
     options.contact = simulation::parseContactModel(o.contact, "--contact");
     parseFrictionOption(o.friction, options.contact);  // refused before any work
+    parseCapsuleContactOption(o.capsuleContact, options.contact);
     options.mode = simulation::parseSimulationMode(o.mode, "--mode");
     checkApproxOnlyOptions(*command_, o.mode,
                            {"--constraint", "--attach", "--q-threshold", "--q-minimum", "--limits", "--release-at", "--release-give", "--hand-back"});
@@ -219,6 +226,7 @@ int SimulateCommand::run(const std::vector<std::string>& commandLine) const {
     planning::completeScenario(scenario);  // plans the grasp if the file asks for one
     const double planTime = planned ? std::chrono::duration<double>(std::chrono::steady_clock::now() - planStart).count() : 0.0;
     if (const auto friction = parseFrictionOption(o.friction, options.contact)) scenario.friction.model = *friction;  // scenario.yaml records it
+    if (const auto rule = parseCapsuleContactOption(o.capsuleContact, options.contact)) scenario.contact.capsuleContact = *rule;
     checkPerturbation(o.perturbation, scenario);
     options.perturbation = o.perturbation;
     simulation::checkApproxAttach(scenario, options);

@@ -59,6 +59,8 @@ TEST_F(CapacityCommand, BadInputIsOneLineAndWritesNothing) {
     expectRejected("--method constant --load 2 --direction all", "--direction");
     expectRejected("--initial-load 0", "--initial-load");
     expectRejected("--friction sticky", "--friction");
+    expectRejected("--capsule-contact both", "--capsule-contact");
+    expectRejected("--contact rigid --capsule-contact ends", "--capsule-contact");  // rigid keeps the deepest point
     expectRejected("--jobs 0", "--jobs");
     expectRejected("--jobs 1.5", "--jobs");
     expectRejected("--contact rigid --friction anchor", "--friction");  // rigid contact's is Coulomb's
@@ -149,6 +151,18 @@ TEST_F(CapacityCommand, TheFrictionLawGivenIsUsedAndNamed) {
     EXPECT_NE(slurp(fs::path(out) / "capacity.json").find("\"friction\": \"anchor\""), std::string::npos);
     const std::string last = r.out.substr(r.out.rfind('\n', r.out.size() - 2) + 1);
     EXPECT_EQ(last.rfind("capacity of phone-pinch (compliant, anchor friction, full): -y force (ramp): slips at ", 0), 0u) << last;
+}
+
+// --capsule-contact ends on the key, whose index middle phalanx lies flat on it: named in the last
+// line, and the -x ramp runs to its drop, where the one deepest point's jumps stall it (19.9 s,
+// docs/contact.md, "A capsule lying flat").
+TEST_F(CapacityCommand, TheCapsuleRuleGivenIsUsedAndNamed) {
+    const RunResult r = run("capacity key-lateral --capsule-contact ends --direction -x --integrator implicit");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const std::string last = r.out.substr(r.out.rfind('\n', r.out.size() - 2) + 1);
+    EXPECT_EQ(last.rfind("capacity of key-lateral (compliant, capsules at ends, full): -x force (ramp): slips at ", 0), 0u) << last;
+    EXPECT_NE(last.find(" N, drops at "), std::string::npos) << last;
+    EXPECT_EQ(r.err.find("stopped early"), std::string::npos) << r.err;
 }
 
 // --jobs measures directions at once on threads: the same files as one at a time (wall times

@@ -95,6 +95,18 @@ TEST_F(SimulateCommand, ShortRunWritesTheSummary) {
     EXPECT_EQ(b.out.find("mm after settling"), std::string::npos) << b.out;
 }
 
+// --capsule-contact ends reaches the run's scenario, which scenario.yaml records; the default
+// writes nothing new.
+TEST_F(SimulateCommand, TheCapsuleRuleGivenIsRecordedInScenarioYaml) {
+    for (const bool ends : {false, true}) {
+        const std::string out = (dir_ / (ends ? "ends" : "deepest")).string();
+        const RunResult r =
+            run(std::string("simulate phone-pinch --duration 0.1 -q") + (ends ? " --capsule-contact ends" : "") + " --out " + out);
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        EXPECT_EQ(slurp(fs::path(out) / "scenario.yaml").find("capsule_contact: ends") != std::string::npos, ends);
+    }
+}
+
 // The OpenSim files beside the CSVs: motion.mot has a row per trajectory.csv row and a column per
 // joint, labelled as trajectory.csv's joint columns; external_loads.xml names object_forces.sto.
 TEST_F(SimulateCommand, ShortRunWritesTheOpenSimFiles) {
@@ -196,6 +208,8 @@ TEST_F(SimulateCommand, RejectsBadOptionsWithoutTouchingTheOutputFolder) {
                    {"--step-size", "0.0025", "anchor_relaxation_time", "0.002 s", "--integrator implicit"});
     expectBadInput("simulate ball-clutch --friction lugre" + out, {"--friction", "lugre", "regularized or anchor"});
     expectBadInput("simulate ball-clutch --contact rigid --friction anchor" + out, {"--friction", "anchor", "rigid"});
+    expectBadInput("simulate ball-clutch --capsule-contact both" + out, {"--capsule-contact", "both", "deepest or ends"});
+    expectBadInput("simulate ball-clutch --contact rigid --capsule-contact ends" + out, {"--capsule-contact", "ends", "rigid"});
     expectBadInput("simulate ball-clutch --duration -1" + out, {"--duration", "-1"});
     expectBadInput("simulate ball-clutch --duration soon" + out, {"--duration", "soon"});
     expectBadInput("simulate ball-clutch --mode approx --q-threshold -1" + out, {"--q-threshold", "-1"});
