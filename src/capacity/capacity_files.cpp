@@ -78,6 +78,7 @@ Json formatMeasurement(const GraspCapacity& c) {
     j["method"] = c.method;
     j["contact"] = simulation::toString(c.contact);
     if (c.friction) j["friction"] = contact::toString(*c.friction);  // the default law's files stay as they were
+    if (c.capsuleContact) j["capsule_contact"] = contact::toString(*c.capsuleContact);  // so do the default rule's
     j["mode"] = simulation::toString(c.mode);
     j["realization"] = c.realization.empty() ? Json(nullptr) : Json(c.realization);
     j["load_start_s"] = c.start;

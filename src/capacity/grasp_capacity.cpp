@@ -158,6 +158,9 @@ GraspCapacity makeHeader(const simulation::SimulationOptions& options, const Gra
     if (options.contact == simulation::ContactModel::Compliant && scenario.friction.model != contact::FrictionModel::Regularized) {
         c.friction = scenario.friction.model;
     }
+    if (options.contact == simulation::ContactModel::Compliant && scenario.contact.capsuleContact != contact::CapsuleContact::Deepest) {
+        c.capsuleContact = scenario.contact.capsuleContact;
+    }
     c.mode = options.mode;
     if (options.mode == simulation::SimulationMode::Approx) {
         const simulation::ApproxOptions approx = simulation::resolveApproxOptions(options.approx, scenario.approximation);

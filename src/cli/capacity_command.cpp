@@ -341,7 +341,7 @@ int CapacityCommand::run() const {
     const capacity::GraspCapacity& first = measurements.front();
     std::string last = "capacity of " + scenario.name + " (" + simulation::toString(first.contact) +
                        (first.friction ? ", " + contact::toString(*first.friction) + " friction" : "") +
-                       (scenario.contact.capsuleContact == contact::CapsuleContact::Ends ? ", capsules at ends" : "") + ", " +
+                       (first.capsuleContact ? ", capsules at " + contact::toString(*first.capsuleContact) : "") + ", " +
                        simulation::toString(first.mode) +
                        (first.realization.empty() ? "" : ", " + first.realization) + "): ";
     for (std::size_t k = 0; k < measurements.size(); ++k) last += (k ? "; " : "") + capacity::describeCapacity(measurements[k]);

@@ -154,11 +154,13 @@ TEST_F(CapacityCommand, TheFrictionLawGivenIsUsedAndNamed) {
 }
 
 // --capsule-contact ends on the key, whose index middle phalanx lies flat on it: named in the last
-// line, and the -x ramp runs to its drop, where the one deepest point's jumps stall it (19.9 s,
-// docs/contact.md, "A capsule lying flat").
+// line and in capacity.json, and the -x ramp runs to its drop, where the one deepest point's jumps
+// stall it (19.9 s, docs/contact.md, "A capsule lying flat").
 TEST_F(CapacityCommand, TheCapsuleRuleGivenIsUsedAndNamed) {
-    const RunResult r = run("capacity key-lateral --capsule-contact ends --direction -x --integrator implicit");
+    const std::string out = (dir_ / "cap").string();
+    const RunResult r = run("capacity key-lateral --capsule-contact ends --direction -x --integrator implicit --out " + out);
     ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(slurp(fs::path(out) / "capacity.json").find("\"capsule_contact\": \"ends\""), std::string::npos);
     const std::string last = r.out.substr(r.out.rfind('\n', r.out.size() - 2) + 1);
     EXPECT_EQ(last.rfind("capacity of key-lateral (compliant, capsules at ends, full): -x force (ramp): slips at ", 0), 0u) << last;
     EXPECT_NE(last.find(" N, drops at "), std::string::npos) << last;

@@ -70,6 +70,9 @@ struct GraspCapacity {
     /// Compliant contact's friction law (the scenario's contact.friction_model, or --friction) when it
     /// is not the default, regularized; none for that law and for rigid contact. Reports name it.
     std::optional<contact::FrictionModel> friction;
+    /// Compliant contact's capsule rule (contact.capsule_contact, or --capsule-contact) when it is
+    /// not the default, deepest; none for that rule and for rigid contact. Reports name it.
+    std::optional<contact::CapsuleContact> capsuleContact;
     simulation::SimulationMode mode = simulation::SimulationMode::Full;
     std::string realization;  ///< "" in full mode, else e.g. "bushing merged, limits thesis, release at compliance"
     double start = 0;         ///< load start (s)
