@@ -45,12 +45,8 @@ void appendSweptObjectContact(const SweptSphere& swept, const ContactShape& soli
         const ObjectSurface surface = findObjectSurface(solid, core_S);
         return CoreSurface{core_S, surface.distance, surface.n_S, combineRadii(swept.radius, surface.curvatureRadius)};
     };
-    const CoreSurface deepest = surfaceAt(findDeepestObjectCorePoint(c0_S, c1_S, solid));
-    if (rule == CapsuleContact::Ends && c0_S != c1_S) {
-        appendCoreEndContacts(surfaceAt(c0_S), surfaceAt(c1_S), deepest, swept.radius, X_GS, contacts);
-    } else {
-        appendCoreContact(deepest, swept.radius, 0, X_GS, contacts);
-    }
+    appendCoreContacts(c0_S, c1_S, findDeepestObjectCorePoint(c0_S, c1_S, solid), swept.radius, rule, X_GS, surfaceAt,
+                       contacts);
 }
 
 namespace {

@@ -179,12 +179,7 @@ void appendSweptSolidContact(const SweptSphere& swept, const ContactShape& solid
         const BoxSurfacePoint surface = findSolidSurface(solid, core_S);
         return CoreSurface{core_S, surface.distance, surface.n_S, swept.radius};
     };
-    const CoreSurface deepest = surfaceAt(findDeepestCorePoint(c0_S, c1_S, solid));
-    if (rule == CapsuleContact::Ends && c0_S != c1_S) {
-        appendCoreEndContacts(surfaceAt(c0_S), surfaceAt(c1_S), deepest, swept.radius, X_GS, contacts);
-    } else {
-        appendCoreContact(deepest, swept.radius, 0, X_GS, contacts);
-    }
+    appendCoreContacts(c0_S, c1_S, findDeepestCorePoint(c0_S, c1_S, solid), swept.radius, rule, X_GS, surfaceAt, contacts);
 }
 
 }  // namespace graspsim::contact

@@ -53,6 +53,20 @@ void appendCoreContact(const CoreSurface& surface, double radius, double depthOf
 void appendCoreEndContacts(const CoreSurface& end0, const CoreSurface& end1, const CoreSurface& deepest, double radius,
                            const SimTK::Transform& X_GS, std::vector<ContactPoint>& contacts);
 
+/// Appends a swept sphere's contacts with a solid under `rule`, from its core's ends c0_S and c1_S
+/// and the core point deepest in the solid, each turned into a CoreSurface by surfaceAt(p_S).
+template <class SurfaceAt>
+void appendCoreContacts(const SimTK::Vec3& c0_S, const SimTK::Vec3& c1_S, const SimTK::Vec3& deepest_S, double radius,
+                        CapsuleContact rule, const SimTK::Transform& X_GS, SurfaceAt&& surfaceAt,
+                        std::vector<ContactPoint>& contacts) {
+    const CoreSurface deepest = surfaceAt(deepest_S);
+    if (rule == CapsuleContact::Ends && c0_S != c1_S) {
+        appendCoreEndContacts(surfaceAt(c0_S), surfaceAt(c1_S), deepest, radius, X_GS, contacts);
+    } else {
+        appendCoreContact(deepest, radius, 0, X_GS, contacts);
+    }
+}
+
 /// Appends the contacts between a swept sphere and a box or half-space `solid` posed at X_GS, if
 /// any (one, or for a capsule under CapsuleContact::Ends up to three); normals point from the swept
 /// sphere toward the solid.
