@@ -84,6 +84,7 @@ int optimize(GraspObjective& objective, std::vector<double>& x) {
 GraspPlan finishPlan(const GraspRequest& request, GraspObjective& objective, const std::vector<double>& x) {
     GraspPlan plan = objective.makePlan(x.data());
     plan.kp = findGraspTemplate(request.type).kp;
+    plan.capsuleContact = findGraspTemplate(request.type).capsuleContact;
     plan.pressDepth = request.pressDepth;
     roundPlan(plan);
     plan.goals = objective.findGoals(plan.jointAngles, plan.X_GO);
@@ -241,6 +242,7 @@ GraspPlan planGrasp(const GraspRequest& givenRequest, const PlanTolerances& tole
         }
     }
     plan.kp = graspTemplate.kp;
+    plan.capsuleContact = graspTemplate.capsuleContact;
     plan.pressDepth = request.pressDepth;
     plan.segmentPoints = request.bodyOptions.segmentPoints;
     plan.diagnostics.evaluations = evaluations;

@@ -69,6 +69,10 @@ GraspTemplate findLateralTemplate() {
     // contact, and its friction in the stiction band (mu N / transition velocity on a 20 g body)
     // stalled the integrator after the release; at 2 it holds with about 0.4 N.
     t.kp = 2;
+    // The middle phalanx lies flat on the key. With one contact at its deepest point, the key's
+    // -x, z and torque y ramps stalled (one -x ramp took 6.5 min at the default accuracy, 0.5 s at
+    // ends): docs/contact.md, "A capsule lying flat".
+    t.capsuleContact = contact::CapsuleContact::Ends;
     // The thumb reaches over the index only extended to its CMC limit (-20 deg); it presses by
     // flexing, away from that limit, so the 5 deg margin the other types keep only costs the reach
     // (the plan's reach test still checks that both pads press). With 5 deg the key's plan put the

@@ -21,6 +21,7 @@ scenario::Scenario applyPlan(const scenario::Scenario& base, const GraspPlan& pl
     s.object.position = {plan.X_GO.p()[0], plan.X_GO.p()[1], plan.X_GO.p()[2]};
     s.object.orientation = {xyz[0], xyz[1], xyz[2]};
     s.controller.kp = plan.kp;
+    if (plan.capsuleContact == contact::CapsuleContact::Ends) s.contact.capsuleContact = plan.capsuleContact;
     s.bodyOptions.segmentPoints = plan.segmentPoints;
     // as planned: within a thin object's half-thickness, deeper where the fingers would not press
     s.controller.pressDepth = plan.pressDepth > 0 ? plan.pressDepth : findPlannedPressDepth(s);

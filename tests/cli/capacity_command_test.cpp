@@ -153,9 +153,9 @@ TEST_F(CapacityCommand, TheFrictionLawGivenIsUsedAndNamed) {
     EXPECT_EQ(last.rfind("capacity of phone-pinch (compliant, anchor friction, full): -y force (ramp): slips at ", 0), 0u) << last;
 }
 
-// --capsule-contact ends on the key, whose index middle phalanx lies flat on it: named in the last
-// line and in capacity.json, and the -x ramp runs to its drop, where the one deepest point's jumps
-// stall it (19.9 s, docs/contact.md, "A capsule lying flat").
+// --capsule-contact ends on the key, whose index middle phalanx lies flat on it (the rule its plan
+// writes): named in the last line and in capacity.json, and the -x ramp runs to its drop, where the
+// one deepest point's jumps stall it (docs/contact.md, "A capsule lying flat").
 TEST_F(CapacityCommand, TheCapsuleRuleGivenIsUsedAndNamed) {
     const std::string out = (dir_ / "cap").string();
     const RunResult r = run("capacity key-lateral --capsule-contact ends --direction -x --integrator implicit --out " + out);

@@ -34,6 +34,7 @@ TEST(PlannedScenario, AGraspTypeIsPlannedWhenTheScenarioIsCompleted) {
     EXPECT_FALSE(s.graspPose.empty());
     for (const auto& [effector, goal] : s.goals) EXPECT_LT(std::abs(s.object.calcSurfaceDistance(goal)), 2e-4) << effector;
     EXPECT_EQ(s.controller.kp, 10.0);  // no gain in the file: the plan's (a five-finger clutch, as ball-clutch.yaml)
+    EXPECT_EQ(s.contact.capsuleContact, contact::CapsuleContact::Deepest);  // fingertip pads: the file's rule
     // the completed scenario is an ordinary one: written and read back, the same pose and goals
     const scenario::Scenario reread = scenario::parseScenario(scenario::formatScenarioYaml(s), "resolved.yaml");
     ASSERT_EQ(reread.graspPose.size(), s.graspPose.size());
@@ -48,7 +49,8 @@ TEST(PlannedScenario, AGainGivenInTheFileStays) {
 }
 
 // A key in a lateral pinch with no controller section: the default 2 mm press does not fit its
-// 3 mm thickness, and the plan sets both the press (below the half-thickness) and its gain.
+// 3 mm thickness, and the plan sets both the press (below the half-thickness) and its gain; the
+// index middle phalanx lies flat on the key, so the plan presses capsules at their ends.
 TEST(PlannedScenario, AThinObjectTakesThePlansPressAndGain) {
     scenario::Scenario s = scenario::parseScenario(
         "name: key\nobject: {shape: box, mass: 0.02, size: [0.05, 0.02, 0.003]}\ngrasp: {type: lateral}\n", "key.yaml");
@@ -56,6 +58,7 @@ TEST(PlannedScenario, AThinObjectTakesThePlansPressAndGain) {
     EXPECT_EQ(s.controller.kp, 2.0);
     EXPECT_GT(s.controller.pressDepth, 0);
     EXPECT_LT(s.controller.pressDepth, 0.0015);  // the reader's rule: below the half-thickness
+    EXPECT_EQ(s.contact.capsuleContact, contact::CapsuleContact::Ends);
 }
 
 TEST(PlannedScenario, AScenarioWithAPoseIsLeftAsItIs) {

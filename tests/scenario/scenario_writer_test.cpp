@@ -138,7 +138,7 @@ TEST(ScenarioWriter, AnchorFrictionIsWrittenOnlyWhenChosen) {
 
 // The default capsule rule writes nothing new; the ends rule writes itself and reads back.
 TEST(ScenarioWriter, CapsuleContactIsWrittenOnlyWhenChosen) {
-    Scenario s = findBuiltinScenario("key-lateral");
+    Scenario s = findBuiltinScenario("phone-pinch");
     EXPECT_EQ(formatScenarioYaml(s).find("capsule_contact"), std::string::npos);
     s.contact.capsuleContact = contact::CapsuleContact::Ends;
     const std::string text = formatScenarioYaml(s);

@@ -27,6 +27,7 @@
 
 #include "graspsim/simbody.h"
 
+#include "graspsim/contact/contact_parameters.h"
 #include "graspsim/contact/contact_shape.h"
 #include "graspsim/error.h"
 #include "graspsim/model/build_options.h"
@@ -97,6 +98,9 @@ struct GraspPlan {
     std::vector<std::string> goalEffectors;      ///< thumb first, then index to little
     std::map<std::string, SimTK::Vec3> goals;    ///< goal point on the surface per effector, in O (m)
     double kp = 5;                               ///< suggested finger PD gain (N m/rad)
+    /// The template's capsule rule (GraspTemplate::capsuleContact); applyPlan writes Ends into the
+    /// scenario and leaves the scenario's rule for Deepest.
+    contact::CapsuleContact capsuleContact = contact::CapsuleContact::Deepest;
     /// The controller's press depth the plan is made for (m): the request's, or deeper when the
     /// passive springs and the release would leave a goal finger less than half of it; 0: the
     /// request's (a plan not made by planGrasp).

@@ -4,6 +4,7 @@
 /// end-effectors hold the object, and the controller gain. The planner keeps the arm and wrist
 /// at this posture and optimizes the fingers from the start pose.
 
+#include "graspsim/contact/contact_parameters.h"
 #include "graspsim/planning/grasp_type.h"
 
 #include <map>
@@ -17,6 +18,10 @@ struct GraspTemplate {
     std::map<std::string, double> startPose;   ///< arm posture (kept) and finger start (optimized)
     std::vector<std::string> goalEffectors;    ///< end-effectors on the object, thumb first
     double kp = 5;                             ///< finger PD gain for the scenario (N m/rad)
+    /// The capsule rule the grasp needs: Ends where a phalanx's side lies flat on the object
+    /// (lateral), whose one deepest point would jump from end to end as the phalanx tilts;
+    /// Deepest (fingertip pads) leaves the scenario's rule.
+    contact::CapsuleContact capsuleContact = contact::CapsuleContact::Deepest;
     /// The goal pads' mean inward surface normal must point against gravity by at least this
     /// (a cosine, 0 = horizontal squeeze allowed): the fingers curl under the object, so their
     /// normal forces, not friction alone, carry part of its weight.
