@@ -118,6 +118,8 @@ std::string describeSlip(const CapacityRow& row) {
     std::string text = formatBriefNumber(f.slipOnsetLoad) + unit;
     if (row.hasReference) text += " (" + formatSignedPercent(row.relativeDifference) + ")";
     if (f.released && f.releaseLoad <= f.slipOnsetLoad) text += ", released first";
+    // The onset was measured; the drop, which the run did not reach, was not.
+    if (!row.measured.trace.failure.empty()) text += ", then " + describeFailure(row.measured.trace.failure);
     return text;
 }
 
@@ -130,6 +132,7 @@ std::string describeOverload(const CapacityRow& row) {
     std::string text = formatBriefNumber(1000 * f.slipOnsetTime) + " ms";
     if (row.hasOverloadReference) text += " (" + formatSignedPercent(row.overloadTimeDifference) + ")";
     if (f.released) text += ", released at " + formatBriefNumber(1000 * f.releaseTime) + " ms";
+    if (!row.overload.trace.failure.empty()) text += ", then " + describeFailure(row.overload.trace.failure);
     return text;
 }
 
@@ -360,7 +363,7 @@ std::string formatCapacityMarkdown(const std::vector<CapacityRow>& rows) {
     md << "\n## Holding capacity: full contact against the approximation\n\n"
        << "Slip onset of a load ramped from the settled grasp (graspsim capacity; the difference to full contact's in "
           "parentheses; \"released first\": the approximation let go at or before that load, and the slip was then full "
-          "contact's). approx-bushing-merged, the default, also releases at the compliance model's limits; the other "
+          "contact's; \"then failed\": the run stopped after the onset, before any drop). approx-bushing-merged, the default, also releases at the compliance model's limits; the other "
           "variants are on the thesis's switch: -thesis is the default's box limits alone, -contact and -compliance "
           "those limit models alone. The scenes `graspsim grasp plan` set up (not the thesis's) are compared on "
           "the default only. Every ramp's figures are in capacity.csv.\n";

@@ -40,6 +40,16 @@ TEST(CapacityComparison, ReportTablesHaveALinePerLoadAndAColumnPerVariant) {
     EXPECT_TRUE(formatCapacityMarkdown({}).empty());
 }
 
+// A ramp that slipped and then stopped (a stalled integrator) keeps its onset and says it failed:
+// its drop was never measured.
+TEST(CapacityComparison, AnOnsetBeforeAFailureIsMarked) {
+    std::vector<CapacityRow> rows{makeRow("key-lateral", "-x", "full", 0.427), makeRow("key-lateral", "z", "full", 0)};
+    rows[0].measured.trace.failure = "the integrator stalled between t = 3.095 and 3.1 s";
+    rows[1].measured.trace.failure = "the integrator stalled between t = 2 and 2.01 s";
+    const std::string md = formatCapacityMarkdown(rows);
+    EXPECT_NE(md.find("| -x | 0.427 N, then failed (integrator) |\n| z | failed (integrator) |\n"), std::string::npos) << md;
+}
+
 // Full contact's grip at the load's start and at the onset, with its change, in report.md and
 // capacity.csv's last two columns; the approximation's rows (engaged: not measured) stay out of the
 // table and leave the columns empty.
