@@ -84,7 +84,6 @@ int optimize(GraspObjective& objective, std::vector<double>& x) {
 GraspPlan finishPlan(const GraspRequest& request, GraspObjective& objective, const std::vector<double>& x) {
     GraspPlan plan = objective.makePlan(x.data());
     plan.kp = findGraspTemplate(request.type).kp;
-    plan.capsuleContact = findGraspTemplate(request.type).capsuleContact;
     plan.pressDepth = request.pressDepth;
     roundPlan(plan);
     plan.goals = objective.findGoals(plan.jointAngles, plan.X_GO);
