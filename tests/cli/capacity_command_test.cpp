@@ -153,14 +153,23 @@ TEST_F(CapacityCommand, TheFrictionLawGivenIsUsedAndNamed) {
     EXPECT_EQ(last.rfind("capacity of phone-pinch (compliant, anchor friction, full): -y force (ramp): slips at ", 0), 0u) << last;
 }
 
-// --capsule-contact ends on the key, whose index middle phalanx lies flat on it (the rule its plan
-// writes): named in the last line and in capacity.json, and the -x ramp runs to its drop, where the
-// one deepest point's jumps stall it (docs/contact.md, "A capsule lying flat").
+// --capsule-contact ends on the phone, whose scenario keeps the default deepest: the flag reaches
+// the run, and the last line and capacity.json name the rule.
 TEST_F(CapacityCommand, TheCapsuleRuleGivenIsUsedAndNamed) {
     const std::string out = (dir_ / "cap").string();
-    const RunResult r = run("capacity key-lateral --capsule-contact ends --direction -x --integrator implicit --out " + out);
+    const RunResult r = run("capacity phone-pinch --capsule-contact ends --rate 8 --max-duration 0.6 --out " + out);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(slurp(fs::path(out) / "capacity.json").find("\"capsule_contact\": \"ends\""), std::string::npos);
+    const std::string last = r.out.substr(r.out.rfind('\n', r.out.size() - 2) + 1);
+    EXPECT_EQ(last.rfind("capacity of phone-pinch (compliant, capsules at ends, full): -y force (ramp): slips at ", 0), 0u) << last;
+}
+
+// The shipped key, whose plan presses its flat-lying index middle phalanx at both capsule ends:
+// the -x ramp runs to its drop, where the one deepest point's jumps stall it (docs/contact.md, "A
+// capsule lying flat"), and the last line names the scenario's rule.
+TEST_F(CapacityCommand, TheKeysPlannedCapsuleRuleRunsItsRampToTheDrop) {
+    const RunResult r = run("capacity key-lateral --direction -x --integrator implicit");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
     const std::string last = r.out.substr(r.out.rfind('\n', r.out.size() - 2) + 1);
     EXPECT_EQ(last.rfind("capacity of key-lateral (compliant, capsules at ends, full): -x force (ramp): slips at ", 0), 0u) << last;
     EXPECT_NE(last.find(" N, drops at "), std::string::npos) << last;
