@@ -147,8 +147,12 @@ std::string describeCapacity(const GraspCapacity& c) {
     }
     if (c.method == "constant") return text + describeConstant(c);
     const CapacityFigures& f = c.trace.figures;
-    text += f.slipped ? "slips at " + formatNumber(f.slipOnsetLoad, "%.4g") + unit : "no slip up to " +
-                        formatNumber(c.trace.samples.empty() ? 0 : c.trace.samples.back().load, "%.4g") + unit;
+    if (c.trace.samples.empty()) {
+        text += "not measured";
+    } else {
+        text += f.slipped ? "slips at " + formatNumber(f.slipOnsetLoad, "%.4g") + unit
+                          : "no slip up to " + formatNumber(c.trace.samples.back().load, "%.4g") + unit;
+    }
     if (f.slipped) text += f.dropped ? ", drops at " + formatNumber(f.dropLoad, "%.4g") + unit : ", not dropped within the ramp";
     if (!c.trace.failure.empty()) text += " [run stopped early: " + c.trace.failure + "]";
     if (f.released) text += " (approximation released at " + formatNumber(f.releaseLoad, "%.4g") + unit + (c.trace.releaseReason.empty() ? "" : ": " + c.trace.releaseReason) + ")";

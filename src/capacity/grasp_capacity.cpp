@@ -47,6 +47,7 @@ public:
     }
 
     void captureReference() override {
+        checkHeldAtLoadStart();
         const simulation::GraspSwitch* grasp = findSwitch();
         if (grasp && !grasp->isEngaged(getState())) {
             // At fixed steps a grasp that never settles is the likelier cause: a step too long to
@@ -84,6 +85,20 @@ public:
 
 private:
     const simulation::GraspSwitch* findSwitch() const { return experiment_.findSwitch(); }
+
+    // A grasp that has lost its object before the load has no capacity to measure: its slip and
+    // drop would both read 0 at the first sample, a figure of the fall, not of the grasp.
+    void checkHeldAtLoadStart() const {
+        const double distance = scene_.findMaxFingertipGoalDistance(getState());
+        const double tolerance = scene_.getScenario().simulation.heldTolerance;
+        if (distance <= tolerance) return;
+        char text[320];
+        std::snprintf(text, sizeof text,
+                      "capacity: the grasp does not hold the object at the load's start, t = %.4g s: a goal fingertip is "
+                      "%.3g mm from its goal (simulation.held_tolerance %.3g mm); graspsim simulate shows the grasp without a load",
+                      getState().getTime(), distance * 1e3, tolerance * 1e3);
+        throw NumericalError(text);
+    }
 
     const SimTK::State& getState() const { return rigid_ ? rigid_->getState() : made_.stepper->getState(); }
 

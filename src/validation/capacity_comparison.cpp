@@ -99,9 +99,11 @@ void compareOverload(const CapacityRow& full, CapacityRow& row) {
     row.overloadTimeDifference = (f.slipOnsetTime - reference.slipOnsetTime) / reference.slipOnsetTime;
 }
 
-// Why a run stopped before its object slipped: the approximation not engaged when the load began
-// (capacity::makeGraspRuns refuses to load it), or the integrator's failure.
+// Why a run stopped before its object slipped: the object not held or the approximation not
+// engaged when the load began (capacity::makeGraspRuns refuses to load either), or the
+// integrator's failure.
 std::string describeFailure(const std::string& failure) {
+    if (failure.find("does not hold the object") != std::string::npos) return "not held at the load's start";
     return failure.find("not engaged") != std::string::npos ? "not engaged at the load's start" : "failed (integrator)";
 }
 

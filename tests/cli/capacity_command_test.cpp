@@ -223,3 +223,25 @@ TEST_F(CapacityCommand, ConstantLoadWritesTheTimesItPrints) {
     EXPECT_EQ(csv.rfind("direction,load,time_s,load_value,slip_m,rotation_rad,held,engaged,grip_force_n\n-y,force,1.1000,2.5,0,", 0), 0u)
         << csv.substr(0, 200);
 }
+
+// The phone made twenty times heavier (19.6 N) slides out of the pinch, whose grip on the shipped
+// phone is about 2 N at mu_s 0.9, before the load starts. Its capacity is not a figure of 0 N (the
+// first sample would already count as slipped and dropped): the run stops, in either mode, naming
+// the grasp that does not hold, and exits 3.
+TEST_F(CapacityCommand, AGraspThatLostItsObjectBeforeTheLoadIsNotMeasured) {
+    std::string phone = slurp(fs::path(GRASPSIM_SOURCE_DIR) / "models/scenarios/phone-pinch.yaml");
+    const std::size_t mass = phone.find("  mass: 0.100");
+    ASSERT_NE(mass, std::string::npos);
+    phone.replace(mass, 13, "  mass: 2.0");
+    const std::string heavy = write("heavy-phone.yaml", phone);
+    for (const char* mode : {"full", "approx"}) {
+        const std::string out = (dir_ / (std::string("cap-") + mode)).string();
+        const RunResult r = run("capacity " + heavy + " --mode " + mode + " --out " + out);
+        EXPECT_EQ(r.exitCode, 3) << mode << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_NE(r.err.find("the grasp does not hold the object at the load's start, t = 1.1 s"), std::string::npos) << r.err;
+        const std::string last = r.out.substr(r.out.rfind('\n', r.out.size() - 2) + 1);
+        EXPECT_NE(last.find("-y force (ramp): not measured [run stopped early: "), std::string::npos) << last;
+        EXPECT_EQ(last.find(" 0 N"), std::string::npos) << last;
+    }
+}

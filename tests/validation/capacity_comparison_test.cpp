@@ -50,6 +50,16 @@ TEST(CapacityComparison, AnOnsetBeforeAFailureIsMarked) {
     EXPECT_NE(md.find("| -x | 0.427 N, then failed (integrator) |\n| z | failed (integrator) |\n"), std::string::npos) << md;
 }
 
+// A grasp that lost its object before the load (capacity::makeGraspRuns stops it) is named as such,
+// not as an integrator's failure.
+TEST(CapacityComparison, AGraspNotHoldingAtTheLoadsStartIsNamed) {
+    std::vector<CapacityRow> rows{makeRow("planned-tripod", "-y", "full", 0)};
+    rows[0].measured.trace.failure =
+        "capacity: the grasp does not hold the object at the load's start, t = 1.1 s: a goal fingertip is 1.36e+03 mm from its goal";
+    const std::string md = formatCapacityMarkdown(rows);
+    EXPECT_NE(md.find("| -y | not held at the load's start |\n"), std::string::npos) << md;
+}
+
 // Full contact's grip at the load's start and at the onset, with its change, in report.md and
 // capacity.csv's last two columns; the approximation's rows (engaged: not measured) stay out of the
 // table and leave the columns empty.
