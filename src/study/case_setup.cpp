@@ -1,5 +1,6 @@
 #include "graspsim/study/case_setup.h"
 
+#include "graspsim/capacity/load_direction.h"
 #include "graspsim/error.h"
 #include "graspsim/simulation/simulation_options.h"
 
@@ -7,6 +8,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 
 namespace graspsim::study {
@@ -70,8 +72,42 @@ std::string stripPlace(const std::string& message, const std::string& source) {
     return message.substr(at);
 }
 
+// A capacity option's number: finite and positive, as the command accepts it.
+void checkPositiveNumber(const std::string& source, const std::string& value, const char* unit) {
+    double number = 0;
+    std::size_t used = 0;
+    try {
+        number = std::stod(value, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used == 0 || used != value.size() || !std::isfinite(number) || number <= 0) {
+        throw InputError(source + ": '" + value + "' is not accepted; give a number > 0 (" + unit + ")");
+    }
+}
+
+// The capacity options; the command itself checks how they combine (a constant load needs load).
+void checkCapacityOption(const std::string& name, const std::string& value) {
+    const std::string source = "run option '" + name + "'";
+    if (name == "direction") {
+        if (value == "all") throw InputError(source + ": 'all' is not accepted in a study; make direction an axis of the directions");
+        capacity::parseLoadDirection(value, source);
+    }
+    if (name == "torque" && value != "true" && value != "false") {
+        throw InputError(source + ": '" + value + "' is not accepted; true (a torque about the centre of mass) or false (a force)");
+    }
+    if (name == "method" && value != "ramp" && value != "bisection" && value != "constant") {
+        throw InputError(source + ": '" + value + "' is not accepted; ramp, bisection or constant");
+    }
+    if (name == "rate") checkPositiveNumber(source, value, "N/s, N m/s with torque");
+    if (name == "load") checkPositiveNumber(source, value, "N, N m with torque");
+    if (name == "hold" || name == "max_duration") checkPositiveNumber(source, value, "s");
+    if (name == "slip_threshold") checkPositiveNumber(source, value, "m");
+}
+
 std::string checkRunOption(const std::string& name, const std::string& value, const scenario::Scenario& scenario) {
     const std::string source = "run option '" + name + "'";
+    checkCapacityOption(name, value);
     if (name == "mode") simulation::parseSimulationMode(value, source);
     if (name == "contact") simulation::parseContactModel(value, source);
     if (name == "constraint") simulation::parseApproxConstraint(value, source);
@@ -85,25 +121,38 @@ std::string checkRunOption(const std::string& name, const std::string& value, co
     return value;
 }
 
+// The command's flag for a study option: max_duration is --max-duration.
+std::string formatFlag(const std::string& option) {
+    std::string flag = "--" + option;
+    std::replace(flag.begin(), flag.end(), '_', '-');
+    return flag;
+}
+
 // The run options in getRunOptionNames order. The approximation's constraint and attachment (a
 // study's set, for its approx cases) are not given to a full-contact case: simulate refuses them
-// without --mode approx.
+// without --mode approx. torque is a flag: given (with no value) when true.
 std::vector<std::pair<std::string, std::string>> listRunOptions(const std::vector<Assignment>& assignments,
-                                                                 const scenario::Scenario& parsed) {
+                                                                 const scenario::Scenario& parsed, StudyCommand command) {
     std::vector<std::pair<std::string, std::string>> options;
     bool approx = false;
     for (const Assignment& a : assignments) approx = approx || (a.isRunOption && a.name == "mode" && a.value == "approx");
-    for (const std::string& option : getRunOptionNames()) {
+    for (const std::string& option : getRunOptionNames(command)) {
         const bool approxOnly = option == "constraint" || option == "attach";
         for (const Assignment& a : assignments) {
-            if (a.isRunOption && a.name == option && (!approxOnly || approx)) options.emplace_back("--" + option, checkRunOption(a.name, a.value, parsed));
+            if (!a.isRunOption || a.name != option || (approxOnly && !approx)) continue;
+            const std::string value = checkRunOption(a.name, a.value, parsed);
+            if (option == "torque") {
+                if (value == "true") options.emplace_back("--torque", "");
+                continue;
+            }
+            options.emplace_back(formatFlag(option), value);
         }
     }
     return options;
 }
 
 // The base with `assignments` applied, parsed; the options in getRunOptionNames order.
-CaseSetup applyAssignments(const scenario::ScenarioText& base, const std::vector<Assignment>& assignments) {
+CaseSetup applyAssignments(const scenario::ScenarioText& base, const std::vector<Assignment>& assignments, StudyCommand command) {
     YAML::Node root = YAML::Load(base.text);
     for (const Assignment& a : assignments) {
         if (!a.isRunOption) writeField(root, a.name, a.value);
@@ -118,7 +167,7 @@ CaseSetup applyAssignments(const scenario::ScenarioText& base, const std::vector
     } catch (const InputError& e) {
         throw InputError(stripPlace(e.what(), source));
     }
-    setup.options = listRunOptions(assignments, parsed);
+    setup.options = listRunOptions(assignments, parsed, command);
     return setup;
 }
 
@@ -180,7 +229,7 @@ CaseSetup makeCaseSetup(const StudySpec& spec, const std::vector<scenario::Scena
         assignments.push_back({axis.name, axis.isRunOption, studyCase.values[a]});
     }
     if (base >= bases.size()) throw InputError("case " + std::to_string(studyCase.index) + ": its base is not one of the study's");
-    return applyAssignments(bases[base], assignments);
+    return applyAssignments(bases[base], assignments, spec.command);
 }
 
 void checkStudyValues(const StudySpec& spec, const std::vector<scenario::ScenarioText>& bases) {
@@ -188,7 +237,7 @@ void checkStudyValues(const StudySpec& spec, const std::vector<scenario::Scenari
     const std::vector<Assignment> fixed = listFixed(spec);
     for (const scenario::ScenarioText& base : bases) {
         try {
-            applyAssignments(base, fixed);
+            applyAssignments(base, fixed, spec.command);
         } catch (const InputError& e) {
             throw InputError(place(spec, spec.fixed.empty() ? 1 : spec.fixed.front().line) + "base '" + base.source +
                              "' with the 'set' values: " + e.what());
@@ -201,7 +250,7 @@ void checkStudyValues(const StudySpec& spec, const std::vector<scenario::Scenari
                 std::vector<Assignment> assignments = fixed;
                 assignments.push_back({axis.name, axis.isRunOption, value});
                 try {
-                    applyAssignments(base, assignments);
+                    applyAssignments(base, assignments, spec.command);
                 } catch (const InputError& e) {
                     throw InputError(place(spec, axis.line) + "axis '" + axis.name + "'" +
                                      (bases.size() > 1 ? " on base '" + base.source + "'" : "") + ": " + e.what());

@@ -154,11 +154,21 @@ CaseRecord readCaseRecord(const std::string& folder, int index) {
     return record;
 }
 
-nlohmann::json readCaseSummary(const std::string& folder, int index) {
-    const std::string path = findCaseFolder(folder, index) + "/summary.json";
+std::string nameCaseResultFile(StudyCommand command) {
+    return command == StudyCommand::Capacity ? "capacity.json" : "summary.json";
+}
+
+nlohmann::json readCaseSummary(const std::string& folder, int index, StudyCommand command) {
+    const std::string path = findCaseFolder(folder, index) + "/" + nameCaseResultFile(command);
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec)) return nlohmann::json::object();
-    return readJson(path);
+    const nlohmann::json json = readJson(path);
+    if (command == StudyCommand::Simulate) return json;
+    const auto measurements = json.find("measurements");
+    if (measurements == json.end() || !measurements->is_array() || measurements->size() != 1 || !measurements->front().is_object()) {
+        throw InputError(path + ": is not the capacity.json of one measurement (\"measurements\": [{...}])");
+    }
+    return measurements->front();
 }
 
 }  // namespace graspsim::study

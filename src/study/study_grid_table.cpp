@@ -45,6 +45,28 @@ std::string describeCase(const CaseRecord& record, const nlohmann::json& summary
     return text;
 }
 
+// A capacity case's cell: its slip onset and drop (N, or N m for a torque), or times after a
+// constant load's start.
+std::string describeCapacityCase(const CaseRecord& record, const nlohmann::json& m, bool approx) {
+    const std::string prefix = approx ? "approx: " : "";
+    if (record.status == CaseStatus::Failed) return prefix + shortenError(record.error);
+    const bool torque = m.value("load", "force") == "torque";
+    const std::string unit = torque ? "nm" : "n";
+    const char* pattern = torque ? "at %.4g N m" : "at %.4g N";
+    const auto figure = [&](const std::string& load, const std::string& time, const char* none) {
+        if (m.contains(load) && m[load].is_number()) return formatNumber(pattern, m[load].get<double>());
+        if (m.contains(time) && m[time].is_number()) return formatNumber("after %.4g s", m[time].get<double>());
+        return std::string(none);
+    };
+    const std::string slip = figure("slip_onset_" + unit, "slip_onset_time_s", "");
+    const bool ramp = m.value("method", "ramp") == "ramp";
+    std::string text = prefix + (slip.empty() ? (ramp ? "no slip within the ramp" : "no slip") : "slips " + slip);
+    const std::string drop = figure("drop_" + unit, "drop_time_s", "");
+    if (!slip.empty()) text += drop.empty() ? ", not dropped" : ", drops " + drop;
+    if (record.status == CaseStatus::Incomplete) text += " (" + shortenError(record.error) + ")";
+    return text;
+}
+
 std::string findStem(const std::string& path) { return std::filesystem::path(path).stem().string(); }
 
 }  // namespace
@@ -67,11 +89,17 @@ std::string formatGridTable(const StudySpec& spec, const std::string& folder) {
         if (std::find(rows.begin(), rows.end(), row) == rows.end()) rows.push_back(row);
         const bool approx = modeAxis >= 0 && c.values[modeAxis] == "approx";
         std::string text = "not run";
+        bool failed = false;
         if (isCaseFinished(folder, c.index)) {
-            text = describeCase(readCaseRecord(folder, c.index), readCaseSummary(folder, c.index), approx);
+            const CaseRecord record = readCaseRecord(folder, c.index);
+            failed = record.status == CaseStatus::Failed;
+            const nlohmann::json summary = readCaseSummary(folder, c.index, spec.command);
+            text = spec.command == StudyCommand::Capacity ? describeCapacityCase(record, summary, approx)
+                                                          : describeCase(record, summary, approx);
         }
         std::string& cell = cells[{row, c.values[baseAxis]}];
-        if (cell.find(text.substr(text.find(": ") == std::string::npos ? 0 : text.find(": ") + 2)) != std::string::npos) continue;  // the same refusal in both modes
+        const std::string withoutMode = text.substr(text.find(": ") == std::string::npos ? 0 : text.find(": ") + 2);
+        if (failed && cell.find(withoutMode) != std::string::npos) continue;  // the same refusal in both modes
         if (approx) cell += (cell.empty() ? "" : "; ") + text;
         else cell = text + (cell.empty() ? "" : "; " + cell);
     }

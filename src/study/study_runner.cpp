@@ -45,20 +45,28 @@ std::string findLastLine(const std::string& path) {
     return last.rfind(prefix, 0) == 0 ? last.substr(prefix.size()) : last;
 }
 
+// Why a run that wrote its results stopped early: summary.json's "failure", or capacity.json's
+// measurement's.
+std::string findFailure(const std::string& path, StudyCommand command) {
+    try {
+        nlohmann::json json = nlohmann::json::parse(io::readTextFile(path));
+        if (command == StudyCommand::Capacity) json = json.at("measurements").at(0);
+        return json.value("failure", "stopped early");
+    } catch (const nlohmann::json::exception&) {
+        return "stopped early; " + fs::path(path).filename().string() + " unreadable";
+    }
+}
+
 // The case's status from how its process ended and what it wrote.
-CaseRecord judgeCase(const RunningCase& running, const ProcessEnd& end) {
+CaseRecord judgeCase(const RunningCase& running, const ProcessEnd& end, StudyCommand command) {
     CaseRecord record{running.studyCase.index, CaseStatus::Failed, "", running.studyCase.values};
-    const std::string summaryPath = running.tmpFolder + "/summary.json";
+    const std::string summaryPath = running.tmpFolder + "/" + nameCaseResultFile(command);
     const bool hasSummary = fs::is_regular_file(summaryPath);
     if (end.exitCode == 0 && hasSummary) {
         record.status = CaseStatus::Ok;
     } else if (end.exitCode == 3 && hasSummary) {
         record.status = CaseStatus::Incomplete;
-        try {
-            record.error = nlohmann::json::parse(io::readTextFile(summaryPath)).value("failure", "stopped early");
-        } catch (const nlohmann::json::exception&) {
-            record.error = "stopped early; summary.json unreadable";
-        }
+        record.error = findFailure(summaryPath, command);
     } else {
         record.error = findLastLine(running.tmpFolder + "/stderr.txt");
         if (record.error.empty()) {
@@ -116,10 +124,10 @@ private:
             return;
         }
         io::writeFileAtomically(tmp + "/scenario.yaml", setup.scenarioYaml);
-        std::vector<std::string> arguments{"simulate", tmp + "/scenario.yaml", "--out", tmp};
+        std::vector<std::string> arguments{toString(spec_.command), tmp + "/scenario.yaml", "--out", tmp};
         for (const auto& [option, value] : setup.options) {
             arguments.push_back(option);
-            arguments.push_back(value);
+            if (!value.empty()) arguments.push_back(value);
         }
         const pid_t pid = startCaseProcess(settings_.executable, arguments, tmp + "/stdout.txt", tmp + "/stderr.txt");
         running_[pid] = {studyCase, tmp};
@@ -130,7 +138,7 @@ private:
         if (it == running_.end()) return;  // not one of ours
         const RunningCase running = it->second;
         running_.erase(it);
-        record(running.tmpFolder, judgeCase(running, end));
+        record(running.tmpFolder, judgeCase(running, end, spec_.command));
     }
 
     void record(const std::string& tmp, const CaseRecord& caseRecord) {

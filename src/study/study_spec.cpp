@@ -22,7 +22,7 @@ namespace {
 // that finishes, and keeps a mistyped range from filling the disk.
 constexpr int kMaxCases = 1000000;
 
-const std::vector<std::string> kTopKeys{"name", "description", "base", "set", "axes", "sampling", "samples", "seed", "measures"};
+const std::vector<std::string> kTopKeys{"name", "description", "command", "base", "set", "axes", "sampling", "samples", "seed", "measures"};
 
 std::string join(const std::vector<std::string>& names) {
     std::string text;
@@ -49,6 +49,11 @@ std::string formatYaml(const YAML::Node& node) {
 bool isRunOption(const std::string& name) {
     const auto& options = getRunOptionNames();
     return std::find(options.begin(), options.end(), name) != options.end();
+}
+
+// A capacity option that takes a number may be a range, as a scenario field may.
+bool isNumericRunOption(const std::string& name) {
+    return name == "rate" || name == "load" || name == "hold" || name == "max_duration" || name == "slip_threshold";
 }
 
 // A field path is dot-separated names; the scenario reader decides whether the field exists.
@@ -115,12 +120,13 @@ StudyAxis readAxis(const std::string& source, const YAML::Node& key, const YAML:
             }
         }
         if (axis.values.empty()) reject(source, key, "axis '" + axis.name + "' is empty; give a list of values or a range {from, to, steps}");
-    } else if (value.IsMap() && !axis.isRunOption) {
+    } else if (value.IsMap() && (!axis.isRunOption || isNumericRunOption(axis.name))) {
         axis.isRange = true;
         axis.range = readRange(source, value, axis.name);
     } else {
         reject(source, key, "axis '" + axis.name + "' value '" + formatYaml(value) +
-                                "' is not accepted; give a list of values" + (axis.isRunOption ? "" : " or a range {from, to, steps}"));
+                                "' is not accepted; give a list of values" +
+                                (axis.isRunOption && !isNumericRunOption(axis.name) ? "" : " or a range {from, to, steps}"));
     }
     return axis;
 }
@@ -152,16 +158,19 @@ std::vector<FixedValue> readFixed(const std::string& source, const YAML::Node& n
     return fixed;
 }
 
-std::vector<std::string> readMeasures(const std::string& source, const YAML::Node& node) {
-    const auto& known = getMeasureNames();
+std::string nameResultFile(StudyCommand command) { return command == StudyCommand::Capacity ? "capacity.json" : "summary.json"; }
+
+std::vector<std::string> readMeasures(const std::string& source, const YAML::Node& node, StudyCommand command) {
+    const auto& known = getMeasureNames(command);
+    const std::string file = nameResultFile(command);
     if (!node || !node.IsSequence() || node.size() == 0) {
-        reject(source, node ? node : YAML::Node(), "'measures' is missing or empty; give a list of summary.json keys: " + join(known));
+        reject(source, node ? node : YAML::Node(), "'measures' is missing or empty; give a list of " + file + " keys: " + join(known));
     }
     std::vector<std::string> measures;
     for (const auto& item : node) {
         const std::string name = readText(source, item, "measures");
         if (std::find(known.begin(), known.end(), name) == known.end()) {
-            reject(source, item, "measure '" + name + "' is not accepted; measures are summary.json keys: " + join(known));
+            reject(source, item, "measure '" + name + "' is not accepted; measures are " + file + " keys: " + join(known));
         }
         if (std::find(measures.begin(), measures.end(), name) != measures.end()) {
             reject(source, item, "measure '" + name + "' is listed twice; give each measure once");
@@ -169,6 +178,27 @@ std::vector<std::string> readMeasures(const std::string& source, const YAML::Nod
         measures.push_back(name);
     }
     return measures;
+}
+
+StudyCommand readCommand(const std::string& source, const YAML::Node& node) {
+    const std::string command = readText(source, node, "command");
+    if (command == "simulate") return StudyCommand::Simulate;
+    if (command == "capacity") return StudyCommand::Capacity;
+    reject(source, node, "'command' value '" + command + "' is not accepted; simulate (default) or capacity");
+}
+
+// A run option of the other command (a load direction in a simulate study, a perturbation in a
+// capacity study) would be refused by every case's process.
+void checkCommandOptions(const StudySpec& spec) {
+    const auto& own = getRunOptionNames(spec.command);
+    const auto check = [&](const std::string& name, bool isOption, int line) {
+        if (!isOption || std::find(own.begin(), own.end(), name) != own.end()) return;
+        const std::string other = toString(spec.command == StudyCommand::Capacity ? StudyCommand::Simulate : StudyCommand::Capacity);
+        throw InputError(spec.source + ":" + std::to_string(line) + ": run option '" + name + "' is not accepted with command: " +
+                         toString(spec.command) + " (its options: " + join(own) + "); it is an option of command: " + other);
+    };
+    for (const FixedValue& f : spec.fixed) check(f.name, f.isRunOption, f.line);
+    for (const StudyAxis& a : spec.axes) check(a.name, a.isRunOption, a.line);
 }
 
 // A base that is not a built-in name is a file path, relative to the study file's folder.
@@ -232,12 +262,26 @@ void readSampling(const std::string& source, const YAML::Node& root, StudySpec& 
 
 }  // namespace
 
+std::string toString(StudyCommand command) { return command == StudyCommand::Capacity ? "capacity" : "simulate"; }
+
 const std::vector<std::string>& getRunOptionNames() {
-    static const std::vector<std::string> names{"mode", "contact", "constraint", "attach", "integrator", "perturbation"};
+    static const std::vector<std::string> names{"mode",   "contact", "constraint", "attach", "integrator",   "perturbation",  "direction",
+                                                "torque", "rate",    "method",     "load",   "hold",         "max_duration",  "slip_threshold"};
     return names;
 }
 
-const std::vector<std::string>& getMeasureNames() {
+const std::vector<std::string>& getRunOptionNames(StudyCommand command) {
+    static const std::vector<std::string> simulate{"mode", "contact", "constraint", "attach", "integrator", "perturbation"};
+    static const std::vector<std::string> capacity{"mode", "contact", "constraint", "attach", "integrator", "direction", "torque",
+                                                   "rate", "method",  "load",       "hold",   "max_duration", "slip_threshold"};
+    return command == StudyCommand::Capacity ? capacity : simulate;
+}
+
+const std::vector<std::string>& getMeasureNames(StudyCommand command) {
+    static const std::vector<std::string> capacity{
+        "slip_onset_n", "drop_n", "slip_onset_nm", "drop_nm", "slip_onset_time_s", "drop_time_s", "release_n", "release_nm",
+        "release_time_s", "grip_force_start_n", "grip_force_onset_n", "rate", "load_n", "load_nm", "wall_time_s"};
+    if (command == StudyCommand::Capacity) return capacity;
     static const std::vector<std::string> names{
         "held", "object_displacement_m", "max_penetration_m", "initial_penetration_m", "max_grasp_quality_n", "max_fingertip_goal_distance_m",
         "wall_time_s", "plan_time_s", "sim_time_s", "steps", "mean_step_us", "full_wall_s_per_sim_s", "engaged", "engage_time_s",
@@ -282,11 +326,13 @@ StudySpec parseStudy(const std::string& yamlText, const std::string& source) {
     spec.name = readText(source, root["name"], "name");
     if (root["description"]) spec.description = readText(source, root["description"], "description");
     if (!root["base"]) throw InputError(source + ": 'base' is missing; give a built-in scenario (" + join(scenario::getBuiltinScenarioNames()) + ") or a scenario file");
+    if (root["command"]) spec.command = readCommand(source, root["command"]);
     spec.fixed = readFixed(source, root["set"]);
     spec.axes = readAxes(source, root["axes"]);
+    checkCommandOptions(spec);
     readBases(source, root["base"], spec);
     readSampling(source, root, spec);
-    spec.measures = readMeasures(source, root["measures"]);
+    spec.measures = readMeasures(source, root["measures"], spec.command);
     for (const FixedValue& f : spec.fixed) {
         for (const StudyAxis& a : spec.axes) {
             if (a.name == f.name) throw InputError(source + ":" + std::to_string(f.line) + ": '" + f.name + "' is both set and an axis; keep one");

@@ -60,7 +60,7 @@ StudyTable collectStudyTable(const StudySpec& spec, const std::string& folder) {
         }
         const CaseRecord record = readCaseRecord(folder, studyCase.index);
         if (record.status != CaseStatus::Ok) table.failed.push_back(studyCase.index);
-        table.csv += formatRow(spec, studyCase, &record, readCaseSummary(folder, studyCase.index));
+        table.csv += formatRow(spec, studyCase, &record, readCaseSummary(folder, studyCase.index, spec.command));
     }
     return table;
 }

@@ -140,3 +140,51 @@ TEST(CaseSetup, ShippedGraspTypesStudyIsAccepted) {
     EXPECT_EQ(last.graspType, "lateral");
     EXPECT_EQ(last.bodyOptions.subject.stature, 1.90);
 }
+
+// The shipped capacity study: the grasp-types bases and subjects, each case a -y ramp.
+TEST(CaseSetup, ShippedCapacityStudyIsAccepted) {
+    const StudySpec spec = loadStudyFile(std::string(GRASPSIM_SOURCE_DIR) + "/models/studies/capacity-grasp-types.yaml");
+    EXPECT_EQ(spec.command, StudyCommand::Capacity);
+    const std::vector<scenario::ScenarioText> bases = readBaseScenarios(spec);
+    EXPECT_NO_THROW(checkStudyValues(spec, bases));
+    const std::vector<StudyCase> cases = expandCases(spec);
+    ASSERT_EQ(cases.size(), 40u);
+    using Options = std::vector<std::pair<std::string, std::string>>;
+    EXPECT_EQ(makeCaseSetup(spec, bases, cases.back()).options,
+              (Options{{"--mode", "approx"}, {"--integrator", "implicit"}, {"--direction", "-y"}}));
+}
+
+// A capacity case's options: the study's names as the command's flags (max_duration is
+// --max-duration), torque a flag given only when true; values the command would refuse are refused
+// before anything runs, naming the line.
+TEST(CaseSetup, CapacityOptionsBecomeTheCommandsFlags) {
+    const auto capacitySpec = [](const std::string& axes) {
+        return parseStudy("name: t\nbase: phone-pinch\ncommand: capacity\nset: {rate: 8, max_duration: 0.6}\naxes:\n" + axes +
+                              "measures: [slip_onset_n]\n",
+                          "s.yaml");
+    };
+    const StudySpec spec = capacitySpec("  direction: [-y, '1,0,0']\n  torque: [false, true]\n");
+    const std::vector<scenario::ScenarioText> base = readBaseScenarios(spec);
+    checkStudyValues(spec, base);
+    using Options = std::vector<std::pair<std::string, std::string>>;
+    EXPECT_EQ(makeCaseSetup(spec, base, expandCases(spec).at(0)).options,
+              (Options{{"--direction", "-y"}, {"--rate", "8"}, {"--max-duration", "0.6"}}));
+    EXPECT_EQ(makeCaseSetup(spec, base, expandCases(spec).at(3)).options,
+              (Options{{"--direction", "1,0,0"}, {"--torque", ""}, {"--rate", "8"}, {"--max-duration", "0.6"}}));
+    const auto refusal = [&](const std::string& axes) {
+        try {
+            const StudySpec bad = capacitySpec(axes);
+            checkStudyValues(bad, readBaseScenarios(bad));
+        } catch (const graspsim::InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string("accepted");
+    };
+    EXPECT_NE(refusal("  direction: [all]\n").find("s.yaml:6: axis 'direction': run option 'direction': 'all' is not accepted in a study"),
+              std::string::npos);
+    EXPECT_NE(refusal("  direction: ['0,0,0']\n").find("run option 'direction'"), std::string::npos);
+    EXPECT_NE(refusal("  load: [2, 0]\n").find("run option 'load': '0' is not accepted; give a number > 0"), std::string::npos);
+    EXPECT_NE(refusal("  hold: [inf]\n").find("run option 'hold': 'inf' is not accepted"), std::string::npos);
+    EXPECT_NE(refusal("  torque: [yes]\n").find("run option 'torque': 'yes' is not accepted; true"), std::string::npos);
+    EXPECT_NE(refusal("  method: [compliance]\n").find("'compliance' is not accepted; ramp, bisection or constant"), std::string::npos);
+}

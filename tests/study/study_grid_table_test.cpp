@@ -47,3 +47,32 @@ TEST(StudyGridTable, OneColumnPerBaseOneRowPerOtherAxisCellsFromTheirCases) {
               "| 80 | held, drift 1.2 mm, 0.4 mm inside at t = 0; plan 1.50 s; approx NOT engaged | no grasp / rims |\n");
     fs::remove_all(dir);
 }
+
+// A capacity study's cells: the slip onset and drop of each mode's measurement (capacity.json),
+// "not dropped" and "no slip within the ramp" where the ramp ended first, and an incomplete case's
+// figures with why it stopped.
+TEST(StudyGridTable, CapacityCellsGiveTheSlipOnsetAndDrop) {
+    const fs::path dir = graspsim::testing::makeScratchFolder("grid-capacity");
+    const StudySpec spec = parseStudy("name: g\ncommand: capacity\nbase: [types/ball.yaml, types/key.yaml]\n"
+                                      "axes:\n  subject.mass: [60, 80]\n  mode: [full, approx]\nmeasures: [slip_onset_n]\n",
+                                      (dir / "s.yaml").string());
+    const std::string folder = (dir / "out").string();
+    prepareStudyFolder(folder, spec, "base");
+    for (const StudyCase& c : expandCases(spec)) {
+        const bool key = c.values[0] == "types/key.yaml", heavy = c.values[1] == "80", approx = c.values[2] == "approx";
+        const fs::path tmp = fs::path(findCaseFolder(folder, c.index) + ".tmp-1");
+        fs::create_directories(tmp);
+        std::string figures = "\"slip_onset_n\": " + std::string(approx ? "2.25" : "2.5") + ", \"drop_n\": " + (heavy ? "null" : "3");
+        if (key) figures = "\"slip_onset_n\": null, \"drop_n\": null";
+        std::ofstream(tmp / "capacity.json") << "{\"measurements\": [{\"load\": \"force\", \"method\": \"ramp\", " << figures << "}]}";
+        const bool stopped = key && heavy && approx;
+        commitCase(folder, tmp.string(), {c.index, stopped ? CaseStatus::Incomplete : CaseStatus::Ok, stopped ? "the integrator stalled" : "", c.values});
+    }
+    EXPECT_EQ(formatGridTable(spec, folder),
+              "| subject.mass | ball | key |\n"
+              "|---|---|---|\n"
+              "| 60 | slips at 2.5 N, drops at 3 N; approx: slips at 2.25 N, drops at 3 N | no slip within the ramp; approx: no slip within the ramp |\n"
+              "| 80 | slips at 2.5 N, not dropped; approx: slips at 2.25 N, not dropped | no slip within the ramp; "
+              "approx: no slip within the ramp (the integrator stalled) |\n");
+    fs::remove_all(dir);
+}

@@ -99,3 +99,31 @@ TEST(StudySpec, RepeatsAndUnusedKeysAreRefusedNamingTheLine) {
     EXPECT_NO_THROW(parseStudy(kHead + "axes: {subject.stature: [1.741, 1.75]}\nsampling: random\nsamples: 2\nseed: 5\n"
                                "measures: [held, wall_time_s]\n", "s.yaml"));
 }
+
+// command: capacity runs `graspsim capacity` per case: its load options are run options, its
+// measures are capacity.json's; the other command's options and measures are refused by line.
+TEST(StudySpec, ACapacityStudyTakesTheLoadOptionsAndCapacityMeasures) {
+    const StudySpec spec = parseStudy(kHead + "command: capacity\nset: {rate: 8, torque: false}\n"
+                                              "axes: {direction: [-y, x], max_duration: {from: 0.5, to: 1, steps: 2}}\n"
+                                              "measures: [slip_onset_n, drop_n, grip_force_start_n]\n",
+                                      "s.yaml");
+    EXPECT_EQ(spec.command, StudyCommand::Capacity);
+    ASSERT_EQ(spec.axes.size(), 2u);
+    EXPECT_TRUE(spec.axes[0].isRunOption);
+    EXPECT_TRUE(spec.axes[1].isRange);
+    EXPECT_EQ(parseStudy(kHead + "axes: {mode: [full]}\nmeasures: [held]\n", "s.yaml").command, StudyCommand::Simulate);
+    EXPECT_NE(errorOf(kHead + "axes: {direction: [-y]}\nmeasures: [held]\n")
+                  .find("s.yaml:3: run option 'direction' is not accepted with command: simulate"),
+              std::string::npos);
+    EXPECT_NE(errorOf(kHead + "command: capacity\naxes: {perturbation: [f1]}\nmeasures: [drop_n]\n")
+                  .find("s.yaml:4: run option 'perturbation' is not accepted with command: capacity"),
+              std::string::npos);
+    EXPECT_NE(errorOf(kHead + "command: capacity\naxes: {direction: [-y]}\nmeasures: [held]\n")
+                  .find("measure 'held' is not accepted; measures are capacity.json keys: slip_onset_n"),
+              std::string::npos);
+    EXPECT_NE(errorOf(kHead + "command: bisect\naxes: {mode: [full]}\nmeasures: [held]\n").find("'command' value 'bisect'"),
+              std::string::npos);
+    EXPECT_NE(errorOf(kHead + "command: capacity\naxes: {method: {from: 1, to: 2, steps: 2}}\nmeasures: [drop_n]\n")
+                  .find("give a list of values"),
+              std::string::npos);
+}

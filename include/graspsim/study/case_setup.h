@@ -1,7 +1,7 @@
 #pragma once
 /// @file
 /// What one case runs: the base scenario with the case's field values written in, and the
-/// `graspsim simulate` options it sets.
+/// `graspsim simulate` (or `graspsim capacity`) options it sets.
 ///
 /// A field value is written into the base scenario's YAML at its dotted path (sections missing
 /// on the way are added), and the result is parsed by the scenario reader: a field that does not
@@ -20,7 +20,8 @@ namespace graspsim::study {
 /// One case, ready to run.
 struct CaseSetup {
     std::string scenarioYaml;  ///< the case's scenario file text (checked by the reader)
-    /// `graspsim simulate` options, e.g. {"--mode", "approx"}, in getRunOptionNames order.
+    /// The command's options, e.g. {"--mode", "approx"}, in getRunOptionNames order; a flag
+    /// without a value ("--torque") has an empty value.
     std::vector<std::pair<std::string, std::string>> options;
 };
 

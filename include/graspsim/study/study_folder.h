@@ -69,9 +69,13 @@ void commitCase(const std::string& folder, const std::string& tmpFolder, const C
 /// @throws graspsim::InputError when its case.json is missing or cannot be read.
 CaseRecord readCaseRecord(const std::string& folder, int index);
 
-/// The summary.json of case `index` (what `graspsim simulate` wrote); an empty object when the
-/// case wrote none (it failed before).
+/// The results file a case of `command` writes: "summary.json" or "capacity.json".
+std::string nameCaseResultFile(StudyCommand command);
+
+/// The measures of case `index`: the summary.json `graspsim simulate` wrote, or for a capacity
+/// study the one measurement of the capacity.json `graspsim capacity` wrote (its "failure" key
+/// says why a run stopped early); an empty object when the case wrote none (it failed before).
 /// @throws graspsim::InputError when the file is not readable JSON.
-nlohmann::json readCaseSummary(const std::string& folder, int index);
+nlohmann::json readCaseSummary(const std::string& folder, int index, StudyCommand command = StudyCommand::Simulate);
 
 }  // namespace graspsim::study

@@ -1,7 +1,8 @@
 #pragma once
 /// @file
 /// A study: one base scenario run many times, with scenario fields and run options varied along
-/// axes, and the measures to collect from each run's summary.json.
+/// axes, and the measures to collect from each run's summary.json (`graspsim simulate`) or
+/// capacity.json (`graspsim capacity`, `command: capacity`).
 ///
 /// A study is read from a commented YAML file; models/studies/stature-friction.yaml documents
 /// every key. Values stay as the YAML text the file gives ("1.75", "[0, -9.5, 0]", "approx"):
@@ -14,13 +15,29 @@
 
 namespace graspsim::study {
 
-/// The run options of `graspsim simulate` a study may set or vary, by their study-file name.
-/// "mode", "contact", "constraint", "attach", "integrator", "perturbation".
+/// What each case runs: `graspsim simulate` (the default) or `graspsim capacity` (study key
+/// `command`).
+enum class StudyCommand {
+    Simulate,  ///< measures from the run's summary.json
+    Capacity   ///< one load direction per case; measures from capacity.json's measurement
+};
+
+/// "simulate" or "capacity".
+std::string toString(StudyCommand command);
+
+/// Every run option a study may set or vary, by its study-file name: the union of both commands'.
 const std::vector<std::string>& getRunOptionNames();
 
-/// The measures a study may collect: keys of a run's summary.json ("held",
-/// "object_displacement_m", "wall_time_s", "q_at_engage_n", ...).
-const std::vector<std::string>& getMeasureNames();
+/// The run options of `command`, by study-file name. Both: "mode", "contact", "constraint",
+/// "attach", "integrator"; simulate: "perturbation"; capacity: "direction", "torque" (true or
+/// false: the flag), "rate", "method" (ramp, bisection, constant), "load", "hold",
+/// "max_duration", "slip_threshold" (as the command's options, `_` for `-`).
+const std::vector<std::string>& getRunOptionNames(StudyCommand command);
+
+/// The measures a study of `command` may collect: keys of a run's summary.json ("held",
+/// "object_displacement_m", "wall_time_s", "q_at_engage_n", ...), or of capacity.json's
+/// measurement ("slip_onset_n", "drop_n", "grip_force_start_n", ...).
+const std::vector<std::string>& getMeasureNames(StudyCommand command = StudyCommand::Simulate);
 
 /// A numeric interval: `steps` evenly spaced values from `from` to `to` (both included) on a
 /// grid, or uniformly drawn values in [from, to] when sampling.
@@ -63,6 +80,7 @@ struct StudySpec {
     std::string name;           ///< short identifier, e.g. "stature-friction"
     std::string description;    ///< may be empty
     std::string source;         ///< the study file's path (messages, the sbatch script)
+    StudyCommand command = StudyCommand::Simulate;  ///< what each case runs
     /// The base scenarios: built-in names, or scenario file paths resolved against the study
     /// file's folder. One, or (`base:` given as a list) several: then the study's first axis is
     /// "base" (isBase), whose values are the list as the file writes it, in this order.
@@ -72,7 +90,7 @@ struct StudySpec {
     Sampling sampling = Sampling::Grid;
     int samples = 0;            ///< Random and Latin: number of cases, >= 1
     std::uint64_t seed = 1;     ///< Random and Latin
-    std::vector<std::string> measures;  ///< summary.json keys, in table order
+    std::vector<std::string> measures;  ///< summary.json (capacity.json) keys, in table order
     std::string text;           ///< the study file's text (the output folder keeps a copy)
 };
 
