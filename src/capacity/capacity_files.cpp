@@ -33,6 +33,8 @@ void addRampFigures(const GraspCapacity& c, const std::string& unit, Json& j) {
     j["drop_" + unit] = valueOrNull(f.dropped, f.dropLoad);
     j["slip_onset_time_s"] = valueOrNull(f.slipped, f.slipOnsetTime);
     j["drop_time_s"] = valueOrNull(f.dropped, f.dropTime);
+    // The last sample's: what a ramp without slip held up to.
+    j["max_load_" + unit] = valueOrNull(!c.trace.samples.empty(), c.trace.samples.empty() ? 0 : c.trace.samples.back().load);
     addGripForces(f, j);
     if (c.mode != simulation::SimulationMode::Approx) return;
     j["release_" + unit] = valueOrNull(f.released, f.releaseLoad);

@@ -60,7 +60,8 @@ std::string describeCapacityCase(const CaseRecord& record, const nlohmann::json&
     };
     const std::string slip = figure("slip_onset_" + unit, "slip_onset_time_s", "");
     const bool ramp = m.value("method", "ramp") == "ramp";
-    std::string text = prefix + (slip.empty() ? (ramp ? "no slip within the ramp" : "no slip") : "slips " + slip);
+    const std::string reached = figure("max_load_" + unit, "", "");
+    std::string text = prefix + (!slip.empty() ? "slips " + slip : ramp ? (reached.empty() ? "no slip within the ramp" : "no slip up to" + reached.substr(2)) : "no slip");
     const std::string drop = figure("drop_" + unit, "drop_time_s", "");
     if (!slip.empty()) text += drop.empty() ? ", not dropped" : ", drops " + drop;
     if (record.status == CaseStatus::Incomplete) text += " (" + shortenError(record.error) + ")";

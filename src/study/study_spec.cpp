@@ -279,7 +279,7 @@ const std::vector<std::string>& getRunOptionNames(StudyCommand command) {
 
 const std::vector<std::string>& getMeasureNames(StudyCommand command) {
     static const std::vector<std::string> capacity{
-        "slip_onset_n", "drop_n", "slip_onset_nm", "drop_nm", "slip_onset_time_s", "drop_time_s", "release_n", "release_nm",
+        "slip_onset_n", "drop_n", "slip_onset_nm", "drop_nm", "slip_onset_time_s", "drop_time_s", "max_load_n", "max_load_nm", "release_n", "release_nm",
         "release_time_s", "grip_force_start_n", "grip_force_onset_n", "rate", "load_n", "load_nm", "wall_time_s"};
     if (command == StudyCommand::Capacity) return capacity;
     static const std::vector<std::string> names{

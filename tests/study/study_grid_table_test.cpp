@@ -49,7 +49,8 @@ TEST(StudyGridTable, OneColumnPerBaseOneRowPerOtherAxisCellsFromTheirCases) {
 }
 
 // A capacity study's cells: the slip onset and drop of each mode's measurement (capacity.json),
-// "not dropped" and "no slip within the ramp" where the ramp ended first, and an incomplete case's
+// "not dropped" and "no slip up to" the ramp's last load (or "within the ramp" without it) where the
+// ramp ended first, and an incomplete case's
 // figures with why it stopped.
 TEST(StudyGridTable, CapacityCellsGiveTheSlipOnsetAndDrop) {
     const fs::path dir = graspsim::testing::makeScratchFolder("grid-capacity");
@@ -63,7 +64,7 @@ TEST(StudyGridTable, CapacityCellsGiveTheSlipOnsetAndDrop) {
         const fs::path tmp = fs::path(findCaseFolder(folder, c.index) + ".tmp-1");
         fs::create_directories(tmp);
         std::string figures = "\"slip_onset_n\": " + std::string(approx ? "2.25" : "2.5") + ", \"drop_n\": " + (heavy ? "null" : "3");
-        if (key) figures = "\"slip_onset_n\": null, \"drop_n\": null";
+        if (key) figures = "\"slip_onset_n\": null, \"drop_n\": null" + std::string(heavy ? "" : ", \"max_load_n\": 1.57");
         std::ofstream(tmp / "capacity.json") << "{\"measurements\": [{\"load\": \"force\", \"method\": \"ramp\", " << figures << "}]}";
         const bool stopped = key && heavy && approx;
         commitCase(folder, tmp.string(), {c.index, stopped ? CaseStatus::Incomplete : CaseStatus::Ok, stopped ? "the integrator stalled" : "", c.values});
@@ -71,7 +72,7 @@ TEST(StudyGridTable, CapacityCellsGiveTheSlipOnsetAndDrop) {
     EXPECT_EQ(formatGridTable(spec, folder),
               "| subject.mass | ball | key |\n"
               "|---|---|---|\n"
-              "| 60 | slips at 2.5 N, drops at 3 N; approx: slips at 2.25 N, drops at 3 N | no slip within the ramp; approx: no slip within the ramp |\n"
+              "| 60 | slips at 2.5 N, drops at 3 N; approx: slips at 2.25 N, drops at 3 N | no slip up to 1.57 N; approx: no slip up to 1.57 N |\n"
               "| 80 | slips at 2.5 N, not dropped; approx: slips at 2.25 N, not dropped | no slip within the ramp; "
               "approx: no slip within the ramp (the integrator stalled) |\n");
     fs::remove_all(dir);
