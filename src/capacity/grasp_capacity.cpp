@@ -210,7 +210,8 @@ double findDefaultRate(const scenario::Scenario& scenario, bool torque) {
     return force * lever;
 }
 
-void checkLoadResistible(const scenario::Scenario& scenario, const GraspCapacityRequest& request) {
+void checkLoadResistible(const scenario::Scenario& scenario, const GraspCapacityRequest& request,
+                         const std::pair<std::string, std::string>& flags) {
     if (!request.torque || scenario.goals.size() != 2) return;
     const auto first = scenario.goals.begin(), second = std::next(first);
     const model::Transform X_GO = scenario.object.findPose();
@@ -221,7 +222,7 @@ void checkLoadResistible(const scenario::Scenario& scenario, const GraspCapacity
     if (angle > kPinchAxisTolerance) return;
     char degrees[32];
     std::snprintf(degrees, sizeof degrees, "%.3g", angle * 180 / SimTK::Pi);
-    throw InputError("--direction " + request.directionName + " --torque: the axis is " + degrees + " deg from the line through the goals " +
+    throw InputError(flags.first + " " + request.directionName + " " + flags.second + ": the axis is " + degrees + " deg from the line through the goals " +
                      first->first + " and " + second->first + "; two point contacts cannot resist a torque about it (no torsional "
                      "friction), so there is no capacity to measure; choose an axis more than 5 deg away");
 }

@@ -7,6 +7,8 @@
 #include "output_folder.h"
 #include "progress_meter.h"
 
+#include "graspsim/capacity/grasp_capacity.h"
+#include "graspsim/capacity/load_direction.h"
 #include "graspsim/planning/planned_scenario.h"
 #include "graspsim/error.h"
 #include "graspsim/opensim/opensim_storage.h"
@@ -43,6 +45,8 @@ struct SimulateCommand::Options {
     std::string releaseAt = "auto";
     std::string releaseGive;
     std::string handBack = "engaged";
+    std::string ramp, rampRate;
+    bool rampTorque = false;
     std::string out = "out";
     bool view = false;
     bool quiet = false;
@@ -67,6 +71,11 @@ SimulateCommand::SimulateCommand(CLI::App& app) : options_(std::make_shared<Opti
                          "approx: merged (default: fingers locked to the palm, one palm-object element) or multi "
                          "(one element spanning the object and every fingertip, fingers free)");
     command_->add_option("--perturbation", o.perturbation, "none (default) or a perturbation of the scenario (f1, f2)");
+    command_->add_option("--ramp", o.ramp,
+                         "also a load on the object growing from zero at the load start of graspsim capacity (settle_time + 0.1 s): "
+                         "its direction, an axis (x, -y, ...) or X,Y,Z in the ground frame (a capacity ramp to watch with --view)");
+    command_->add_option("--ramp-rate", o.rampRate, "--ramp's rate, N/s (N m/s with --ramp-torque), > 0 (default: capacity's, 2 object weights per second)");
+    command_->add_flag("--ramp-torque", o.rampTorque, "--ramp is a torque about the object's centre of mass instead of a force");
     command_->add_option("--duration", o.duration, "simulated time in s (default: the scenario's)");
     command_->add_option("--integrator", o.integrator,
                          "auto (default: implicit, but simbody for --constraint weld, --attach multi and --friction "
@@ -156,7 +165,41 @@ simulation::SimulationOptions SimulateCommand::parseOptions() const {
     return options;
 }
 
-void SimulateCommand::checkOptions() const { parseOptions(); }
+void SimulateCommand::checkOptions() const {
+    parseOptions();
+    parseRampDirection();
+}
+
+// --ramp's direction; its rate and torque flag need it.
+std::optional<capacity::LoadDirection> SimulateCommand::parseRampDirection() const {
+    const Options& o = *options_;
+    if (o.ramp.empty()) {
+        for (const char* flag : {"--ramp-rate", "--ramp-torque"}) {
+            if (command_->count(flag) > 0) throw InputError(std::string(flag) + ": is not accepted without --ramp (the load's direction)");
+        }
+        return std::nullopt;
+    }
+    if (o.ramp == "all") throw InputError("--ramp: value 'all' is not accepted; give one direction (graspsim capacity --direction all measures all)");
+    const capacity::LoadDirection direction = capacity::parseLoadDirection(o.ramp, "--ramp");
+    parsePositiveNumber(o.rampRate, "--ramp-rate", "N/s");
+    return direction;
+}
+
+// The capacity protocol's ramp on this scenario: its load start, and its default rate unless given.
+simulation::LoadRampSpec SimulateCommand::makeRamp(const capacity::LoadDirection& direction, const scenario::Scenario& scenario) const {
+    const Options& o = *options_;
+    capacity::GraspCapacityRequest request;
+    request.direction = direction.direction;
+    request.directionName = direction.name;
+    request.torque = o.rampTorque;
+    capacity::checkLoadResistible(scenario, request, {"--ramp", "--ramp-torque"});
+    simulation::LoadRampSpec ramp;
+    ramp.direction = direction.direction;
+    ramp.torque = o.rampTorque;
+    ramp.start = capacity::findLoadStart(scenario);
+    ramp.rate = parsePositiveNumber(o.rampRate, "--ramp-rate", "N/s").value_or(capacity::findDefaultRate(scenario, o.rampTorque));
+    return ramp;
+}
 
 namespace {
 
@@ -171,14 +214,23 @@ std::string formatOverride(double value) {
     return text;
 }
 
+// "-y force 1.962 N/s from 1.1 s": the load --ramp added (provenance.json, the last line).
+std::string describeRamp(const std::string& direction, const simulation::LoadRampSpec& ramp) {
+    char text[160];
+    std::snprintf(text, sizeof text, "%s %s %.4g %s from %.4g s", direction.c_str(), ramp.torque ? "torque" : "force", ramp.rate,
+                  ramp.torque ? "N m/s" : "N/s", ramp.start);
+    return text;
+}
+
 // The per-run choices of provenance.json, as the options were given (defaults written out).
 results::RunProvenance makeRunProvenance(const std::vector<std::string>& commandLine, const scenario::Scenario& scenario,
-                                         const simulation::SimulationOptions& options) {
+                                         const simulation::SimulationOptions& options, const std::string& ramp) {
     results::RunProvenance run;
     run.commandLine = commandLine;
     run.run["contact"] = simulation::toString(options.contact);
     run.run["mode"] = simulation::toString(options.mode);
     run.run["perturbation"] = options.perturbation;
+    if (!ramp.empty()) run.run["ramp"] = ramp;
     const simulation::IntegratorChoice integrator = simulation::resolveIntegrator(scenario, options);
     run.run["integrator"] = simulation::toString(integrator);
     run.run["duration_s"] = formatOverride(options.duration);
@@ -229,6 +281,8 @@ int SimulateCommand::run(const std::vector<std::string>& commandLine) const {
     if (const auto rule = parseCapsuleContactOption(o.capsuleContact, options.contact)) scenario.contact.capsuleContact = *rule;
     checkPerturbation(o.perturbation, scenario);
     options.perturbation = o.perturbation;
+    if (const auto direction = parseRampDirection()) options.loadRamp = makeRamp(*direction, scenario);
+    const std::string ramp = options.loadRamp ? describeRamp(o.ramp, *options.loadRamp) : "";
     simulation::checkApproxAttach(scenario, options);
     simulation::checkScenarioSetup(scenario, options);  // refuses a grasp that cannot start before the folder exists
     OutputFolder folder(o.out);  // gone again if the run throws (a step size it cannot use, ...)
@@ -237,12 +291,12 @@ int SimulateCommand::run(const std::vector<std::string>& commandLine) const {
     folder.keep();
     result.summary.planTime = planTime;
     meter.finish();
-    results::writeResultFolder(o.out, scenario, result, makeRunProvenance(commandLine, scenario, options));
+    results::writeResultFolder(o.out, scenario, result, makeRunProvenance(commandLine, scenario, options, ramp));
     opensim::writeOpenSimResultFiles(o.out, result);
     const simulation::SimulationSummary& s = result.summary;
     if (o.view) std::cout << "replay written to " << viewer::writeReplayPage(o.out) << ": open it in a web browser\n";
     std::cout << scenario.name << " (" << simulation::toString(s.contact) << ", " << simulation::toString(s.mode) << ", perturbation " << s.perturbation
-              << "): " << s.simTime << " s simulated in " << s.wallTime << " s, " << s.steps << " steps, "
+              << (ramp.empty() ? "" : ", ramp " + ramp) << "): " << s.simTime << " s simulated in " << s.wallTime << " s, " << s.steps << " steps, "
               << describeHold(scenario, s) << "; results in " << o.out << "\n";
     if (s.mode == simulation::SimulationMode::Approx) {
         std::cout << "approximation (" << simulation::toString(options.approx.constraint) << ", "

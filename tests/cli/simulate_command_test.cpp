@@ -234,7 +234,42 @@ TEST_F(SimulateCommand, RejectsBadOptionsWithoutTouchingTheOutputFolder) {
     expectBadInput("simulate ball-clutch --mode full --q-minimum 0.1" + out, {"--q-minimum: value '0.1'", "--mode full"});
     expectBadInput("simulate ball-clutch --limits contact" + out, {"--limits: value 'contact'", "--mode full"});
     expectBadInput("simulate ball-clutch --release-give 0.001" + out, {"--release-give: value '0.001'", "--mode full"});
+    expectBadInput("simulate phone-pinch --ramp up" + out, {"--ramp", "'up'", "x, y, z, -x, -y, -z or three numbers"});
+    expectBadInput("simulate phone-pinch --ramp 0,0,0" + out, {"--ramp", "'0,0,0'"});
+    expectBadInput("simulate phone-pinch --ramp all" + out, {"--ramp", "'all'", "one direction"});
+    expectBadInput("simulate phone-pinch --ramp -y --ramp-rate 0" + out, {"--ramp-rate", "0", "> 0 (N/s)"});
+    expectBadInput("simulate phone-pinch --ramp-rate 2" + out, {"--ramp-rate", "without --ramp"});
+    expectBadInput("simulate phone-pinch --ramp-torque" + out, {"--ramp-torque", "without --ramp"});
+    // About the line through the phone's two goals nothing resists (capacity refuses it too).
+    expectBadInput("simulate phone-pinch --ramp 0.8866,-0.4599,-0.0500 --ramp-torque" + out,
+                   {"--ramp 0.8866,-0.4599,-0.0500 --ramp-torque", "index_tip and thumb_tip"});
     EXPECT_FALSE(fs::exists(dir_ / "out"));
+}
+
+// --ramp puts capacity's load into a simulation (to replay it with --view). The oracle is
+// `graspsim capacity` with the same load (the second method): the phone is still held shortly
+// before the slip onset the capacity run found, and no longer held shortly after its drop.
+TEST_F(SimulateCommand, ARampSlipsAndDropsTheObjectWhenCapacitySaysItDoes) {
+    const std::string cap = (dir_ / "cap").string();
+    ASSERT_EQ(run("capacity phone-pinch --rate 8 --max-duration 0.6 --out " + cap).exitCode, 0);
+    const std::string json = slurp(fs::path(cap) / "capacity.json");
+    const auto number = [&](const std::string& key) {
+        const std::size_t at = json.find("\"" + key + "\": ");
+        return at == std::string::npos ? -1.0 : std::stod(json.substr(at + key.size() + 4));
+    };
+    const double onset = number("slip_onset_time_s"), drop = number("drop_time_s");
+    ASSERT_GT(onset, 1.1) << json;
+    ASSERT_GT(drop, onset) << json;
+    const auto simulateUntil = [&](double duration) {
+        const std::string out = (dir_ / ("sim" + std::to_string(duration))).string();
+        const RunResult r = run("simulate phone-pinch --ramp -y --ramp-rate 8 -q --duration " + std::to_string(duration) + " --out " + out);
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        EXPECT_NE(r.out.find("ramp -y force 8 N/s from 1.1 s"), std::string::npos) << r.out;
+        EXPECT_NE(slurp(fs::path(out) / "provenance.json").find("\"ramp\": \"-y force 8 N/s from 1.1 s\""), std::string::npos);
+        return r.out;
+    };
+    EXPECT_NE(simulateUntil(onset - 0.05).find("held yes"), std::string::npos);
+    EXPECT_NE(simulateUntil(drop + 0.05).find("held no"), std::string::npos);
 }
 
 // A Q_M at or above the automatic Q_Th (known only once the grasp has settled, 0.203 N on the ball

@@ -18,6 +18,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 
 namespace graspsim::capacity {
 
@@ -47,9 +48,11 @@ double findDefaultRate(const scenario::Scenario& scenario, bool torque);
 constexpr double kPinchAxisTolerance = 5.0 * 3.14159265358979323846 / 180;
 
 /// Checks, before anything runs, that the grasp can resist the load at all.
+/// @param flags the command's options for the direction and the torque, which the message names.
 /// @throws graspsim::InputError naming the direction, the goals and the angle, for a torque about
 ///         (within kPinchAxisTolerance of) the line through the two goals of a two-goal grasp.
-void checkLoadResistible(const scenario::Scenario& scenario, const GraspCapacityRequest& request);
+void checkLoadResistible(const scenario::Scenario& scenario, const GraspCapacityRequest& request,
+                         const std::pair<std::string, std::string>& flags = {"--direction", "--torque"});
 
 /// When the load starts (s): settle_time + kLoadStartDelay.
 double findLoadStart(const scenario::Scenario& scenario);
