@@ -10,6 +10,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 namespace graspsim::study {
 
@@ -74,14 +75,9 @@ std::string stripPlace(const std::string& message, const std::string& source) {
 
 // A capacity option's number: finite and positive, as the command accepts it.
 void checkPositiveNumber(const std::string& source, const std::string& value, const char* unit) {
-    double number = 0;
-    std::size_t used = 0;
-    try {
-        number = std::stod(value, &used);
-    } catch (const std::exception&) {
-        used = 0;
-    }
-    if (used == 0 || used != value.size() || !std::isfinite(number) || number <= 0) {
+    char* end = nullptr;
+    const double number = std::strtod(value.c_str(), &end);
+    if (value.empty() || end != value.c_str() + value.size() || !std::isfinite(number) || number <= 0) {
         throw InputError(source + ": '" + value + "' is not accepted; give a number > 0 (" + unit + ")");
     }
 }

@@ -154,12 +154,8 @@ CaseRecord readCaseRecord(const std::string& folder, int index) {
     return record;
 }
 
-std::string nameCaseResultFile(StudyCommand command) {
-    return command == StudyCommand::Capacity ? "capacity.json" : "summary.json";
-}
-
 nlohmann::json readCaseSummary(const std::string& folder, int index, StudyCommand command) {
-    const std::string path = findCaseFolder(folder, index) + "/" + nameCaseResultFile(command);
+    const std::string path = findCaseFolder(folder, index) + "/" + nameResultFile(command);
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec)) return nlohmann::json::object();
     const nlohmann::json json = readJson(path);

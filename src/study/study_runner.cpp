@@ -60,7 +60,7 @@ std::string findFailure(const std::string& path, StudyCommand command) {
 // The case's status from how its process ended and what it wrote.
 CaseRecord judgeCase(const RunningCase& running, const ProcessEnd& end, StudyCommand command) {
     CaseRecord record{running.studyCase.index, CaseStatus::Failed, "", running.studyCase.values};
-    const std::string summaryPath = running.tmpFolder + "/" + nameCaseResultFile(command);
+    const std::string summaryPath = running.tmpFolder + "/" + nameResultFile(command);
     const bool hasSummary = fs::is_regular_file(summaryPath);
     if (end.exitCode == 0 && hasSummary) {
         record.status = CaseStatus::Ok;

@@ -158,8 +158,6 @@ std::vector<FixedValue> readFixed(const std::string& source, const YAML::Node& n
     return fixed;
 }
 
-std::string nameResultFile(StudyCommand command) { return command == StudyCommand::Capacity ? "capacity.json" : "summary.json"; }
-
 std::vector<std::string> readMeasures(const std::string& source, const YAML::Node& node, StudyCommand command) {
     const auto& known = getMeasureNames(command);
     const std::string file = nameResultFile(command);
@@ -264,9 +262,16 @@ void readSampling(const std::string& source, const YAML::Node& root, StudySpec& 
 
 std::string toString(StudyCommand command) { return command == StudyCommand::Capacity ? "capacity" : "simulate"; }
 
+std::string nameResultFile(StudyCommand command) { return command == StudyCommand::Capacity ? "capacity.json" : "summary.json"; }
+
 const std::vector<std::string>& getRunOptionNames() {
-    static const std::vector<std::string> names{"mode",   "contact", "constraint", "attach", "integrator",   "perturbation",  "direction",
-                                                "torque", "rate",    "method",     "load",   "hold",         "max_duration",  "slip_threshold"};
+    static const std::vector<std::string> names = [] {
+        std::vector<std::string> all = getRunOptionNames(StudyCommand::Simulate);
+        for (const std::string& name : getRunOptionNames(StudyCommand::Capacity)) {
+            if (std::find(all.begin(), all.end(), name) == all.end()) all.push_back(name);
+        }
+        return all;
+    }();
     return names;
 }
 

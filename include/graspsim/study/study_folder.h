@@ -69,9 +69,6 @@ void commitCase(const std::string& folder, const std::string& tmpFolder, const C
 /// @throws graspsim::InputError when its case.json is missing or cannot be read.
 CaseRecord readCaseRecord(const std::string& folder, int index);
 
-/// The results file a case of `command` writes: "summary.json" or "capacity.json".
-std::string nameCaseResultFile(StudyCommand command);
-
 /// The measures of case `index`: the summary.json `graspsim simulate` wrote, or for a capacity
 /// study the one measurement of the capacity.json `graspsim capacity` wrote (its "failure" key
 /// says why a run stopped early); an empty object when the case wrote none (it failed before).

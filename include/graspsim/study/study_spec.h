@@ -25,6 +25,9 @@ enum class StudyCommand {
 /// "simulate" or "capacity".
 std::string toString(StudyCommand command);
 
+/// The results file a case of `command` writes: "summary.json" or "capacity.json".
+std::string nameResultFile(StudyCommand command);
+
 /// Every run option a study may set or vary, by its study-file name: the union of both commands'.
 const std::vector<std::string>& getRunOptionNames();
 
