@@ -184,6 +184,8 @@ std::vector<capacity::GraspCapacityRequest> makeRequests(const std::string& dire
         add(capacity::parseLoadDirection(direction, "--direction"), torque);
         return requests;
     }
+    // all is the six forces and the three torques: --torque would read as "the torques only".
+    if (torque) throw InputError("--torque: is not accepted with --direction all, which measures the six axis forces and the three torques");
     const std::vector<capacity::LoadDirection> axes = capacity::findAxisDirections();
     for (const capacity::LoadDirection& d : axes) add(d, false);
     for (const capacity::LoadDirection& d : axes) if (d.name[0] != '-') add(d, true);

@@ -30,6 +30,7 @@ TEST_F(CapacityCommand, BadInputIsOneLineAndWritesNothing) {
     expectRejected("--direction nan,1,0", "--direction");
     expectRejected("--direction up", "--direction");
     expectRejected("--direction 1,2", "--direction");
+    expectRejected("--direction all --torque", "--torque: is not accepted with --direction all");
     expectRejected("--rate 0", "--rate");
     expectRejected("--rate=-3", "--rate");
     expectRejected("--rate inf", "--rate");
