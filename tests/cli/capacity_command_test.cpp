@@ -108,6 +108,11 @@ TEST_F(CapacityCommand, RampWritesTheFiguresItPrints) {
         EXPECT_NE(json.find(key), std::string::npos) << key << " in " << json;
     }
     EXPECT_EQ(json.find("\"friction\""), std::string::npos) << "the default law is not named: " << json;
+    // The ramp stops at the sample where the phone dropped: its last load is the drop's, rounded up
+    // to the next 5 ms sample at 8 N/s.
+    const auto number = [&](const std::string& key) { return std::stod(json.substr(json.find("\"" + key + "\": ") + key.size() + 4)); };
+    EXPECT_GE(number("max_load_n"), number("drop_n")) << json;
+    EXPECT_LE(number("max_load_n"), number("drop_n") + 8 * 0.005 + 1e-9) << json;
     // Held at rest, the phone's weight (0.981 N: half the default rate of 1.96 N/s) is carried by
     // friction, at most mu_s = 0.9 times the normal forces: so the grip is at least 1.09 N.
     const std::size_t grip = json.find("\"grip_force_start_n\": ");
