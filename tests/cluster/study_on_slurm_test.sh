@@ -2,7 +2,8 @@
 # A small study (8 cases of the ball clutch shortened to 0.2 s) submitted to a real one-node Slurm
 # cluster as a job array of 4 tasks, collected, and compared with the same study run locally with
 # --jobs 2: the same rows, byte-identical measures (wall time left out, the only column that
-# depends on the machine's load). Fails, saying why, when the cluster cannot start.
+# depends on the machine's load); then a capacity study (4 phone ramps) the same way. Fails,
+# saying why, when the cluster cannot start.
 #
 # Usage: study_on_slurm_test.sh GRASPSIM_EXECUTABLE   (ctest label: cluster)
 set -euo pipefail
@@ -62,3 +63,26 @@ done
 cmp -s "$work/slurm.csv" "$work/local.csv" ||
   fail "the Slurm and local tables differ: $(diff "$work/slurm.csv" "$work/local.csv" | head -5 | tr '\n' ' ')"
 echo "study on Slurm: 8 cases in 4 array tasks, table identical to the local --jobs 2 run (wall time excluded)"
+
+# A capacity study (command: capacity) on the same cluster: four fast phone ramps in 2 tasks.
+cat >"$work/capacity.yaml" <<'STUDY'
+name: slurm-capacity
+command: capacity
+base: phone-pinch
+set: {rate: 8, max_duration: 0.6, integrator: implicit}
+axes:
+  direction: [-y, x]
+  mode: [full, approx]
+measures: [slip_onset_n, drop_n, release_n, wall_time_s]
+STUDY
+"$graspsim" study submit "$work/capacity.yaml" --out "$work/slurm-capacity" --array-size 2 --sbatch-arg=--wait ||
+  fail "the capacity study's job array failed; task logs: $(cat "$work"/slurm-capacity/slurm/task-*.log 2>/dev/null | tail -5)"
+"$graspsim" study collect "$work/slurm-capacity" || fail "study collect found capacity cases missing"
+"$graspsim" study run "$work/capacity.yaml" --out "$work/local-capacity" --jobs 2 >/dev/null || fail "the local capacity run failed"
+strip_wall_time "$work/slurm-capacity/results.csv" >"$work/slurm-capacity.csv"
+strip_wall_time "$work/local-capacity/results.csv" >"$work/local-capacity.csv"
+ok=$(grep -c ',ok,' "$work/slurm-capacity.csv" || true)
+[ "$ok" -eq 4 ] || fail "only $ok of 4 capacity cases ran ok on Slurm: $(cat "$work/slurm-capacity.csv")"
+cmp -s "$work/slurm-capacity.csv" "$work/local-capacity.csv" ||
+  fail "the Slurm and local capacity tables differ: $(diff "$work/slurm-capacity.csv" "$work/local-capacity.csv" | head -5 | tr '\n' ' ')"
+echo "capacity study on Slurm: 4 ramps in 2 array tasks, table identical to the local run (wall time excluded)"
