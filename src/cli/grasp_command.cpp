@@ -7,10 +7,13 @@
 #include "graspsim/anthropometry/subject.h"
 #include "graspsim/error.h"
 #include "graspsim/io/atomic_file.h"
+#include "graspsim/planning/grasp_planner.h"
 #include "graspsim/planning/planned_scenario.h"
+#include "graspsim/simulation/grasp_simulation.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 #include <sstream>
 
@@ -19,6 +22,7 @@ namespace graspsim::cli {
 struct GraspCommand::Options {
     std::string sex = "male", mass, stature, preset = "thesis";
     std::string object, type = "power-sphere", output, name;
+    bool noHoldCheck = false;
 };
 
 GraspCommand::GraspCommand(CLI::App& app) : options_(std::make_shared<Options>()) {
@@ -35,6 +39,9 @@ GraspCommand::GraspCommand(CLI::App& app) : options_(std::make_shared<Options>()
     plan_->add_option("--type", o.type, "power-sphere (default), pinch, tripod, power-cylinder or lateral");
     plan_->add_option("--name", o.name, "the scenario's name (default planned-<type>)");
     plan_->add_option("-o,--output", o.output, "scenario file to write")->required();
+    plan_->add_flag("--no-hold-check", o.noHoldCheck,
+                    "write the plan without first simulating it (full contact, under gravity, to 0.5 s after its settle time) "
+                    "to check that it holds its object");
 }
 
 namespace {
@@ -110,6 +117,30 @@ model::BuildOptions parseSubject(const std::string& sex, const std::string& mass
     return options;
 }
 
+// How long after the settle time the planned grasp is simulated before it counts as holding.
+constexpr double kHoldCheckAfterSettle = 0.5;  // s
+
+// The plan under gravity in full compliant contact: the planner's checks are static (reach,
+// closure, a frictionless release), and a grasp whose contacts cannot carry the object's weight
+// passes them and drops it once released. Refused like a plan that fails a check.
+std::string checkPlanHolds(const scenario::Scenario& planned, const std::string& type) {
+    simulation::SimulationOptions options;
+    options.duration = planned.simulation.settleTime + kHoldCheckAfterSettle;
+    const simulation::SimulationSummary s = simulation::runGraspSimulation(planned, options).summary;
+    char text[400];
+    if (!s.complete || !s.held) {
+        std::snprintf(text, sizeof text,
+                      "no %s grasp found that holds the object: the plan, simulated in full contact, %s by t = %.3g s (a goal "
+                      "fingertip %.3g mm from its goal, held_tolerance %.3g mm%s%s); --no-hold-check writes it anyway",
+                      type.c_str(), s.complete ? "loses the object" : "stopped", options.duration, s.maxFingertipGoalDistance * 1e3,
+                      planned.simulation.heldTolerance * 1e3, s.complete ? "" : "; ", s.complete ? "" : s.failure.c_str());
+        throw planning::NoGraspError(text);
+    }
+    std::snprintf(text, sizeof text, "holds its object %.3g s after settling (drift %.2f mm)", kHoldCheckAfterSettle,
+                  s.objectDisplacement * 1e3);
+    return text;
+}
+
 }  // namespace
 
 bool GraspCommand::parsed() const { return grasp_->parsed(); }
@@ -135,9 +166,10 @@ int GraspCommand::run() const {
     base.object = parseObject(o.object);
     const planning::GraspPlan plan = planning::planGrasp(planning::makeGraspRequest(base, type));
     const scenario::Scenario planned = planning::applyPlan(base, plan);
+    const std::string hold = o.noHoldCheck ? "hold not checked" : checkPlanHolds(planned, o.type);
     io::writeFileAtomically(o.output, planning::formatPlannedScenario(planned, plan));
     std::cout << "wrote " << o.output << ": " << o.type << " grasp, deepest segment "
-              << plan.diagnostics.maxPenetration * 1000 << " mm, Q " << plan.diagnostics.quality << "\n";
+              << plan.diagnostics.maxPenetration * 1000 << " mm, Q " << plan.diagnostics.quality << ", " << hold << "\n";
     return 0;
 }
 

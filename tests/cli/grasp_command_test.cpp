@@ -39,6 +39,26 @@ TEST_F(GraspCommand, NoGraspIsOneLineWithTheNumbers) {
                    {"no power-sphere grasp", "object width 400 mm exceeds the hand's thumb-little span"});
 }
 
+// A tripod of an 80 mm, 300 g ball for a 90 kg, 1.85 m man passes the planner's static checks, but
+// its three pads cannot carry the ball: the plan is refused (one line, exit 2, no file) because the
+// full-contact run of it loses the ball while settling. The second method: the same plan written
+// with --no-hold-check and simulated by `graspsim simulate` is not held either, while a planned
+// tripod of the 30 g ball holds and says so.
+TEST_F(GraspCommand, APlanThatCannotHoldItsObjectIsRefused) {
+    const std::string heavy = "grasp plan --sex male --mass 90 --stature 1.85 --object sphere:radius=0.04,mass=0.3 --type tripod -o ";
+    expectBadInput(heavy + output(), {"no tripod grasp found that holds the object", "by t = 1.5 s", "--no-hold-check"});
+    const std::string written = (dir_ / "heavy.yaml").string();
+    const RunResult unchecked = run(heavy + written + " --no-hold-check");
+    ASSERT_EQ(unchecked.exitCode, 0) << unchecked.err;
+    EXPECT_NE(unchecked.out.find("hold not checked"), std::string::npos) << unchecked.out;
+    const RunResult simulated = run("simulate " + written + " --duration 1.5 -q --out " + (dir_ / "sim").string());
+    ASSERT_EQ(simulated.exitCode, 0) << simulated.err;
+    EXPECT_NE(simulated.out.find("held no"), std::string::npos) << simulated.out;
+    const RunResult light = run("grasp plan --object sphere:radius=0.015,mass=0.03 --type tripod -o " + (dir_ / "light.yaml").string());
+    ASSERT_EQ(light.exitCode, 0) << light.err;
+    EXPECT_NE(light.out.find("holds its object 0.5 s after settling (drift "), std::string::npos) << light.out;
+}
+
 TEST_F(GraspCommand, BadInputNamesTheOptionAndValue) {
     expectBadInput("grasp plan --object cone:radius=0.02,mass=0.2 -o " + output(), {"--object", "'cone'"});
     expectBadInput("grasp plan --object cylinder:radius=0.02,mass=0.2 -o " + output(), {"--object", "lacks a size"});
