@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -33,11 +34,19 @@ int findScratchFile() {
     return fd;
 }
 
-std::string readAll(int fd) {
+// Bytes [from, to) by pread, which leaves the offset fd 2 shares with the file to the writers.
+// Zero bytes are left out: a write that raced the reset of the file between two redirections
+// lands past its end, after a hole that reads as zeros, and stderr text has none of its own.
+std::string readRange(int fd, off_t from, off_t to) {
     std::string text;
-    if (::lseek(fd, 0, SEEK_SET) < 0) return text;
     char buffer[4096];
-    for (ssize_t n; (n = ::read(fd, buffer, sizeof buffer)) > 0;) text.append(buffer, static_cast<std::size_t>(n));
+    for (off_t at = from; at < to;) {
+        const ssize_t n = ::pread(fd, buffer, static_cast<std::size_t>(std::min<off_t>(sizeof buffer, to - at)), at);
+        if (n <= 0) break;
+        text.append(buffer, static_cast<std::size_t>(n));
+        at += n;
+    }
+    text.erase(std::remove(text.begin(), text.end(), '\0'), text.end());
     return text;
 }
 
@@ -77,6 +86,7 @@ struct SharedRedirection {
     int users = 0;
     int saved = -1;    // duplicate of the original fd 2, -1 when not redirected
     int capture = -1;  // the scratch file, -1 when not redirected
+    off_t forwarded = 0;  // the scratch file's bytes already passed on (or dropped)
 };
 
 SharedRedirection& getRedirection() {
@@ -84,20 +94,18 @@ SharedRedirection& getRedirection() {
     return shared;
 }
 
-// Passes on what the scratch file holds, minus the dropped blocks, and empties it; with the lock held.
+// Passes on what the scratch file gained since the last time, minus the dropped blocks; with the
+// lock held. The file is not emptied while fd 2 points at it: other threads write to it without
+// the lock, and a write after a truncation would land at the old offset, past the new end.
 void forwardCaptured(SharedRedirection& r, const std::vector<std::string>& dropPrefixes, std::string& dropped) {
     std::cerr.flush();
     std::fflush(stderr);
-    // fd 2 shares the scratch file's offset: a non-zero offset means something was written.
-    if (::lseek(r.capture, 0, SEEK_CUR) <= 0) return;
-    const std::string kept = filterBlocks(readAll(r.capture), dropPrefixes, dropped);
-    if (::ftruncate(r.capture, 0) != 0 || ::lseek(r.capture, 0, SEEK_SET) < 0) {
-        // The scratch file cannot be reused: stop filtering rather than lose or repeat text.
-        ::dup2(r.saved, 2);
-        ::close(r.saved);
-        r.saved = r.capture = -1;
-    }
-    writeAll(r.saved >= 0 ? r.saved : 2, kept);
+    // fd 2 shares the scratch file's offset: where the next write lands, past everything written.
+    const off_t end = ::lseek(r.capture, 0, SEEK_CUR);
+    if (end <= r.forwarded) return;
+    const std::string kept = filterBlocks(readRange(r.capture, r.forwarded, end), dropPrefixes, dropped);
+    r.forwarded = end;
+    writeAll(r.saved, kept);
 }
 
 }  // namespace
@@ -122,6 +130,7 @@ FilteredStderr::FilteredStderr(std::vector<std::string> dropPrefixes) : dropPref
     }
     r.saved = saved;
     r.capture = capture;
+    r.forwarded = 0;
     r.users = 1;
     joined_ = true;
 #endif

@@ -4,7 +4,7 @@
 ///
 /// Why: Simbody's CPodes prints "[CPODES ERROR] ..." blocks to stderr itself when the
 /// integration fails, before the exception that graspsim turns into its one-line message. While
-/// a FilteredStderr is alive, fd 2 goes to a scratch file (one per process, emptied at each use); at the end of the scope everything
+/// a FilteredStderr is alive, fd 2 goes to a scratch file (one per process, emptied when a redirection starts); at the end of the scope everything
 /// in it except the blocks that start with one of the given prefixes is written to the real
 /// stderr, in order. The dropped text stays available (getDropped()).
 ///
@@ -30,9 +30,9 @@ public:
     FilteredStderr(const FilteredStderr&) = delete;
     FilteredStderr& operator=(const FilteredStderr&) = delete;
 
-    /// Passes on the kept text written so far and empties the scratch file, leaving fd 2
-    /// redirected: a long-lived FilteredStderr calls it after each call that may print, at the
-    /// cost of one system call when nothing was written.
+    /// Passes on the kept text written since the last forward, leaving fd 2 redirected: a
+    /// long-lived FilteredStderr calls it after each call that may print, at the cost of one
+    /// system call when nothing was written.
     void forward();
     /// Restores fd 2 now and passes the kept text on (the destructor does it otherwise).
     void release();
