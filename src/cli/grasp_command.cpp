@@ -127,18 +127,17 @@ std::string checkPlanHolds(const scenario::Scenario& planned, const std::string&
     simulation::SimulationOptions options;
     options.duration = planned.simulation.settleTime + kHoldCheckAfterSettle;
     const simulation::SimulationSummary s = simulation::runGraspSimulation(planned, options).summary;
-    char text[400];
+    char numbers[160];
     if (!s.complete || !s.held) {
-        std::snprintf(text, sizeof text,
-                      "no %s grasp found that holds the object: the plan, simulated in full contact, %s by t = %.3g s (a goal "
-                      "fingertip %.3g mm from its goal, held_tolerance %.3g mm%s%s); --no-hold-check writes it anyway",
-                      type.c_str(), s.complete ? "loses the object" : "stopped", options.duration, s.maxFingertipGoalDistance * 1e3,
-                      planned.simulation.heldTolerance * 1e3, s.complete ? "" : "; ", s.complete ? "" : s.failure.c_str());
-        throw planning::NoGraspError(text);
+        std::snprintf(numbers, sizeof numbers, " by t = %.3g s (a goal fingertip %.3g mm from its goal, held_tolerance %.3g mm",
+                      options.duration, s.maxFingertipGoalDistance * 1e3, planned.simulation.heldTolerance * 1e3);
+        throw planning::NoGraspError("no " + type + " grasp found that holds the object: the plan, simulated in full contact, " +
+                                     (s.complete ? "loses the object" : "stopped") + numbers + (s.complete ? "" : "; " + s.failure) +
+                                     "); --no-hold-check writes it anyway");
     }
-    std::snprintf(text, sizeof text, "holds its object %.3g s after settling (drift %.2f mm)", kHoldCheckAfterSettle,
+    std::snprintf(numbers, sizeof numbers, "holds its object %.3g s after settling (drift %.2f mm)", kHoldCheckAfterSettle,
                   s.objectDisplacement * 1e3);
-    return text;
+    return numbers;
 }
 
 }  // namespace
