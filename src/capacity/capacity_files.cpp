@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <sstream>
 
 namespace graspsim::capacity {
@@ -101,22 +102,42 @@ std::string formatNumber(double value, const char* format) {
     return text;
 }
 
-// "slips after 0.12 s, drops after 0.4 s of 2.5 N held 1 s" and the release, the failure.
-std::string describeConstant(const GraspCapacity& c) {
-    const OverloadFigures f = findOverloadFigures(c.trace.figures, c.start);
-    const std::string load = formatNumber(c.load, "%.4g") + (c.torque ? " N m" : " N");
-    std::string text = f.slipped ? "slips after " + formatNumber(f.slipOnsetTime, "%.4g") + " s" : "no slip";
-    if (f.slipped) text += f.dropped ? ", drops after " + formatNumber(f.dropTime, "%.4g") + " s" : ", not dropped";
-    text += " of " + load + " held " + formatNumber(c.hold, "%.4g") + " s";
-    if (!c.trace.failure.empty()) text += " [run stopped early: " + c.trace.failure + "]";
-    if (f.released) {
-        text += " (approximation released after " + formatNumber(f.releaseTime, "%.4g") + " s" +
-                (c.trace.releaseReason.empty() ? "" : ": " + c.trace.releaseReason) + ")";
+template <class J>
+std::optional<double> findNumber(const J& m, const std::string& key) {
+    const auto it = m.find(key);
+    if (it == m.end() || !it->is_number()) return std::nullopt;
+    return it->template get<double>();
+}
+
+// One entry of capacity.json in words; one template for the ordered JSON this file writes and the
+// plain JSON a reader of the file has.
+template <class J>
+std::string describeFigures(const J& m) {
+    const bool torque = m.value("load", std::string("force")) == "torque";
+    const std::string unit = torque ? "nm" : "n";
+    const auto load = [torque](double value) { return formatNumber(value, "%.4g") + (torque ? " N m" : " N"); };
+    const auto seconds = [](double value) { return formatNumber(value, "%.4g") + " s"; };
+    const std::optional<double> slip = findNumber(m, "slip_onset_" + unit), drop = findNumber(m, "drop_" + unit);
+    const std::string method = m.value("method", std::string("ramp"));
+    if (method == "bisection") {
+        return "slips from " + (slip ? load(*slip) : "?") + " (held " + formatNumber(findNumber(m, "bracket_held_" + unit).value_or(NAN), "%.4g") +
+               ", slipped " + formatNumber(findNumber(m, "bracket_slipped_" + unit).value_or(NAN), "%.4g") + ")";
     }
+    if (method == "constant") {
+        const std::optional<double> slipTime = findNumber(m, "slip_onset_time_s"), dropTime = findNumber(m, "drop_time_s");
+        std::string text = slipTime ? "slips after " + seconds(*slipTime) : "no slip";
+        if (slipTime) text += dropTime ? ", drops after " + seconds(*dropTime) : ", not dropped";
+        return text + " of " + load(findNumber(m, "load_" + unit).value_or(NAN)) + " held " + seconds(findNumber(m, "hold_s").value_or(NAN));
+    }
+    const std::optional<double> reached = findNumber(m, "max_load_" + unit);
+    std::string text = slip ? "slips at " + load(*slip) : reached ? "no slip up to " + load(*reached) : "not measured";
+    if (slip) text += drop ? ", drops at " + load(*drop) : ", not dropped within the ramp";
     return text;
 }
 
 }  // namespace
+
+std::string describeMeasuredFigures(const nlohmann::json& measurement) { return describeFigures(measurement); }
 
 std::string formatCapacityJson(const std::string& scenario, const std::vector<GraspCapacity>& measurements) {
     Json j;
@@ -141,24 +162,16 @@ std::string formatCapacityCsv(const std::vector<GraspCapacity>& measurements) {
 }
 
 std::string describeCapacity(const GraspCapacity& c) {
-    const char* unit = c.torque ? " N m" : " N";
-    std::string text = c.directionName + (c.torque ? " torque" : " force") + " (" + c.method + "): ";
-    if (c.method == "bisection") {
-        return text + "slips from " + formatNumber(c.bisection.findEstimate(), "%.4g") + unit + " (held " +
-               formatNumber(c.bisection.held, "%.4g") + ", slipped " + formatNumber(c.bisection.slipped, "%.4g") + ")";
-    }
-    if (c.method == "constant") return text + describeConstant(c);
-    const CapacityFigures& f = c.trace.figures;
-    if (c.trace.samples.empty()) {
-        text += "not measured";
-    } else {
-        text += f.slipped ? "slips at " + formatNumber(f.slipOnsetLoad, "%.4g") + unit
-                          : "no slip up to " + formatNumber(c.trace.samples.back().load, "%.4g") + unit;
-    }
-    if (f.slipped) text += f.dropped ? ", drops at " + formatNumber(f.dropLoad, "%.4g") + unit : ", not dropped within the ramp";
+    std::string text = c.directionName + (c.torque ? " torque" : " force") + " (" + c.method + "): " + describeFigures(formatMeasurement(c));
+    if (c.method == "bisection") return text;
     if (!c.trace.failure.empty()) text += " [run stopped early: " + c.trace.failure + "]";
-    if (f.released) text += " (approximation released at " + formatNumber(f.releaseLoad, "%.4g") + unit + (c.trace.releaseReason.empty() ? "" : ": " + c.trace.releaseReason) + ")";
-    return text;
+    const CapacityFigures& f = c.trace.figures;
+    if (!f.released) return text;
+    const std::string reason = c.trace.releaseReason.empty() ? "" : ": " + c.trace.releaseReason;
+    if (c.method == "constant") {
+        return text + " (approximation released after " + formatNumber(findOverloadFigures(f, c.start).releaseTime, "%.4g") + " s" + reason + ")";
+    }
+    return text + " (approximation released at " + formatNumber(f.releaseLoad, "%.4g") + (c.torque ? " N m" : " N") + reason + ")";
 }
 
 void writeCapacityFiles(const std::string& folder, const std::string& scenario, const std::vector<GraspCapacity>& measurements) {

@@ -1,29 +1,10 @@
 #include "number_option.h"
 
 #include "graspsim/error.h"
+#include "graspsim/io/number_text.h"
 
-#include <cmath>
-#include <cstdlib>
 
 namespace graspsim::cli {
-
-double parseNumber(const std::string& text, const std::string& flag, const std::string& accepted) {
-    const char* begin = text.c_str();
-    char* end = nullptr;
-    const double value = std::strtod(begin, &end);
-    if (text.empty() || end != begin + text.size()) {
-        throw InputError(flag + ": value '" + text + "' is not a number; " + accepted);
-    }
-    return value;
-}
-
-std::optional<double> parsePositiveNumber(const std::string& text, const std::string& flag, const std::string& unit) {
-    if (text.empty()) return std::nullopt;
-    const std::string accepted = "a finite number > 0 (" + unit + ")";
-    const double value = parseNumber(text, flag, accepted);
-    if (!(value > 0 && std::isfinite(value))) throw InputError(flag + ": value " + text + " is not accepted; use " + accepted);
-    return value;
-}
 
 int parseCount(const std::string& text, const std::string& flag) {
     const double value = parseNumber(text, flag, "a whole number >= 1");

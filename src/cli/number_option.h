@@ -2,18 +2,16 @@
 // Parsing numeric command-line values ourselves, so a bad value gets graspsim's one-line message
 // naming the flag, the value and what is accepted, rather than CLI11's generic text.
 
+#include "graspsim/io/number_text.h"
+
 #include <optional>
 #include <string>
 
 namespace graspsim::cli {
 
-// Parses the whole of `text` as a double; NaN and infinities parse (the caller's range check
-// rejects them with the accepted range). Throws InputError "<flag>: value '<text>' is not a number; <accepted>".
-double parseNumber(const std::string& text, const std::string& flag, const std::string& accepted);
-
-// A finite number > 0, in `unit` (named in the message); empty gives none. Throws InputError
-// "<flag>: value <text> is not accepted; use a finite number > 0 (<unit>)".
-std::optional<double> parsePositiveNumber(const std::string& text, const std::string& flag, const std::string& unit);
+// A flag's number (io/number_text.h): "<flag>: value ... is not accepted; ...".
+using io::parseNumber;
+using io::parsePositiveNumber;
 
 // A whole number >= 1 (a count: --jobs, --array-size). Throws InputError naming the flag.
 int parseCount(const std::string& text, const std::string& flag);

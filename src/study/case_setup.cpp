@@ -2,6 +2,7 @@
 
 #include "graspsim/capacity/load_direction.h"
 #include "graspsim/error.h"
+#include "graspsim/io/number_text.h"
 #include "graspsim/simulation/simulation_options.h"
 
 #include <yaml-cpp/yaml.h>
@@ -73,13 +74,9 @@ std::string stripPlace(const std::string& message, const std::string& source) {
     return message.substr(at);
 }
 
-// A capacity option's number: finite and positive, as the command accepts it.
+// A capacity option's number, as the command accepts it; a study has no empty flag to leave out.
 void checkPositiveNumber(const std::string& source, const std::string& value, const char* unit) {
-    char* end = nullptr;
-    const double number = std::strtod(value.c_str(), &end);
-    if (value.empty() || end != value.c_str() + value.size() || !std::isfinite(number) || number <= 0) {
-        throw InputError(source + ": '" + value + "' is not accepted; give a number > 0 (" + unit + ")");
-    }
+    if (!io::parsePositiveNumber(value, source, unit)) throw InputError(source + ": no value; give a finite number > 0 (" + unit + ")");
 }
 
 // The capacity options; the command itself checks how they combine (a constant load needs load).

@@ -1,5 +1,6 @@
 #include "graspsim/study/study_grid_table.h"
 
+#include "graspsim/capacity/capacity_files.h"
 #include "graspsim/error.h"
 #include "graspsim/io/atomic_file.h"
 #include "graspsim/study/study_case.h"
@@ -45,27 +46,12 @@ std::string describeCase(const CaseRecord& record, const nlohmann::json& summary
     return text;
 }
 
-// A capacity case's cell: its slip onset and drop (N, or N m for a torque), or times after a
-// constant load's start.
+// A capacity case's cell: its measurement's figures in the command's words, and why an incomplete
+// case stopped.
 std::string describeCapacityCase(const CaseRecord& record, const nlohmann::json& m, bool approx) {
     const std::string prefix = approx ? "approx: " : "";
     if (record.status == CaseStatus::Failed) return prefix + shortenError(record.error);
-    const bool torque = m.value("load", "force") == "torque";
-    const std::string unit = torque ? "nm" : "n";
-    const char* pattern = torque ? "at %.4g N m" : "at %.4g N";  // pattern + 3: without "at "
-    const auto figure = [&](const std::string& load, const std::string& time, const char* none) {
-        if (m.contains(load) && m[load].is_number()) return formatNumber(pattern, m[load].get<double>());
-        if (m.contains(time) && m[time].is_number()) return formatNumber("after %.4g s", m[time].get<double>());
-        return std::string(none);
-    };
-    const std::string slip = figure("slip_onset_" + unit, "slip_onset_time_s", "");
-    const std::string reached = "max_load_" + unit;  // a ramp's last load
-    std::string text = prefix;
-    if (!slip.empty()) text += "slips " + slip;
-    else if (m.contains(reached) && m[reached].is_number()) text += "no slip up to " + formatNumber(pattern + 3, m[reached].get<double>());
-    else text += m.value("method", "ramp") == "ramp" ? "no slip within the ramp" : "no slip";
-    const std::string drop = figure("drop_" + unit, "drop_time_s", "");
-    if (!slip.empty()) text += drop.empty() ? ", not dropped" : ", drops " + drop;
+    std::string text = prefix + capacity::describeMeasuredFigures(m);
     if (record.status == CaseStatus::Incomplete) text += " (" + shortenError(record.error) + ")";
     return text;
 }

@@ -183,8 +183,8 @@ TEST(CaseSetup, CapacityOptionsBecomeTheCommandsFlags) {
     EXPECT_NE(refusal("  direction: [all]\n").find("s.yaml:6: axis 'direction': run option 'direction': 'all' is not accepted in a study"),
               std::string::npos);
     EXPECT_NE(refusal("  direction: ['0,0,0']\n").find("run option 'direction'"), std::string::npos);
-    EXPECT_NE(refusal("  load: [2, 0]\n").find("run option 'load': '0' is not accepted; give a number > 0"), std::string::npos);
-    EXPECT_NE(refusal("  hold: [inf]\n").find("run option 'hold': 'inf' is not accepted"), std::string::npos);
+    EXPECT_NE(refusal("  load: [2, 0]\n").find("run option 'load': value 0 is not accepted; use a finite number > 0 (N"), std::string::npos);
+    EXPECT_NE(refusal("  hold: [inf]\n").find("run option 'hold': value inf is not accepted"), std::string::npos);
     EXPECT_NE(refusal("  torque: [yes]\n").find("run option 'torque': 'yes' is not accepted; true"), std::string::npos);
     EXPECT_NE(refusal("  method: [compliance]\n").find("'compliance' is not accepted; ramp, bisection or constant"), std::string::npos);
 }

@@ -49,9 +49,8 @@ TEST(StudyGridTable, OneColumnPerBaseOneRowPerOtherAxisCellsFromTheirCases) {
 }
 
 // A capacity study's cells: the slip onset and drop of each mode's measurement (capacity.json),
-// "not dropped" and "no slip up to" the ramp's last load (or "within the ramp" without it) where the
-// ramp ended first, and an incomplete case's
-// figures with why it stopped.
+// in the command's words ("not dropped within the ramp", "no slip up to" the ramp's last load, "not
+// measured" without one; a bisection's bracket), and an incomplete case's figures with why it stopped.
 TEST(StudyGridTable, CapacityCellsGiveTheSlipOnsetAndDrop) {
     const fs::path dir = graspsim::testing::makeScratchFolder("grid-capacity");
     const StudySpec spec = parseStudy("name: g\ncommand: capacity\nbase: [types/ball.yaml, types/key.yaml]\n"
@@ -65,7 +64,12 @@ TEST(StudyGridTable, CapacityCellsGiveTheSlipOnsetAndDrop) {
         fs::create_directories(tmp);
         std::string figures = "\"slip_onset_n\": " + std::string(approx ? "2.25" : "2.5") + ", \"drop_n\": " + (heavy ? "null" : "3");
         if (key) figures = "\"slip_onset_n\": null, \"drop_n\": null" + std::string(heavy ? "" : ", \"max_load_n\": 1.57");
-        std::ofstream(tmp / "capacity.json") << "{\"measurements\": [{\"load\": \"force\", \"method\": \"ramp\", " << figures << "}]}";
+        std::string method = "ramp";
+        if (!key && heavy && approx) {
+            method = "bisection";
+            figures = "\"slip_onset_n\": 2.25, \"drop_n\": null, \"bracket_held_n\": 2.2, \"bracket_slipped_n\": 2.3";
+        }
+        std::ofstream(tmp / "capacity.json") << "{\"measurements\": [{\"load\": \"force\", \"method\": \"" << method << "\", " << figures << "}]}";
         const bool stopped = key && heavy && approx;
         commitCase(folder, tmp.string(), {c.index, stopped ? CaseStatus::Incomplete : CaseStatus::Ok, stopped ? "the integrator stalled" : "", c.values});
     }
@@ -73,7 +77,7 @@ TEST(StudyGridTable, CapacityCellsGiveTheSlipOnsetAndDrop) {
               "| subject.mass | ball | key |\n"
               "|---|---|---|\n"
               "| 60 | slips at 2.5 N, drops at 3 N; approx: slips at 2.25 N, drops at 3 N | no slip up to 1.57 N; approx: no slip up to 1.57 N |\n"
-              "| 80 | slips at 2.5 N, not dropped; approx: slips at 2.25 N, not dropped | no slip within the ramp; "
-              "approx: no slip within the ramp (the integrator stalled) |\n");
+              "| 80 | slips at 2.5 N, not dropped within the ramp; approx: slips from 2.25 N (held 2.2, slipped 2.3) | not measured; "
+              "approx: not measured (the integrator stalled) |\n");
     fs::remove_all(dir);
 }

@@ -22,6 +22,8 @@
 
 #include "graspsim/capacity/grasp_capacity.h"
 
+#include <nlohmann/json_fwd.hpp>
+
 #include <string>
 #include <vector>
 
@@ -31,6 +33,12 @@ std::string formatCapacityJson(const std::string& scenario, const std::vector<Gr
 std::string formatCapacityCsv(const std::vector<GraspCapacity>& measurements);
 /// The one-line statement of a measurement's figures, e.g. "-y force (ramp): slips at 1.2 N, drops at 1.5 N".
 std::string describeCapacity(const GraspCapacity& c);
+/// The figures of one entry of capacity.json's "measurements", as formatCapacityJson writes it, in
+/// the words of describeCapacity (without its direction, failure and release): "slips at 1.2 N,
+/// drops at 1.5 N", "no slip up to 3 N", "not measured" (a ramp without samples), "slips after
+/// 0.12 s, drops after 0.4 s of 2.5 N held 1 s" (constant), "slips from 2.1 N (held 2, slipped
+/// 2.2)" (bisection). A figure that is absent or null was not reached.
+std::string describeMeasuredFigures(const nlohmann::json& measurement);
 
 /// Writes capacity.json and capacity.csv into `folder`, which must exist.
 /// @throws graspsim::InputError naming the file when it cannot be written.
