@@ -2,6 +2,7 @@
 
 #include "graspsim/error.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -9,14 +10,9 @@ namespace graspsim::capacity {
 
 namespace {
 
-// Sample times from `start` to `end` every `dt`, the last one exactly `end`.
-std::vector<double> makeTimes(double start, double end, double dt) {
-    std::vector<double> times;
-    const long n = static_cast<long>(std::ceil((end - start) / dt - 1e-9));
-    for (long k = 1; k < n; ++k) times.push_back(start + k * dt);
-    times.push_back(end);
-    return times;
-}
+// The number of samples after `start`: every `dt`, the last one exactly at `end`. Counted, not
+// listed: a long ramp's samples end at the drop, and its times are made as they come.
+double countSampleTimes(double start, double end, double dt) { return std::max(1.0, std::ceil((end - start) / dt - 1e-9)); }
 
 // Advances `run` to the load's start, then samples it until it drops or `end`.
 void sampleRun(LoadedRun& run, const simulation::LoadRampSpec& load, double end, double dt, const SlipCriteria& criteria,
@@ -27,7 +23,9 @@ void sampleRun(LoadedRun& run, const simulation::LoadRampSpec& load, double end,
     first.time = load.start;
     first.load = load.initial;
     samples.push_back(first);
-    for (double t : makeTimes(load.start, end, dt)) {
+    const double n = countSampleTimes(load.start, end, dt);
+    for (double k = 1; k <= n; ++k) {
+        const double t = k < n ? load.start + k * dt : end;
         run.advanceTo(t);
         CapacitySample s = run.sampleNow();
         s.time = t;

@@ -2,6 +2,7 @@
 
 #include "graspsim/error.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -38,11 +39,17 @@ LoadDirection parseLoadDirection(const std::string& text, const std::string& sou
     for (const LoadDirection& axis : findAxisDirections()) if (axis.name == text) return axis;
     SimTK::Vec3 v;
     if (!parseVector(text, v)) throw InputError(source + ": value '" + text + "' is not a direction; " + kAccepted);
-    const double norm = v.norm();
-    if (!std::isfinite(norm) || !(norm > 0)) {
+    double largest = 0;
+    for (int k = 0; k < 3; ++k) largest = std::max(largest, std::abs(v[k]));
+    if (!std::isfinite(largest) || !(largest > 0)) {
         throw InputError(source + ": value '" + text + "' is not accepted (zero or non-finite); " + kAccepted);
     }
-    return {text, SimTK::UnitVec3(v / norm, true)};
+    // Only the direction matters: a vector whose norm overflows or underflows (1e200,1e200,0) is
+    // scaled by its largest part first.
+    const double norm = v.norm();
+    if (std::isfinite(norm) && norm > 1e-150) return {text, SimTK::UnitVec3(v / norm, true)};
+    const SimTK::Vec3 scaled = v / largest;
+    return {text, SimTK::UnitVec3(scaled / scaled.norm(), true)};
 }
 
 }  // namespace graspsim::capacity

@@ -11,12 +11,15 @@
 #include "graspsim/capacity/capacity_plot.h"
 #include "graspsim/capacity/compliance_prediction.h"
 #include "graspsim/capacity/load_direction.h"
+#include "graspsim/capacity/method_options.h"
 #include "graspsim/error.h"
+#include "graspsim/io/atomic_file.h"
 #include "graspsim/io/parallel_runs.h"
 #include "graspsim/scenario/scenario_file.h"
 #include "graspsim/simulation/multi_attachment_switch.h"
 #include "graspsim/simulation/setup_check.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -80,7 +83,7 @@ struct CapacityCommand::Plan {
 CapacityCommand::CapacityCommand(CLI::App& app) : options_(std::make_shared<Options>()) {
     Options& o = *options_;
     command_ = app.add_subcommand("capacity", "Measure how large a load on the object the grasp holds before it slips and drops");
-    command_->add_option("scenario", o.scenario, "built-in scenario (ball-clutch, phone-pinch) or a scenario file")->required();
+    command_->add_option("scenario", o.scenario, "built-in scenario (" + scenario::joinBuiltinScenarioNames() + ") or a scenario file")->required();
     command_->add_option("--direction", o.direction,
                          "x, y, z, -x, -y, -z (default -y), a vector such as 0,-1,0 (G), or all: the six axes and torques about x, y, z");
     command_->add_flag("--torque", o.torque, "a torque about the object's centre of mass instead of a force");
@@ -212,17 +215,25 @@ void checkComplianceMethodOptions(const std::string& method, const std::string& 
     if (!out.empty()) throw InputError("--out: --method compliance writes no files; leave --out out");
 }
 
-// --load belongs to --method constant, which needs it, and one direction (a load is N or N m).
-void checkConstantLoadOptions(const std::string& method, const std::string& load, const std::string& direction) {
-    if (method != "constant" && !load.empty()) {
-        throw InputError("--load: value " + load + " is not accepted with --method " + method +
-                         "; --load is the load of --method constant");
+// The method's own load options (method_options.h): one left unused would be silently ignored.
+// A constant load is one load for one direction (N or N m).
+void checkMethodFlags(const CLI::App& command, const std::string& method, const std::string& direction, const std::string& mode) {
+    std::vector<std::string> given;
+    const auto flagOf = [](std::string name) {
+        std::replace(name.begin(), name.end(), '_', '-');
+        return "--" + name;
+    };
+    for (const std::string& name : capacity::findMethodOptionNames()) {
+        if (command.count(flagOf(name)) > 0) given.push_back(name);
     }
-    if (method != "constant") return;
-    if (load.empty()) throw InputError("--load: missing; --method constant needs the load, N (N m with --torque), a number > 0");
-    if (direction == "all") {
+    capacity::checkMethodOptions(method, given, flagOf, "--method");
+    if (method == "constant" && direction == "all") {
         throw InputError("--direction: value all is not accepted with --method constant (one load, N or N m, for one "
                          "direction); use an axis or a vector");
+    }
+    if (method == "compliance" && mode == "approx") {
+        throw InputError("--mode: value approx is not accepted with --method compliance, which predicts from full contact at the "
+                         "load's start");
     }
 }
 
@@ -261,17 +272,15 @@ CapacityCommand::Plan CapacityCommand::makePlan() const {
     plan.bisection = o.method == "bisection";
     plan.compliance = o.method == "compliance";
     plan.constant = o.method == "constant";
-    checkConstantLoadOptions(o.method, o.load, o.direction);
+    checkMethodFlags(*command_, o.method, o.direction, o.mode);
     plan.load = parsePositiveNumber(o.load, "--load", "N, or N m with --torque").value_or(0);
     checkComplianceMethodOptions(o.method, o.out, o.integrator, plan.simulation.integrator);
     const double rate = parsePositiveNumber(o.rate, "--rate", "N/s, or N m/s with --torque").value_or(0);
     const double maxDuration = parsePositiveNumber(o.maxDuration, "--max-duration", "s").value_or(4);
-    const double initialLoad = parsePositiveNumber(o.initialLoad, "--initial-load", "N, or N m with --torque").value_or(0);
+    const double initialLoad = parseNonNegativeNumber(o.initialLoad, "--initial-load", "N, or N m with --torque");
     const capacity::SlipCriteria criteria = parseSlipCriteria(o.slipThreshold, o.dropThreshold);
-    if (initialLoad > 0 && o.method != "ramp") throw InputError("--initial-load: only with --method ramp (its step before the ramp)");
     plan.hold = parsePositiveNumber(o.hold, "--hold", "s").value_or(1);
     plan.guess = parsePositiveNumber(o.guess, "--guess", "N, or N m with --torque").value_or(0);
-    if (plan.guess > 0 && !plan.bisection) throw InputError("--guess: only with --method bisection (its first load)");
     plan.requests = makeRequests(o.direction, o.torque);
     for (capacity::GraspCapacityRequest& r : plan.requests) {
         r.rate = rate;
@@ -339,6 +348,8 @@ int CapacityCommand::run() const {
     if (!o.out.empty() && o.direction == "all") {
         const capacity::CapacityPlot plot = capacity::drawCapacityPlot(o.out);
         std::cout << (plot.skipped.empty() ? "plot: " + plot.file : plot.skipped) << "\n";
+    } else if (!o.out.empty()) {  // an earlier --direction all's plot would show other measurements
+        for (const char* name : {"/capacity.png", "/plot_capacity.py"}) io::removeStaleFile(o.out + name);
     }
     const capacity::GraspCapacity& first = measurements.front();
     std::string last = "capacity of " + scenario.name + " (" + simulation::toString(first.contact) +

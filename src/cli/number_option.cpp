@@ -3,8 +3,18 @@
 #include "graspsim/error.h"
 #include "graspsim/io/number_text.h"
 
+#include <cmath>
+
 
 namespace graspsim::cli {
+
+double parseNonNegativeNumber(const std::string& text, const std::string& flag, const std::string& unit) {
+    if (text.empty()) return 0;
+    const std::string accepted = "a finite number >= 0 (" + unit + ")";
+    const double value = parseNumber(text, flag, accepted);
+    if (!(value >= 0 && std::isfinite(value))) throw InputError(flag + ": value " + text + " is not accepted; use " + accepted);
+    return value;
+}
 
 int parseCount(const std::string& text, const std::string& flag) {
     const double value = parseNumber(text, flag, "a whole number >= 1");

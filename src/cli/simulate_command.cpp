@@ -11,6 +11,7 @@
 #include "graspsim/capacity/load_direction.h"
 #include "graspsim/planning/planned_scenario.h"
 #include "graspsim/error.h"
+#include "graspsim/io/atomic_file.h"
 #include "graspsim/opensim/opensim_storage.h"
 #include "graspsim/results/result_folder.h"
 #include "graspsim/scenario/scenario_file.h"
@@ -55,7 +56,7 @@ struct SimulateCommand::Options {
 SimulateCommand::SimulateCommand(CLI::App& app) : options_(std::make_shared<Options>()) {
     Options& o = *options_;
     command_ = app.add_subcommand("simulate", "Simulate a grasp scenario (full contact or the grasp approximation) and write the results");
-    command_->add_option("scenario", o.scenario, "built-in scenario (ball-clutch, phone-pinch; planned: ball-tripod, can-power, key-lateral) or a scenario file")->required();
+    command_->add_option("scenario", o.scenario, "built-in scenario (" + scenario::joinBuiltinScenarioNames() + ") or a scenario file")->required();
     command_->add_option("--contact", o.contact, "compliant (default) or rigid");
     command_->add_option("--friction", o.friction,
                          "compliant contact's friction law, regularized or anchor (true stiction; default: the "
@@ -198,6 +199,13 @@ simulation::LoadRampSpec SimulateCommand::makeRamp(const capacity::LoadDirection
     ramp.torque = o.rampTorque;
     ramp.start = capacity::findLoadStart(scenario);
     ramp.rate = parsePositiveNumber(o.rampRate, "--ramp-rate", "N/s").value_or(capacity::findDefaultRate(scenario, o.rampTorque));
+    const double duration = parsePositiveNumber(o.duration, "--duration", "s").value_or(scenario.simulation.duration);
+    if (!(duration > ramp.start)) {
+        char text[200];
+        std::snprintf(text, sizeof text, "--ramp: the load starts at %.4g s (simulation.settle_time + %.4g s), not before the run's end at %.4g s; "
+                      "give a longer --duration", ramp.start, capacity::kLoadStartDelay, duration);
+        throw InputError(text);
+    }
     return ramp;
 }
 
@@ -295,6 +303,7 @@ int SimulateCommand::run(const std::vector<std::string>& commandLine) const {
     opensim::writeOpenSimResultFiles(o.out, result);
     const simulation::SimulationSummary& s = result.summary;
     if (o.view) std::cout << "replay written to " << viewer::writeReplayPage(o.out) << ": open it in a web browser\n";
+    if (!o.view) io::removeStaleFile(o.out + "/replay.html");  // an earlier run's replay would show another run
     std::cout << scenario.name << " (" << simulation::toString(s.contact) << ", " << simulation::toString(s.mode) << ", perturbation " << s.perturbation
               << (ramp.empty() ? "" : ", ramp " + ramp) << "): " << s.simTime << " s simulated in " << s.wallTime << " s, " << s.steps << " steps, "
               << describeHold(scenario, s) << "; results in " << o.out << "\n";

@@ -46,6 +46,12 @@ void writeFileAtomically(const std::string& path, const std::string& contents) {
     }
 }
 
+void removeStaleFile(const std::string& path) {
+    std::error_code error;
+    std::filesystem::remove(path, error);
+    if (error) throw InputError(path + ": a file of an earlier run cannot be removed (" + error.message() + ")");
+}
+
 std::string readTextFile(const std::string& path) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) {

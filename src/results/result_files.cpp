@@ -172,7 +172,10 @@ void writeResultFiles(const std::string& folder, const simulation::SimulationRes
     io::writeFileAtomically(folder + "/trajectory.csv", formatTrajectoryCsv(result));
     io::writeFileAtomically(folder + "/contacts.csv", formatContactsCsv(result));
     io::writeFileAtomically(folder + "/summary.json", formatSummaryJson(result.summary));
-    if (result.summary.mode != simulation::SimulationMode::Approx) return;
+    if (result.summary.mode != simulation::SimulationMode::Approx) {
+        for (const char* name : {"/events.csv", "/constraint.csv"}) io::removeStaleFile(folder + name);
+        return;
+    }
     io::writeFileAtomically(folder + "/events.csv", formatEventsCsv(result));
     io::writeFileAtomically(folder + "/constraint.csv", formatConstraintCsv(result));
 }

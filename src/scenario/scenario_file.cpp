@@ -26,7 +26,7 @@ std::string findBuiltinName(const EmbeddedFile& file) {
 // Messages about built-in scenarios name the file a user can read and copy.
 std::string findBuiltinSource(const std::string& name) { return "models/scenarios/" + name + std::string(kExtension); }
 
-std::string describeBuiltins() { return "built-in scenarios: " + joinNames(getBuiltinScenarioNames()); }
+std::string describeBuiltins() { return "built-in scenarios: " + joinBuiltinScenarioNames(); }
 
 // yaml-cpp's marks count lines and columns from 0.
 std::string describeMark(const YAML::Mark& mark) {
@@ -76,6 +76,8 @@ std::string readFileText(const std::string& path) {
 }  // namespace
 
 Scenario loadScenarioFile(const std::string& path) { return parseScenario(readFileText(path), path); }
+
+std::string joinBuiltinScenarioNames() { return joinNames(getBuiltinScenarioNames()); }
 
 std::vector<std::string> getBuiltinScenarioNames() {
     std::vector<std::string> names;

@@ -1,6 +1,8 @@
 #include "graspsim/study/case_setup.h"
 
+#include "graspsim/capacity/capacity_trace.h"
 #include "graspsim/capacity/load_direction.h"
+#include "graspsim/capacity/method_options.h"
 #include "graspsim/error.h"
 #include "graspsim/io/number_text.h"
 #include "graspsim/simulation/simulation_options.h"
@@ -95,7 +97,16 @@ void checkCapacityOption(const std::string& name, const std::string& value) {
     if (name == "rate") checkPositiveNumber(source, value, "N/s, N m/s with torque");
     if (name == "load") checkPositiveNumber(source, value, "N, N m with torque");
     if (name == "hold" || name == "max_duration") checkPositiveNumber(source, value, "s");
-    if (name == "slip_threshold") checkPositiveNumber(source, value, "m");
+    if (name == "slip_threshold") {
+        checkPositiveNumber(source, value, "m");
+        const double drop = capacity::SlipCriteria{}.drop;  // a study does not change it
+        if (!(std::strtod(value.c_str(), nullptr) < drop)) {
+            char text[200];
+            std::snprintf(text, sizeof text, ": value %s is not accepted; the slip threshold must be below the drop threshold, %g m",
+                          value.c_str(), drop);
+            throw InputError(source + text);
+        }
+    }
 }
 
 std::string checkRunOption(const std::string& name, const std::string& value, const scenario::Scenario& scenario) {
@@ -194,6 +205,42 @@ void checkApproxOnlyRunOptions(const StudySpec& spec) {
     for (const StudyAxis& axis : spec.axes) refuse(axis.name, axis.line);
 }
 
+// A capacity study's load options against each method it runs (method_options.h): an option the
+// method would leave unused, or a constant load without one, would fail every such case.
+void checkCapacityMethodRunOptions(const StudySpec& spec) {
+    if (spec.command != StudyCommand::Capacity) return;
+    std::vector<std::string> methods{"ramp"}, given;
+    std::vector<int> lines;
+    int methodLine = 1;
+    const auto note = [&](const std::string& name, int line, const std::vector<std::string>& values) {
+        const std::vector<std::string>& options = capacity::findMethodOptionNames();
+        if (name == "method") {
+            methods = values;
+            methodLine = line;
+        } else if (std::find(options.begin(), options.end(), name) != options.end()) {
+            given.push_back(name);
+            lines.push_back(line);
+        }
+    };
+    for (const FixedValue& f : spec.fixed) note(f.name, f.line, {f.value});
+    for (const StudyAxis& axis : spec.axes) note(axis.name, axis.line, axis.values);
+    const auto nameOf = [](const std::string& name) { return "run option '" + name + "'"; };
+    for (const std::string& method : methods) {
+        for (std::size_t k = 0; k < given.size(); ++k) {
+            try {
+                capacity::checkMethodTakesOption(method, given[k], nameOf, "method");
+            } catch (const InputError& e) {
+                throw InputError(place(spec, lines[k]) + e.what());
+            }
+        }
+        try {
+            capacity::checkMethodOptions(method, given, nameOf, "method");
+        } catch (const InputError& e) {
+            throw InputError(place(spec, methodLine) + e.what());
+        }
+    }
+}
+
 }  // namespace
 
 std::vector<scenario::ScenarioText> readBaseScenarios(const StudySpec& spec) {
@@ -251,6 +298,7 @@ void checkStudyValues(const StudySpec& spec, const std::vector<scenario::Scenari
             }
         }
     }
+    checkCapacityMethodRunOptions(spec);  // after each value, so that a bad value is named first
 }
 
 }  // namespace graspsim::study

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 using graspsim::capacity::parseLoadDirection;
 
 TEST(LoadDirection, AxesAndVectors) {
@@ -14,6 +16,11 @@ TEST(LoadDirection, AxesAndVectors) {
     EXPECT_NEAR(d[2], -0.8, 1e-15);
     EXPECT_EQ(parseLoadDirection("0 1 0", "--direction").direction, SimTK::UnitVec3(0, 1, 0));
     EXPECT_EQ(graspsim::capacity::findAxisDirections().size(), 6u);
+    // Only the direction counts, however large or small the numbers: the norm would overflow or underflow.
+    const SimTK::UnitVec3 huge = parseLoadDirection("1e200,-1e200,0", "--direction").direction;
+    EXPECT_NEAR(huge[0], std::sqrt(0.5), 1e-15);
+    EXPECT_NEAR(huge[1], -std::sqrt(0.5), 1e-15);
+    EXPECT_EQ(parseLoadDirection("0,0,-1e-300", "--direction").direction, SimTK::UnitVec3(0, 0, -1));
 }
 
 TEST(LoadDirection, RejectsWhatIsNotADirection) {

@@ -1,6 +1,7 @@
 #include "cli_process.h"
 
 #include <cstdio>
+#include <fstream>
 #include <regex>
 
 using graspsim::testing::CliProcess;
@@ -58,7 +59,7 @@ TEST_F(CapacityCommand, BadInputIsOneLineAndWritesNothing) {
     expectRejected("--method constant --load 2 --hold 0", "--hold");
     expectRejected("--method constant --load 2 --hold=-1", "--hold");
     expectRejected("--method constant --load 2 --direction all", "--direction");
-    expectRejected("--initial-load 0", "--initial-load");
+    expectRejected("--initial-load -1", "--initial-load: value -1 is not accepted; use a finite number >= 0");
     expectRejected("--friction sticky", "--friction");
     expectRejected("--capsule-contact both", "--capsule-contact");
     expectRejected("--contact rigid --capsule-contact ends", "--capsule-contact");  // rigid keeps the deepest point
@@ -72,6 +73,15 @@ TEST_F(CapacityCommand, BadInputIsOneLineAndWritesNothing) {
     expectRejected("--slip-threshold 0.01 --drop-threshold 0.01", "--slip-threshold");
     expectRejected("--method bisection --initial-load 1", "--initial-load");  // a ramp's step only
     expectRejected("--guess 2", "--guess: only with --method bisection");  // not silently unused by the ramp
+    // Each method's options (method_options.h): none is silently left unused.
+    expectRejected("--hold 1", "--hold: only with --method bisection or constant (how long each constant load is held), not --method ramp");
+    expectRejected("--method constant --load 2 --rate 3", "--rate: only with --method ramp or bisection");
+    expectRejected("--method constant --load 2 --max-duration 2", "--max-duration: only with --method ramp");
+    expectRejected("--method bisection --max-duration 2", "--max-duration: only with --method ramp");
+    expectRejected("--method compliance --hold 1", "--hold: only with --method bisection or constant");
+    expectRejected("--method compliance --mode approx", "--mode: value approx is not accepted with --method compliance");
+    expectRejected("--method constant", "--load: missing; --method constant needs the load");
+    expectRejected("--load 2", "--load: only with --method constant (the constant load), not --method ramp");
     expectRejected("--constraint weld", "--constraint: value 'weld' is not accepted with --mode full");
     expectRejected("--release-slide 0.01", "--release-slide: value '0.01' is not accepted with --mode full");
     expectRejected("--method constant --load 2 --guess 2", "--guess: only with --method bisection");
@@ -100,6 +110,9 @@ TEST_F(CapacityCommand, AFixedStepTheStepperCannotTrustIsRefused) {
 // load and no slip.
 TEST_F(CapacityCommand, RampWritesTheFiguresItPrints) {
     const std::string out = (dir_ / "cap").string();
+    // A folder reused from a --direction all run: its plot would show other measurements.
+    fs::create_directories(out);
+    for (const char* name : {"capacity.png", "plot_capacity.py"}) std::ofstream(fs::path(out) / name) << "an earlier run's";
     const RunResult r = run("capacity phone-pinch --rate 8 --max-duration 0.6 --slip-threshold 0.003 --drop-threshold 0.015 --out " + out);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const std::string json = slurp(fs::path(out) / "capacity.json");
@@ -123,6 +136,8 @@ TEST_F(CapacityCommand, RampWritesTheFiguresItPrints) {
     const std::string last = r.out.substr(r.out.rfind('\n', r.out.size() - 2) + 1);
     EXPECT_EQ(last.rfind("capacity of phone-pinch (compliant, full): -y force (ramp): slips at ", 0), 0u) << last;
     EXPECT_NE(last.find(", drops at "), std::string::npos) << last;
+    EXPECT_FALSE(fs::exists(fs::path(out) / "capacity.png"));
+    EXPECT_FALSE(fs::exists(fs::path(out) / "plot_capacity.py"));
 }
 
 // The ramp on the linearly implicit stepper against the same ramp on CPodes (the second method):

@@ -4,6 +4,8 @@
 
 #include "cli_process.h"
 
+#include <fstream>
+
 #include <gtest/gtest.h>
 
 #include <tuple>
@@ -77,6 +79,9 @@ INSTANTIATE_TEST_SUITE_P(RigidContact, SimulateTwice, ::testing::Combine(::testi
 
 TEST_F(SimulateCommand, ShortRunWritesTheSummary) {
     const std::string out = (dir_ / "run").string();
+    // A folder reused from an approx run with --view: its switch events and replay are not this run's.
+    fs::create_directories(out);
+    for (const char* name : {"events.csv", "constraint.csv", "replay.html"}) std::ofstream(fs::path(out) / name) << "an earlier run's";
     const RunResult a = run("simulate phone-pinch --duration 0.2 --out " + out);
     ASSERT_EQ(a.exitCode, 0) << a.err;
     const std::string summary = slurp(fs::path(out) / "summary.json");
@@ -88,6 +93,7 @@ TEST_F(SimulateCommand, ShortRunWritesTheSummary) {
     // 0.2 s ends inside the 0.5 s approach, when the phone is still fixed: no hold to report.
     EXPECT_NE(a.out.find("hold not tested (the object is fixed for the approach until 0.5 s)"), std::string::npos) << a.out;
     EXPECT_EQ(a.out.find("held yes"), std::string::npos) << a.out;
+    for (const char* name : {"events.csv", "constraint.csv", "replay.html"}) EXPECT_FALSE(fs::exists(fs::path(out) / name)) << name;
     // 0.7 s ends after the release but before the 1 s settle time: held, with no drift to report.
     const RunResult b = run("simulate ball-clutch --duration 0.7 -q --out " + (dir_ / "unsettled").string());
     ASSERT_EQ(b.exitCode, 0) << b.err;
@@ -240,6 +246,8 @@ TEST_F(SimulateCommand, RejectsBadOptionsWithoutTouchingTheOutputFolder) {
     expectBadInput("simulate phone-pinch --ramp -y --ramp-rate 0" + out, {"--ramp-rate", "0", "> 0 (N/s)"});
     expectBadInput("simulate phone-pinch --ramp-rate 2" + out, {"--ramp-rate", "without --ramp"});
     expectBadInput("simulate phone-pinch --ramp-torque" + out, {"--ramp-torque", "without --ramp"});
+    // The phone settles to 1 s: a run that ends before its load starts at 1.1 s has no ramp to show.
+    expectBadInput("simulate phone-pinch --ramp -y --duration 0.5" + out, {"--ramp", "starts at 1.1 s", "end at 0.5 s", "--duration"});
     // About the line through the phone's two goals nothing resists (capacity refuses it too).
     expectBadInput("simulate phone-pinch --ramp 0.8866,-0.4599,-0.0500 --ramp-torque" + out,
                    {"--ramp 0.8866,-0.4599,-0.0500 --ramp-torque", "index_tip and thumb_tip"});

@@ -187,4 +187,34 @@ TEST(CaseSetup, CapacityOptionsBecomeTheCommandsFlags) {
     EXPECT_NE(refusal("  hold: [inf]\n").find("run option 'hold': value inf is not accepted"), std::string::npos);
     EXPECT_NE(refusal("  torque: [yes]\n").find("run option 'torque': 'yes' is not accepted; true"), std::string::npos);
     EXPECT_NE(refusal("  method: [compliance]\n").find("'compliance' is not accepted; ramp, bisection or constant"), std::string::npos);
+    EXPECT_NE(refusal("  slip_threshold: [0.001, 0.05]\n").find("run option 'slip_threshold': value 0.05 is not accepted; the slip "
+                                                               "threshold must be below the drop threshold, 0.02 m"),
+              std::string::npos);
+}
+
+// The load options each method takes (method_options.h), for every method the study runs: an
+// option the method would leave unused, or a constant load without one, would fail every such
+// case, so it is refused before anything runs, naming the option's line (the method's for a
+// missing load).
+TEST(CaseSetup, ACapacityStudysLoadOptionsAreTheMethods) {
+    const auto refusal = [](const std::string& body) {
+        try {
+            const StudySpec spec = parseStudy("name: t\nbase: phone-pinch\ncommand: capacity\n" + body + "measures: [slip_onset_n]\n", "s.yaml");
+            checkStudyValues(spec, readBaseScenarios(spec));
+        } catch (const graspsim::InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string("accepted");
+    };
+    EXPECT_EQ(refusal("set: {load: 2}\naxes:\n  mode: [full]\n"),
+              "s.yaml:4: run option 'load': only with method constant (the constant load), not method ramp");
+    EXPECT_EQ(refusal("set: {rate: 8, load: 2}\naxes:\n  method: [constant, bisection]\n"),
+              "s.yaml:4: run option 'rate': only with method ramp or bisection (the ramp's rate; bisection's first load is rate x 1 s), "
+              "not method constant");
+    EXPECT_EQ(refusal("set: {method: constant}\naxes:\n  mode: [full]\n"),
+              "s.yaml:4: run option 'load': missing; method constant needs the load, N (N m with a torque), a number > 0");
+    EXPECT_EQ(refusal("axes:\n  hold: [0.5]\n"),
+              "s.yaml:5: run option 'hold': only with method bisection or constant (how long each constant load is held), not method ramp");
+    EXPECT_EQ(refusal("set: {method: constant, hold: 0.5}\naxes:\n  load: [1, 2]\n"), "accepted");
+    EXPECT_EQ(refusal("set: {method: bisection, hold: 0.5, rate: 2}\naxes:\n  mode: [full]\n"), "accepted");
 }

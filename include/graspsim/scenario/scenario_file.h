@@ -32,8 +32,11 @@ Scenario loadScenarioFile(const std::string& path);
 /// @throws graspsim::InputError when the text is not an accepted scenario.
 Scenario parseScenario(const std::string& yamlText, const std::string& source);
 
-/// The names of the built-in scenarios ("ball-clutch", "phone-pinch"), sorted.
+/// The names of the built-in scenarios ("ball-clutch", "phone-pinch", ...), sorted.
 std::vector<std::string> getBuiltinScenarioNames();
+
+/// The same names joined, "ball-clutch, ball-tripod, ...", for help texts and messages.
+std::string joinBuiltinScenarioNames();
 
 /// The built-in scenario `name`: `models/scenarios/<name>.yaml`, compiled into the library.
 /// @throws graspsim::InputError listing the built-in names when there is none called `name`.
