@@ -101,21 +101,31 @@ LoadedStudy loadStudy(const std::string& path) {
     return loaded;
 }
 
+// The cases counted and listed in the words of results.csv's status column. The incomplete count
+// is given only when there are some, so a study without any prints what it always printed.
+void printTableSummary(const study::StudySpec& spec, const study::StudyTable& table, const std::string& folder, bool grid) {
+    const std::size_t notOk = table.missing.size() + table.incomplete.size() + table.failed.size();
+    std::cout << "study '" << spec.name << "': " << table.total << " cases, " << table.total - static_cast<int>(notOk) << " ok, ";
+    if (!table.incomplete.empty()) std::cout << table.incomplete.size() << " incomplete, ";
+    std::cout << table.failed.size() << " failed, " << table.missing.size() << " missing; table in " << folder << "/results.csv"
+              << (grid ? " (a grid by base scenario in results.md)" : "") << "\n";
+    if (!table.incomplete.empty()) {
+        std::cout << "incomplete (stopped early; see their error column): " << study::formatCaseList(table.incomplete) << "\n";
+    }
+    if (!table.failed.empty()) std::cout << "failed (see their error column): " << study::formatCaseList(table.failed) << "\n";
+    if (!table.missing.empty()) {
+        std::cout << "missing: " << study::formatCaseList(table.missing)
+                  << "; run the study again (or resubmit): finished cases are skipped\n";
+    }
+}
+
 // results.csv and the plots; returns collect's exit code (5 when cases are missing).
 int mergeResults(const study::StudySpec& spec, const std::string& folder) {
     const study::StudyTable table = study::collectStudyTable(spec, folder);
     study::writeStudyTable(folder, table);
     const std::string grid = study::formatGridTable(spec, folder);
     if (!grid.empty()) io::writeFileAtomically(folder + "/results.md", grid);
-    const int finished = table.total - static_cast<int>(table.missing.size());
-    std::cout << "study '" << spec.name << "': " << table.total << " cases, " << finished - static_cast<int>(table.failed.size())
-              << " ok, " << table.failed.size() << " failed, " << table.missing.size() << " missing; table in " << folder
-              << "/results.csv" << (grid.empty() ? "" : " (a grid by base scenario in results.md)") << "\n";
-    if (!table.failed.empty()) std::cout << "failed (see their error column): " << study::formatCaseList(table.failed) << "\n";
-    if (!table.missing.empty()) {
-        std::cout << "missing: " << study::formatCaseList(table.missing)
-                  << "; run the study again (or resubmit): finished cases are skipped\n";
-    }
+    printTableSummary(spec, table, folder, !grid.empty());
     const study::PlotOutcome plots = study::drawStudyPlots(folder);
     if (!plots.skipped.empty()) std::cout << plots.skipped << "\n";
     else std::cout << plots.files.size() << " plot(s) in " << folder << "/plots\n";

@@ -53,6 +53,24 @@ bool holdsOtherFiles(const std::string& folder) {
     return false;
 }
 
+std::string replaceAll(std::string text, const std::string& from, const std::string& to) {
+    if (from.empty()) return text;
+    for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size())) {
+        text.replace(at, from.size(), to);
+    }
+    return text;
+}
+
+// The case's process was told to write into its temporary folder and says so ("files in
+// out/cases/0007.tmp-123"); the committed copy of what it printed names the folder it is kept in.
+void renameInPrintedFile(const std::string& path, const std::string& tmpFolder, const std::string& target) {
+    std::error_code ec;
+    if (!fs::is_regular_file(path, ec)) return;  // a case refused before its process started
+    const std::string text = io::readTextFile(path);
+    if (text.find(tmpFolder) == std::string::npos) return;
+    io::writeFileAtomically(path, replaceAll(text, tmpFolder, target));
+}
+
 }  // namespace
 
 std::string toString(CaseStatus status) {
@@ -125,13 +143,15 @@ void removeCaseTemporaries(const std::string& folder, int index) {
 }
 
 void commitCase(const std::string& folder, const std::string& tmpFolder, const CaseRecord& record) {
+    const std::string target = findCaseFolder(folder, record.index);
+    renameInPrintedFile(tmpFolder + "/stdout.txt", tmpFolder, target);
+    renameInPrintedFile(tmpFolder + "/stderr.txt", tmpFolder, target);
     nlohmann::ordered_json json;
     json["case"] = record.index;
     json["status"] = toString(record.status);
-    json["error"] = record.error;
+    json["error"] = replaceAll(record.error, tmpFolder, target);
     json["values"] = record.values;
     io::writeFileAtomically(tmpFolder + "/case.json", json.dump(2) + "\n");
-    const std::string target = findCaseFolder(folder, record.index);
     std::error_code ec;
     fs::remove_all(target, ec);  // a folder without case.json: a run that died between the two renames
     fs::rename(tmpFolder, target, ec);

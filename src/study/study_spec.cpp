@@ -46,6 +46,30 @@ std::string formatYaml(const YAML::Node& node) {
     return out.c_str();
 }
 
+// A direction written as a YAML list, [0, -1, 0], becomes the text `graspsim capacity
+// --direction` takes ("0,-1,0"), so that it reads as the command's vectors do; every other value
+// stays YAML text (a scenario field's vector is written into the scenario as a list). A lone
+// number is never a direction: on an axis it is most likely one direction's list written
+// without its brackets, [0, -1, 0] for [[0, -1, 0]].
+std::string formatValue(const std::string& source, const std::string& name, const YAML::Node& node, StudyCommand command) {
+    if (command != StudyCommand::Capacity || name != "direction") return formatYaml(node);
+    double number = 0;
+    const bool isNumber = node.IsScalar() && YAML::convert<double>::decode(node, number);
+    if (!node.IsSequence() && !isNumber) return formatYaml(node);
+    bool ok = node.IsSequence() && node.size() == 3;
+    std::string text;
+    for (std::size_t k = 0; ok && k < node.size(); ++k) {
+        ok = node[k].IsScalar() && YAML::convert<double>::decode(node[k], number) && std::isfinite(number);
+        text += (text.empty() ? "" : ",") + (ok ? node[k].Scalar() : std::string());
+    }
+    if (!ok) {
+        reject(source, node, "run option 'direction' value '" + formatYaml(node) +
+                                 "' is not accepted; a direction is x, y, z, -x, -y, -z or a list of three numbers such as "
+                                 "[0, -1, 0] (an axis lists directions: [[0, -1, 0], [1, 0, 0]])");
+    }
+    return text;
+}
+
 bool isRunOption(const std::string& name) {
     const auto& options = getRunOptionNames();
     return std::find(options.begin(), options.end(), name) != options.end();
@@ -105,7 +129,7 @@ ValueRange readRange(const std::string& source, const YAML::Node& node, const st
     return range;
 }
 
-StudyAxis readAxis(const std::string& source, const YAML::Node& key, const YAML::Node& value) {
+StudyAxis readAxis(const std::string& source, const YAML::Node& key, const YAML::Node& value, StudyCommand command) {
     StudyAxis axis;
     axis.name = key.Scalar();
     checkName(source, key, axis.name);
@@ -114,7 +138,7 @@ StudyAxis readAxis(const std::string& source, const YAML::Node& key, const YAML:
     if (value.IsSequence()) {
         std::set<std::string> seen;
         for (const auto& item : value) {
-            axis.values.push_back(formatYaml(item));
+            axis.values.push_back(formatValue(source, axis.name, item, command));
             if (!seen.insert(axis.values.back()).second) {
                 reject(source, item, "axis '" + axis.name + "' value '" + axis.values.back() + "' is listed twice; give each value once");
             }
@@ -131,20 +155,20 @@ StudyAxis readAxis(const std::string& source, const YAML::Node& key, const YAML:
     return axis;
 }
 
-std::vector<StudyAxis> readAxes(const std::string& source, const YAML::Node& node) {
+std::vector<StudyAxis> readAxes(const std::string& source, const YAML::Node& node, StudyCommand command) {
     if (!node || !node.IsMap() || node.size() == 0) {
         reject(source, node ? node : YAML::Node(), "'axes' is missing or empty; give a map of axis: [values] or axis: {from, to, steps}");
     }
     std::vector<StudyAxis> axes;
     std::set<std::string> seen;
     for (const auto& entry : node) {
-        axes.push_back(readAxis(source, entry.first, entry.second));
+        axes.push_back(readAxis(source, entry.first, entry.second, command));
         if (!seen.insert(axes.back().name).second) reject(source, entry.first, "axis '" + axes.back().name + "' is given twice");
     }
     return axes;
 }
 
-std::vector<FixedValue> readFixed(const std::string& source, const YAML::Node& node) {
+std::vector<FixedValue> readFixed(const std::string& source, const YAML::Node& node, StudyCommand command) {
     std::vector<FixedValue> fixed;
     if (!node || node.IsNull()) return fixed;
     if (!node.IsMap()) reject(source, node, "'set' is not accepted; give a map of field: value");
@@ -153,14 +177,28 @@ std::vector<FixedValue> readFixed(const std::string& source, const YAML::Node& n
         const std::string name = entry.first.Scalar();
         checkName(source, entry.first, name);
         if (!seen.insert(name).second) reject(source, entry.first, "set '" + name + "' is given twice; give each field once");
-        fixed.push_back({name, isRunOption(name), formatYaml(entry.second), findLine(entry.first)});
+        fixed.push_back({name, isRunOption(name), formatValue(source, name, entry.second, command), findLine(entry.first)});
     }
     return fixed;
 }
 
-std::vector<std::string> readMeasures(const std::string& source, const YAML::Node& node, StudyCommand command) {
-    const auto& known = getMeasureNames(command);
-    const std::string file = nameResultFile(command);
+// A measure named as an axis would be a second column of that name in results.csv, and one named
+// as a set key only repeats that value (capacity.json's rate is the rate the case ran at).
+void checkMeasureIsNotGiven(const std::string& source, const YAML::Node& item, const std::string& name, const StudySpec& spec) {
+    for (const StudyAxis& axis : spec.axes) {
+        if (axis.name == name) reject(source, item, "measure '" + name + "' is also an axis; its values are in the axis column");
+    }
+    for (const FixedValue& f : spec.fixed) {
+        if (f.name == name) {
+            reject(source, item, "measure '" + name + "' is also a set key (line " + std::to_string(f.line) +
+                                     "); every case has the value given there");
+        }
+    }
+}
+
+std::vector<std::string> readMeasures(const std::string& source, const YAML::Node& node, const StudySpec& spec) {
+    const auto& known = getMeasureNames(spec.command);
+    const std::string file = nameResultFile(spec.command);
     if (!node || !node.IsSequence() || node.size() == 0) {
         reject(source, node ? node : YAML::Node(), "'measures' is missing or empty; give a list of " + file + " keys: " + join(known));
     }
@@ -173,6 +211,7 @@ std::vector<std::string> readMeasures(const std::string& source, const YAML::Nod
         if (std::find(measures.begin(), measures.end(), name) != measures.end()) {
             reject(source, item, "measure '" + name + "' is listed twice; give each measure once");
         }
+        checkMeasureIsNotGiven(source, item, name, spec);
         measures.push_back(name);
     }
     return measures;
@@ -332,12 +371,12 @@ StudySpec parseStudy(const std::string& yamlText, const std::string& source) {
     if (root["description"]) spec.description = readText(source, root["description"], "description");
     if (!root["base"]) throw InputError(source + ": 'base' is missing; give a built-in scenario (" + join(scenario::getBuiltinScenarioNames()) + ") or a scenario file");
     if (root["command"]) spec.command = readCommand(source, root["command"]);
-    spec.fixed = readFixed(source, root["set"]);
-    spec.axes = readAxes(source, root["axes"]);
+    spec.fixed = readFixed(source, root["set"], spec.command);
+    spec.axes = readAxes(source, root["axes"], spec.command);
     checkCommandOptions(spec);
     readBases(source, root["base"], spec);
     readSampling(source, root, spec);
-    spec.measures = readMeasures(source, root["measures"], spec.command);
+    spec.measures = readMeasures(source, root["measures"], spec);
     for (const FixedValue& f : spec.fixed) {
         for (const StudyAxis& a : spec.axes) {
             if (a.name == f.name) throw InputError(source + ":" + std::to_string(f.line) + ": '" + f.name + "' is both set and an axis; keep one");

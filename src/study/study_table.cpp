@@ -59,7 +59,8 @@ StudyTable collectStudyTable(const StudySpec& spec, const std::string& folder) {
             continue;
         }
         const CaseRecord record = readCaseRecord(folder, studyCase.index);
-        if (record.status != CaseStatus::Ok) table.failed.push_back(studyCase.index);
+        if (record.status == CaseStatus::Incomplete) table.incomplete.push_back(studyCase.index);
+        if (record.status == CaseStatus::Failed) table.failed.push_back(studyCase.index);
         table.csv += formatRow(spec, studyCase, &record, readCaseSummary(folder, studyCase.index, spec.command));
     }
     return table;

@@ -168,14 +168,18 @@ TEST_F(StudyCommand, RunResumesAndShardsCollectToTheSameTable) {
     }
     const RunResult collected = run("study collect " + sharded.string());
     EXPECT_EQ(collected.exitCode, 0) << collected.out;
-    EXPECT_NE(collected.out.find("failed (see their error column): 0, 1"), std::string::npos) << collected.out;
+    // No incomplete case: the summary's words are those it always had.
+    const std::string summary = "study 'tiny': 4 cases, 2 ok, 2 failed, 0 missing; table in " + sharded.string() +
+                                "/results.csv\nfailed (see their error column): 0, 1\n";
+    EXPECT_EQ(collected.out.substr(0, summary.size()), summary) << collected.out;
     EXPECT_EQ(dropWallTime(slurp(sharded / "results.csv")), dropWallTime(table));
 }
 
 // command: capacity. Each case is `graspsim capacity` on its scenario: the phone's -y and x ramps
 // (8 N/s, 0.6 s) give in results.csv the figures the command gives run by hand with the same
 // options (the second method: the same measurement outside the study), and the phone made twenty
-// times heavier, which its pinch drops before the load, is an incomplete case naming why.
+// times heavier, which its pinch drops before the load, is an incomplete case naming why, counted
+// as incomplete in the summary. A case's stdout.txt names its committed folder.
 TEST_F(StudyCommand, ACapacityStudyTablesTheFiguresTheCommandGives) {
     const std::string study = write("cap.yaml", "name: cap\ncommand: capacity\nbase: phone-pinch\nset: {rate: 8, max_duration: 0.6}\n"
                                                 "axes:\n  object.mass: [0.1, 2.0]\n  direction: [-y, x]\n"
@@ -183,6 +187,14 @@ TEST_F(StudyCommand, ACapacityStudyTablesTheFiguresTheCommandGives) {
     const std::string out = (dir_ / "st").string();
     const RunResult r = run("study run " + study + " --out " + out + " --jobs 2");
     ASSERT_EQ(r.exitCode, 0) << r.err;
+    // The summary counts and lists the cases in the status column's words.
+    const std::string summary = "study 'cap': 4 cases, 2 ok, 2 incomplete, 0 failed, 0 missing; table in " + out +
+                                "/results.csv\nincomplete (stopped early; see their error column): 2, 3\n";
+    EXPECT_EQ(r.out.substr(0, summary.size()), summary) << r.out;
+    // What the case printed names the folder it is kept in, not the one it ran in.
+    const std::string printed = slurp(fs::path(out) / "cases/0000/stdout.txt");
+    const std::string ending = "; files in " + out + "/cases/0000\n";
+    EXPECT_EQ(printed.substr(printed.size() - std::min(printed.size(), ending.size())), ending) << printed;
     std::istringstream csv(slurp(fs::path(out) / "results.csv"));
     std::string line;
     std::getline(csv, line);

@@ -171,6 +171,12 @@ TEST(CaseSetup, CapacityOptionsBecomeTheCommandsFlags) {
               (Options{{"--direction", "-y"}, {"--rate", "8"}, {"--max-duration", "0.6"}}));
     EXPECT_EQ(makeCaseSetup(spec, base, expandCases(spec).at(3)).options,
               (Options{{"--direction", "1,0,0"}, {"--torque", ""}, {"--rate", "8"}, {"--max-duration", "0.6"}}));
+    // A direction written as a YAML list is given as the command's three numbers.
+    const StudySpec listed = capacitySpec("  direction: [[0, -1, 0], [1, 0.5, 0]]\n");
+    const std::vector<scenario::ScenarioText> listedBase = readBaseScenarios(listed);
+    checkStudyValues(listed, listedBase);
+    EXPECT_EQ(makeCaseSetup(listed, listedBase, expandCases(listed).at(1)).options,
+              (Options{{"--direction", "1,0.5,0"}, {"--rate", "8"}, {"--max-duration", "0.6"}}));
     const auto refusal = [&](const std::string& axes) {
         try {
             const StudySpec bad = capacitySpec(axes);
@@ -183,6 +189,9 @@ TEST(CaseSetup, CapacityOptionsBecomeTheCommandsFlags) {
     EXPECT_NE(refusal("  direction: [all]\n").find("s.yaml:6: axis 'direction': run option 'direction': 'all' is not accepted in a study"),
               std::string::npos);
     EXPECT_NE(refusal("  direction: ['0,0,0']\n").find("run option 'direction'"), std::string::npos);
+    EXPECT_EQ(refusal("  direction: [[0, 0, 0]]\n"),
+              "s.yaml:6: axis 'direction': run option 'direction': value '0,0,0' is not accepted (zero or non-finite); "
+              "use x, y, z, -x, -y, -z or three numbers such as 0,-1,0 (not all zero)");
     EXPECT_NE(refusal("  load: [2, 0]\n").find("run option 'load': value 0 is not accepted; use a finite number > 0 (N"), std::string::npos);
     EXPECT_NE(refusal("  hold: [inf]\n").find("run option 'hold': value inf is not accepted"), std::string::npos);
     EXPECT_NE(refusal("  torque: [yes]\n").find("run option 'torque': 'yes' is not accepted; true"), std::string::npos);

@@ -2,6 +2,7 @@
 // was; a case is committed whole (its temporary folder renamed) and read back.
 
 #include "graspsim/error.h"
+#include "graspsim/io/atomic_file.h"
 #include "graspsim/study/study_folder.h"
 
 #include "scratch_folder.h"
@@ -65,6 +66,21 @@ TEST_F(StudyFolder, CaseIsCommittedWholeAndTemporariesRemoved) {
     EXPECT_EQ(record.error, "bad \"value\", here");
     EXPECT_EQ(record.values, (std::vector<std::string>{"x", "[1, 2]"}));
     EXPECT_EQ(findCaseFolder(dir_, 3), (dir_ / "cases/0003").string());
+}
+
+// The case's process printed the temporary folder it wrote into; the committed copy names the
+// case's folder (stdout.txt, stderr.txt and the error taken from it).
+TEST_F(StudyFolder, WhatTheCasePrintedNamesItsCommittedFolder) {
+    prepareStudyFolder(dir_, makeSpec("a"), "base");
+    const std::string tmp = findCaseFolder(dir_, 1) + ".tmp-6236", target = findCaseFolder(dir_, 1);
+    fs::create_directories(tmp);
+    std::ofstream(tmp + "/stdout.txt") << "phone-pinch -y force (ramp): slips at 2 N\ncapacity: slips at 2 N; files in " << tmp << "\n";
+    std::ofstream(tmp + "/stderr.txt") << "graspsim: cannot write " << tmp << "/capacity.json\n";
+    commitCase(dir_, tmp, {1, CaseStatus::Failed, "cannot write " + tmp + "/capacity.json", {"x"}});
+    using graspsim::io::readTextFile;
+    EXPECT_EQ(readTextFile(target + "/stdout.txt"), "phone-pinch -y force (ramp): slips at 2 N\ncapacity: slips at 2 N; files in " + target + "\n");
+    EXPECT_EQ(readTextFile(target + "/stderr.txt"), "graspsim: cannot write " + target + "/capacity.json\n");
+    EXPECT_EQ(readCaseRecord(dir_, 1).error, "cannot write " + target + "/capacity.json");
 }
 
 // Hand-edited records that are valid JSON of another shape are bad input naming the file, not

@@ -127,3 +127,45 @@ TEST(StudySpec, ACapacityStudyTakesTheLoadOptionsAndCapacityMeasures) {
                   .find("give a list of values"),
               std::string::npos);
 }
+
+// A direction written as a YAML list is the text `graspsim capacity --direction` takes; other
+// vectors (scenario fields) stay YAML lists; a list of another length, a non-number or a lone
+// number is refused naming the line.
+TEST(StudySpec, ADirectionListBecomesTheCommandsThreeNumbers) {
+    const std::string head = kHead + "command: capacity\n";
+    const StudySpec axis = parseStudy(head + "axes: {direction: [[0, -1, 0], [1, 0.5, -2e-1], -y]}\nmeasures: [drop_n]\n", "s.yaml");
+    ASSERT_EQ(axis.axes.size(), 1u);
+    EXPECT_EQ(axis.axes[0].values, (std::vector<std::string>{"0,-1,0", "1,0.5,-2e-1", "-y"}));
+    const StudySpec set = parseStudy(head + "set: {direction: [0, -1, 0], object.size: [0.07, 0.14, 0.008]}\naxes: {rate: [4]}\n"
+                                            "measures: [drop_n]\n",
+                                     "s.yaml");
+    ASSERT_EQ(set.fixed.size(), 2u);
+    EXPECT_EQ(set.fixed[0].value, "0,-1,0");
+    EXPECT_EQ(set.fixed[1].value, "[0.07, 0.14, 0.008]");
+    const std::string accepted = "is not accepted; a direction is x, y, z, -x, -y, -z or a list of three numbers such as "
+                                 "[0, -1, 0] (an axis lists directions: [[0, -1, 0], [1, 0, 0]])";
+    EXPECT_EQ(errorOf(head + "axes: {direction: [[0, -1], [1, 0, 0]]}\nmeasures: [drop_n]\n"),
+              "s.yaml:4: run option 'direction' value '[0, -1]' " + accepted);
+    EXPECT_EQ(errorOf(head + "set:\n  direction: [0, a, 0]\naxes: {rate: [4]}\nmeasures: [drop_n]\n"),
+              "s.yaml:5: run option 'direction' value '[0, a, 0]' " + accepted);
+    EXPECT_EQ(errorOf(head + "axes: {direction: [[0, .inf, 0]]}\nmeasures: [drop_n]\n"),
+              "s.yaml:4: run option 'direction' value '[0, .inf, 0]' " + accepted);
+    EXPECT_EQ(errorOf(head + "axes: {direction: [0, -1, 0]}\nmeasures: [drop_n]\n"), "s.yaml:4: run option 'direction' value '0' " + accepted);
+    EXPECT_EQ(errorOf(head + "axes: {direction: [[0, -1, 0], '0,-1,0']}\nmeasures: [drop_n]\n"),
+              "s.yaml:4: axis 'direction' value '0,-1,0' is listed twice; give each value once");
+    // In a simulate study direction is no option at all, whatever its value.
+    EXPECT_NE(errorOf(kHead + "axes: {direction: [[0, -1]]}\nmeasures: [held]\n")
+                  .find("s.yaml:3: run option 'direction' is not accepted with command: simulate"),
+              std::string::npos);
+}
+
+// A measure that is also an axis would be a second column of that name in results.csv; one that
+// is also set only repeats the set value.
+TEST(StudySpec, AMeasureThatIsAlsoAnAxisOrSetIsRefused) {
+    const std::string head = kHead + "command: capacity\n";
+    EXPECT_EQ(errorOf(head + "axes: {rate: [4, 8]}\nmeasures: [drop_n, rate]\n"),
+              "s.yaml:5: measure 'rate' is also an axis; its values are in the axis column");
+    EXPECT_EQ(errorOf(head + "set: {rate: 8}\naxes: {direction: [-y]}\nmeasures:\n  - drop_n\n  - rate\n"),
+              "s.yaml:8: measure 'rate' is also a set key (line 4); every case has the value given there");
+    EXPECT_NO_THROW(parseStudy(head + "axes: {direction: [-y]}\nmeasures: [drop_n, rate]\n", "s.yaml"));
+}

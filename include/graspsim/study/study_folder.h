@@ -5,7 +5,8 @@
 ///     DIR/study.json          which study this folder belongs to (name, fingerprint, source)
 ///     DIR/study.yaml          a copy of the study file
 ///     DIR/cases/0007/         one folder per finished case: scenario.yaml, the run's files
-///                             (summary.json, trajectory.csv, ...), stderr.txt, case.json
+///                             (summary.json, trajectory.csv, ...), stdout.txt, stderr.txt,
+///                             case.json
 ///     DIR/results.csv         one row per case (study run without --shard, study collect)
 ///     DIR/plots/*.png         each measure against each axis
 ///
@@ -62,6 +63,8 @@ bool isCaseFinished(const std::string& folder, int index);
 void removeCaseTemporaries(const std::string& folder, int index);
 
 /// Writes `record` into `tmpFolder`/case.json, then renames `tmpFolder` to the case's folder.
+/// What the case's process printed (stdout.txt, stderr.txt) and the record's error name the
+/// case's folder wherever they named `tmpFolder` ("files in DIR/cases/0007").
 /// @throws graspsim::InputError when the folder cannot be written or renamed.
 void commitCase(const std::string& folder, const std::string& tmpFolder, const CaseRecord& record);
 

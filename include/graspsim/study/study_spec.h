@@ -7,7 +7,9 @@
 /// A study is read from a commented YAML file; models/studies/stature-friction.yaml documents
 /// every key. Values stay as the YAML text the file gives ("1.75", "[0, -9.5, 0]", "approx"):
 /// the scenario reader and the run-option parsers check them, so their messages are the ones
-/// a user already knows from `graspsim simulate`.
+/// a user already knows from `graspsim simulate`. One exception: a capacity study's direction
+/// written as a list of three numbers, [0, -1, 0], is kept as the text `graspsim capacity
+/// --direction` takes, "0,-1,0".
 
 #include <cstdint>
 #include <string>
@@ -100,7 +102,8 @@ struct StudySpec {
 /// "grid", "random" or "latin".
 std::string toString(Sampling sampling);
 
-/// Reads the study file at `path`. Checks its structure, names, ranges and measures; the
+/// Reads the study file at `path`. Checks its structure, names, ranges and measures (a measure
+/// that is also an axis or a `set:` key is refused: results.csv would have two such columns); the
 /// values themselves are checked against the base scenario by checkStudyValues (case_setup.h).
 /// @throws graspsim::InputError with one line naming the file, line, key and value.
 StudySpec loadStudyFile(const std::string& path);

@@ -18,10 +18,11 @@ namespace graspsim::study {
 
 /// What the merge found.
 struct StudyTable {
-    std::string csv;           ///< results.csv's text
-    int total = 0;             ///< cases in the study
-    std::vector<int> missing;  ///< case numbers not finished (never run, or killed)
-    std::vector<int> failed;   ///< finished but not Ok (incomplete or failed)
+    std::string csv;              ///< results.csv's text
+    int total = 0;                ///< cases in the study
+    std::vector<int> missing;     ///< case numbers not finished (never run, or killed)
+    std::vector<int> incomplete;  ///< finished, status incomplete (stopped early)
+    std::vector<int> failed;      ///< finished, status failed (no result)
 };
 
 /// Reads every case folder of the study in `folder` into the table.
