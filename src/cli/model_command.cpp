@@ -16,7 +16,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -85,10 +88,11 @@ void parseFingerOptions(const std::string& stiffness, const std::string& damping
     }
 }
 
-// The file's format follows its extension: .osim is an OpenSim 4 model, anything else URDF.
+// The file's format follows its extension: .osim (any case) is an OpenSim 4 model, anything else URDF.
 std::string formatModelFile(const model::ModelDescription& description, const std::string& path) {
-    const std::string osim = ".osim";
-    const bool isOsim = path.size() >= osim.size() && path.compare(path.size() - osim.size(), osim.size(), osim) == 0;
+    std::string extension = std::filesystem::path(path).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+    const bool isOsim = extension == ".osim";
     return isOsim ? opensim::writeOsim(description) : model::writeUrdf(description);
 }
 

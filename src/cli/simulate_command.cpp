@@ -304,6 +304,7 @@ int SimulateCommand::run(const std::vector<std::string>& commandLine) const {
     const simulation::SimulationSummary& s = result.summary;
     if (o.view) std::cout << "replay written to " << viewer::writeReplayPage(o.out) << ": open it in a web browser\n";
     if (!o.view) io::removeStaleFile(o.out + "/replay.html");  // an earlier run's replay would show another run
+    io::removeStaleFile(o.out + "/replay.png");  // and so would its picture (graspsim view --png)
     std::cout << scenario.name << " (" << simulation::toString(s.contact) << ", " << simulation::toString(s.mode) << ", perturbation " << s.perturbation
               << (ramp.empty() ? "" : ", ramp " + ramp) << "): " << s.simTime << " s simulated in " << s.wallTime << " s, " << s.steps << " steps, "
               << describeHold(scenario, s) << "; results in " << o.out << "\n";

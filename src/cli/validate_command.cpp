@@ -19,8 +19,8 @@ namespace graspsim::cli {
 
 struct ValidateCommand::Options {
     bool quick = false;
-    bool capacity = true;
-    bool plots = true;
+    bool noCapacity = false;  // plain flags: CLI11 prints a negated flag's default into the help ("{false}")
+    bool noPlots = false;
     std::vector<std::string> experiments, modes;
     std::string longHold;
     std::string jobs = "1";
@@ -37,8 +37,8 @@ ValidateCommand::ValidateCommand(CLI::App& app) : options_(std::make_shared<Opti
     command_->add_option("--experiment", o.experiments, "ball-clutch or phone-pinch (repeatable; default both)");
     command_->add_option("--mode", o.modes, "full or an approximation variant, e.g. approx-bushing-merged (repeatable; default all)");
     command_->add_option("--long-hold", o.longHold, "simulated seconds of the long approximation hold (default 600; 0 skips it)");
-    command_->add_flag("!--no-plots", o.plots, "skip the plots (no Python needed)");
-    command_->add_flag("!--no-capacity", o.capacity,
+    command_->add_flag("--no-plots", o.noPlots, "skip the plots (no Python needed)");
+    command_->add_flag("--no-capacity", o.noCapacity,
                        "skip the holding-capacity comparison (full contact against each approximation variant, nine loads "
                        "per experiment; without --experiment also the planned scenes against the default; --quick: the -y force only)");
     command_->add_option("--jobs", o.jobs,
@@ -108,7 +108,7 @@ int ValidateCommand::run() const {
     validation::ValidationResults results =
         validation::runValidation(runs, o.out, progress.makeRunStart(), progress.makeWithinRun());
     progress.finish();
-    if (o.capacity) {
+    if (!o.noCapacity) {
         ProgressMeter capacityMeter("capacity", o.quiet);
         validation::CapacityPlan capacityPlan;
         capacityPlan.experiments = o.experiments.empty() && o.quick ? std::vector<std::string>{"ball-clutch"} : o.experiments;
@@ -128,8 +128,8 @@ int ValidateCommand::run() const {
     meter.finish();
     // The tables first, so that a plotting failure still leaves the numbers.
     validation::writeValidationReport(o.out, results, {});
-    std::vector<std::string> plots = o.plots ? validation::runPlotScript(o.out) : std::vector<std::string>{};
-    if (o.plots) {
+    std::vector<std::string> plots = !o.noPlots ? validation::runPlotScript(o.out) : std::vector<std::string>{};
+    if (!o.noPlots) {
         for (const std::string& p : validation::drawCapacityComparisonPlots(o.out, results.capacity)) plots.push_back(p);
     }
     validation::writeValidationReport(o.out, results, plots);

@@ -60,6 +60,11 @@ void checkPictureFile(const std::string& pngTime, const std::string& pngFile) {
     if (std::filesystem::is_directory(pngFile, ec)) {
         throw InputError("--png-file: value '" + pngFile + "' is a folder; give the picture's file name, e.g. replay.png");
     }
+    const std::filesystem::path parent = std::filesystem::path(pngFile).parent_path();
+    if (!parent.empty() && !std::filesystem::is_directory(parent, ec)) {
+        throw InputError("--png-file: value '" + pngFile + "': folder '" + parent.string() + "' does not exist; create it or give "
+                         "a file in an existing folder");
+    }
 }
 
 double parsePictureTime(const std::string& text, const viewer::ResultRecord& record) {

@@ -20,7 +20,7 @@ TEST_F(ModelCommand, BuildsAndDescribesTheDefaultArm) {
     EXPECT_NE(text.out.find("DOF: 27"), std::string::npos) << text.out;
 }
 
-// The format follows the extension: .osim is an OpenSim 4 document; an unwritable path is one
+// The format follows the extension: .osim (in any case) is an OpenSim 4 document; an unwritable path is one
 // line naming it, exit code 2, and no file.
 TEST_F(ModelCommand, WritesAnOpenSimModelForAnOsimPath) {
     const std::string osim = (dir_ / "arm.osim").string();
@@ -32,7 +32,10 @@ TEST_F(ModelCommand, WritesAnOpenSimModelForAnOsimPath) {
     const RunResult object = run("model object phone -o " + (dir_ / "phone.osim").string());
     ASSERT_EQ(object.exitCode, 0) << object.err;
     EXPECT_NE(graspsim::testing::slurp(dir_ / "phone.osim").find("<Body name=\"phone\">"), std::string::npos);
-    extraFiles_ = 2;
+    const RunResult upper = run("model object phone -o " + (dir_ / "PHONE.OSIM").string());  // the extension in any case
+    ASSERT_EQ(upper.exitCode, 0) << upper.err;
+    EXPECT_NE(graspsim::testing::slurp(dir_ / "PHONE.OSIM").find("<OpenSimDocument"), std::string::npos);
+    extraFiles_ = 3;
     expectBadInput("model build -o " + (dir_ / "missing" / "arm.osim").string(), {"missing/arm.osim"});
     EXPECT_FALSE(fs::exists(dir_ / "missing"));
 }

@@ -81,7 +81,7 @@ TEST_F(SimulateCommand, ShortRunWritesTheSummary) {
     const std::string out = (dir_ / "run").string();
     // A folder reused from an approx run with --view: its switch events and replay are not this run's.
     fs::create_directories(out);
-    for (const char* name : {"events.csv", "constraint.csv", "replay.html"}) std::ofstream(fs::path(out) / name) << "an earlier run's";
+    for (const char* name : {"events.csv", "constraint.csv", "replay.html", "replay.png"}) std::ofstream(fs::path(out) / name) << "an earlier run's";
     const RunResult a = run("simulate phone-pinch --duration 0.2 --out " + out);
     ASSERT_EQ(a.exitCode, 0) << a.err;
     const std::string summary = slurp(fs::path(out) / "summary.json");
@@ -93,7 +93,7 @@ TEST_F(SimulateCommand, ShortRunWritesTheSummary) {
     // 0.2 s ends inside the 0.5 s approach, when the phone is still fixed: no hold to report.
     EXPECT_NE(a.out.find("hold not tested (the object is fixed for the approach until 0.5 s)"), std::string::npos) << a.out;
     EXPECT_EQ(a.out.find("held yes"), std::string::npos) << a.out;
-    for (const char* name : {"events.csv", "constraint.csv", "replay.html"}) EXPECT_FALSE(fs::exists(fs::path(out) / name)) << name;
+    for (const char* name : {"events.csv", "constraint.csv", "replay.html", "replay.png"}) EXPECT_FALSE(fs::exists(fs::path(out) / name)) << name;
     // 0.7 s ends after the release but before the 1 s settle time: held, with no drift to report.
     const RunResult b = run("simulate ball-clutch --duration 0.7 -q --out " + (dir_ / "unsettled").string());
     ASSERT_EQ(b.exitCode, 0) << b.err;

@@ -61,8 +61,8 @@ TEST_F(ViewCommand, RefusesAPictureTimeOutsideTheRunOrABadSize) {
     expectRejected("view " + out.string() + " --png 0.01 --size 1200x800x3", out, "--size: value '1200x800x3' is not accepted");
 }
 
-// --png-file alone would be silently unused; a folder would be found only after the replay is
-// written and the picture rendered.
+// --png-file alone would be silently unused; a folder, or a file in a folder that does not exist,
+// would be found only after the replay is written and the picture rendered.
 TEST_F(ViewCommand, RefusesAPictureFileWithoutATimeOrThatIsAFolder) {
     const fs::path out = simulateShortRun();
     expectRejected("view " + out.string() + " --png-file " + (dir_ / "p.png").string(), out,
@@ -70,6 +70,9 @@ TEST_F(ViewCommand, RefusesAPictureFileWithoutATimeOrThatIsAFolder) {
     EXPECT_FALSE(fs::exists(dir_ / "p.png"));
     expectRejected("view " + out.string() + " --png 0.01 --png-file " + dir_.string(), out,
                    "--png-file: value '" + dir_.string() + "' is a folder");
+    const fs::path missing = dir_ / "no-such-folder" / "p.png";
+    expectRejected("view " + out.string() + " --png 0.01 --png-file " + missing.string(), out,
+                   "--png-file: value '" + missing.string() + "': folder '" + (dir_ / "no-such-folder").string() + "' does not exist");
 }
 
 TEST_F(ViewCommand, VersionNamesCommitAndLibraries) {
