@@ -76,7 +76,18 @@ model::BuildOptions parseBuildOptions(const std::string& sex, const std::string&
     anthropometry::validateStature(options.subject.stature, "--stature");
     options.preset = model::parsePreset(preset, "--preset");
     options.body = model::parseBodyKind(body, "--body");
+    // The thesis's arm has its own masses: on the arm body no subject mass scales anything.
+    if (options.preset == model::Preset::Thesis && options.body == model::BodyKind::Arm && !mass.empty()) {
+        throw InputError("--mass: value " + mass + " is not accepted with --preset thesis on the arm body, whose masses are the "
+                         "thesis's (arm 5.45 kg); leave out --mass or --preset");
+    }
     return options;
+}
+
+std::string formatMass(double kg) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g kg", kg);
+    return text;
 }
 
 void parseFingerOptions(const std::string& stiffness, const std::string& damping, model::BuildOptions& options) {
@@ -171,7 +182,11 @@ int ModelCommand::run() const {
         io::writeFileAtomically(o.output, formatModelFile(description, o.output));
         std::cout << "wrote " << o.output << ": " << description.bodies.size() << " bodies, "
                   << description.getDofCount() << " DOF, " << std::fixed << std::setprecision(4)
-                  << description.calcTotalMass() << " kg\n";
+                  << description.calcTotalMass() << " kg"
+                  << (options.preset == model::Preset::Thesis && options.body == model::BodyKind::Humanoid
+                          ? " (the thesis's 5.45 kg arms on de Leva's other segments of the " + formatMass(options.subject.mass) + " subject)"
+                          : "")
+                  << "\n";
         return 0;
     }
     if (object_->parsed()) {

@@ -54,6 +54,7 @@ TEST_F(ModelCommand, RejectsBadSubjects) {
     expectBadInput("model build --mass 0 -o " + output(), {"--mass", "0"});
     expectBadInput("model build --mass nan -o " + output(), {"--mass", "nan"});
     expectBadInput("model build --mass heavy -o " + output(), {"--mass", "heavy", "not a number"});
+    expectBadInput("model build --preset thesis --mass 120 -o " + output(), {"--mass", "120", "--preset thesis"});
     expectBadInput("model build --stature 0.3 -o " + output(), {"--stature", "0.3", "[1, 2.5] m"});
     expectBadInput("model build --stature inf -o " + output(), {"--stature", "inf"});
     expectBadInput("model build --sex other -o " + output(), {"--sex", "other", "male or female"});
