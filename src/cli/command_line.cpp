@@ -4,6 +4,9 @@
 #include "graspsim/results/provenance.h"
 
 #include <iostream>
+#include <vector>
+#include <sstream>
+#include <iterator>
 
 namespace graspsim::cli {
 
@@ -71,6 +74,15 @@ int CommandLine::exit(const CLI::ParseError& e) {
     const std::string repeated = ": At Most 1 required but received ";
     const std::size_t at = message.find(repeated);
     if (at != std::string::npos) message = message.substr(0, at) + ": given more than once; give each option once";
+    // CLI11 lists what it did not expect last first ("...not expected: 0.1 --output-interval").
+    const std::string extras = "The following argument";
+    if (message.rfind(extras, 0) == 0 && message.find(": ") != std::string::npos) {
+        std::istringstream words(message.substr(message.find(": ") + 2));
+        std::vector<std::string> given{std::istream_iterator<std::string>(words), std::istream_iterator<std::string>()};
+        std::string text;
+        for (auto it = given.rbegin(); it != given.rend(); ++it) text += (text.empty() ? "" : " ") + *it;
+        message = "not an option or argument of this command: " + text;
+    }
     std::cerr << "graspsim: " << message << " (see graspsim --help)\n";
     return 2;
 }

@@ -54,6 +54,22 @@ TEST(CommandLine, AnOptionGivenTwiceIsNamedInOneLine) {
     EXPECT_EQ(code, 2);
 }
 
+// CLI11 lists the words it did not expect last first; the line gives them as they were typed.
+TEST(CommandLine, AnUnknownOptionIsNamedAsTyped) {
+    std::vector<const char*> arguments{"graspsim", "simulate", "ball-clutch", "--output-interval", "0.1"};
+    CommandLine commandLine;
+    ::testing::internal::CaptureStderr();
+    int code = 0;
+    try {
+        commandLine.parse(static_cast<int>(arguments.size()), arguments.data());
+    } catch (const CLI::ParseError& e) {
+        code = commandLine.exit(e);
+    }
+    EXPECT_EQ(::testing::internal::GetCapturedStderr(),
+              "graspsim: not an option or argument of this command: --output-interval 0.1 (see graspsim --help)\n");
+    EXPECT_EQ(code, 2);
+}
+
 TEST(CommandLine, AcceptsFlagsAndGivenValues) {
     EXPECT_EQ(findParseError({"simulate", "ball-clutch", "--duration", "0.2", "-q", "--view"}), "");
     EXPECT_EQ(findParseError({"model", "build", "--sex", "female", "-o", "arm.urdf"}), "");
