@@ -3,10 +3,12 @@
 #include <optional>
 
 #include "graspsim/anthropometry/units.h"
+#include "graspsim/model/geometry_inertia.h"
 #include "graspsim/model/mesh_file.h"
 #include "graspsim/model/triangle_mesh.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 
 namespace graspsim::scenario {
@@ -100,6 +102,23 @@ void readDimensions(const YamlField& root, const YamlField& section, ObjectSpec&
     }
 }
 
+// A mass in grams read as kilograms (mass: 100 for a 100 g phone) gives an object a thousand times
+// too dense. The bound is well above the densest solid (osmium, 22,590 kg/m^3), so that a
+// deliberately heavy test object (a phone twenty times its weight) still reads.
+constexpr double kMaxObjectDensity = 1e5;  // kg/m^3
+
+void checkDensity(const YamlField& section, const ObjectSpec& object) {
+    double volume = 0;
+    for (const model::Body& body : buildObjectModel(object).bodies) {
+        for (const model::Geometry& g : body.geometry) volume += model::calcVolume(g);
+    }
+    if (!(volume > 0) || object.mass / volume <= kMaxObjectDensity) return;
+    char text[240];
+    std::snprintf(text, sizeof text, "%g kg in %.3g m^3 is %.3g kg/m^3, denser than any solid (osmium: 22590 kg/m^3); mass is in kg",
+                  object.mass, volume, object.mass / volume);
+    section.find("mass")->reject(text);
+}
+
 }  // namespace
 
 ObjectSpec readObject(const YamlField& root, bool planned) {
@@ -114,6 +133,7 @@ ObjectSpec readObject(const YamlField& root, bool planned) {
         if (fields.shape == object.shape) rejectForeignFields(section, fields);
     }
     readDimensions(root, section, object);
+    checkDensity(section, object);
     if (planned) {  // the planner places the object
         for (const char* key : {"position", "orientation"}) {
             if (const std::optional<YamlField> field = section.find(key)) {

@@ -145,8 +145,11 @@ std::map<std::string, Vec3> readGoals(const YamlField& root, const model::ModelD
         const Vec3 p_OG = entry.asVec3(NumberRule::any("a goal", "m, object frame"));
         const double offSurface = std::abs(object.calcSurfaceDistance(p_OG));
         if (offSurface > kGoalSurfaceTolerance) {
+            // A mesh exported in millimetres and read as metres is a thousand times too large.
+            const bool unscaledMesh = object.shape == ObjectShape::Mesh && object.meshScale == model::Vec3{1, 1, 1} && offSurface > 0.1;
             entry.reject("it lies " + formatMillimetres(offSurface) + " mm off the " + toString(object.shape) +
-                         "'s surface (tolerance " + formatMillimetres(kGoalSurfaceTolerance) + " mm)");
+                         "'s surface (tolerance " + formatMillimetres(kGoalSurfaceTolerance) + " mm)" +
+                         (unscaledMesh ? "; a mesh file in millimetres needs object.scale: 0.001" : ""));
         }
         goals[entry.getKey()] = p_OG;
     }

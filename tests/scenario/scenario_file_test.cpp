@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -251,6 +253,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"negative mass", "mass: 0.2", "mass: -0.2",
                  {"test.yaml:4:", "'object.mass'", "'-0.2'", "mass must be a finite number > 0 kg"}},
         BadInput{"NaN mass", "mass: 0.2", "mass: .nan", {"'object.mass'", "'.nan'"}},
+        // 200 g written as 200 (kg): the 45 mm ball, 3.82e-4 m^3, at 5.24e5 kg/m^3.
+        BadInput{"grams for kilograms", "mass: 0.2", "mass: 200",
+                 {"'object.mass'", "'200'", "200 kg in 0.000382 m^3 is 5.24e+05 kg/m^3, denser than any solid", "mass is in kg"}},
         BadInput{"text for a number", "radius: 0.045", "radius: big", {"'object.radius'", "'big'", "> 0 m"}},
         BadInput{"missing required field", "  mass: 0.2\n", "", {"'object.mass'", "is missing", "> 0 kg"}},
         BadInput{"missing name", "name: test-ball\n", "", {"'name'", "is missing"}},
@@ -384,6 +389,33 @@ TEST(ScenarioFile, BadMeshFilesAreRefusedNamingScenarioFieldAndFile) {
         EXPECT_NE(message.find(why), std::string::npos) << message;
         EXPECT_EQ(message.find('\n'), std::string::npos) << message;
     }
+}
+
+// The test box written in millimetres and read without a scale is a thousand times too large: the
+// goals lie metres off it, and the message says what the likely slip is.
+TEST(ScenarioFile, AMeshInMillimetresWithoutScaleIsNamed) {
+    const std::string folder = ::testing::TempDir() + "mm-mesh";
+    std::filesystem::create_directories(folder);
+    std::ifstream in(GRASPSIM_TEST_DATA_DIR "/meshes/box.obj");
+    std::ofstream out(folder + "/box_mm.obj");
+    for (std::string line; std::getline(in, line);) {
+        double x = 0, y = 0, z = 0;
+        if (std::sscanf(line.c_str(), "v %lf %lf %lf", &x, &y, &z) == 3) line = "v " + std::to_string(1000 * x) + " " +
+                                                                            std::to_string(1000 * y) + " " + std::to_string(1000 * z);
+        out << line << "\n";
+    }
+    out.close();
+    std::string text = replaceOnce(kBase, "shape: sphere\n  mass: 0.2\n  radius: 0.045", "shape: mesh\n  mass: 0.2\n  mesh: box_mm.obj");
+    std::string message;
+    try {
+        parseScenario(text, folder + "/test.yaml");
+    } catch (const InputError& e) {
+        message = e.what();
+    }
+    EXPECT_NE(message.find("'goals.index_tip'"), std::string::npos) << message;
+    EXPECT_NE(message.find("mm off the mesh's surface (tolerance"), std::string::npos) << message;
+    EXPECT_NE(message.find("; a mesh file in millimetres needs object.scale: 0.001"), std::string::npos) << message;
+    std::filesystem::remove_all(folder);
 }
 
 TEST(ScenarioFile, MeshObjectIsCentredAtItsCentroid) {
