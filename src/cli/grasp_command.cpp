@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <iterator>
 #include <sstream>
 
 namespace graspsim::cli {
@@ -25,6 +26,35 @@ struct GraspCommand::Options {
     bool noHoldCheck = false;
 };
 
+namespace {
+
+// Every shape `--object` accepts, with its fields: one list for the parser, the help and the
+// error messages, so that none of them names fewer shapes than the others.
+struct ObjectForm {
+    const char* shape;
+    scenario::ObjectShape kind;
+    const char* fields;
+};
+constexpr ObjectForm kObjectForms[] = {
+    {"sphere", scenario::ObjectShape::Sphere, "radius=R,mass=M"},
+    {"box", scenario::ObjectShape::Box, "size=XxYxZ,mass=M"},
+    {"cylinder", scenario::ObjectShape::Cylinder, "radius=R,length=L,mass=M"},
+    {"capsule", scenario::ObjectShape::Capsule, "radius=R,length=L,mass=M"},
+    {"ellipsoid", scenario::ObjectShape::Ellipsoid, "semi_axes=AxBxC,mass=M"},
+};
+
+// "sphere:radius=R,mass=M, box:size=XxYxZ,mass=M, ... or ellipsoid:semi_axes=AxBxC,mass=M".
+std::string listObjectForms() {
+    std::string list;
+    const std::size_t count = std::size(kObjectForms);
+    for (std::size_t i = 0; i < count; ++i) {
+        list += std::string(i == 0 ? "" : i + 1 == count ? " or " : ", ") + kObjectForms[i].shape + ":" + kObjectForms[i].fields;
+    }
+    return list;
+}
+
+}  // namespace
+
 GraspCommand::GraspCommand(CLI::App& app) : options_(std::make_shared<Options>()) {
     grasp_ = app.add_subcommand("grasp", "Plan grasps");
     grasp_->require_subcommand(0, 1);
@@ -34,8 +64,7 @@ GraspCommand::GraspCommand(CLI::App& app) : options_(std::make_shared<Options>()
     plan_->add_option("--mass", o.mass, "body mass in kg, 20 to 250 (default: de Leva reference subject)");
     plan_->add_option("--stature", o.stature, "stature in m, 1.0 to 2.5 (default: de Leva reference subject)");
     plan_->add_option("--preset", o.preset, "thesis (default: finger segments 20 g, palm 250 g, arm 5.45 kg) or none");
-    plan_->add_option("--object", o.object,
-                      "the object: sphere:radius=R,mass=M or box:size=XxYxZ,mass=M (m, kg)")->required();
+    plan_->add_option("--object", o.object, "the object: " + listObjectForms() + " (m, kg)")->required();
     plan_->add_option("--type", o.type, "power-sphere (default), pinch, tripod, power-cylinder or lateral");
     plan_->add_option("--name", o.name, "the scenario's name (default planned-<type>)");
     plan_->add_option("-o,--output", o.output, "scenario file to write")->required();
@@ -55,17 +84,13 @@ std::vector<std::string> split(const std::string& text, char separator) {
 
 // "--object sphere:radius=0.045,mass=0.2" or "box:size=0.07x0.14x0.008,mass=0.1".
 scenario::ObjectSpec parseObject(const std::string& text) {
-    const std::string accepted = "accepted: sphere:radius=R,mass=M, box:size=XxYxZ,mass=M, cylinder:radius=R,length=L,mass=M, "
-                                 "capsule:radius=R,length=L,mass=M or ellipsoid:semi_axes=AxBxC,mass=M (m, kg, each > 0)";
+    const std::string accepted = "accepted: " + listObjectForms() + " (m, kg, each > 0)";
     const size_t colon = text.find(':');
     scenario::ObjectSpec object;
     const std::string shape = text.substr(0, colon);
-    const std::vector<std::pair<std::string, scenario::ObjectShape>> shapes{
-        {"sphere", scenario::ObjectShape::Sphere}, {"box", scenario::ObjectShape::Box}, {"cylinder", scenario::ObjectShape::Cylinder},
-        {"capsule", scenario::ObjectShape::Capsule}, {"ellipsoid", scenario::ObjectShape::Ellipsoid}};
-    const auto known = std::find_if(shapes.begin(), shapes.end(), [&](const auto& s) { return s.first == shape; });
-    if (known == shapes.end()) throw InputError("--object: shape '" + shape + "' is not known; " + accepted);
-    object.shape = known->second;
+    const auto known = std::find_if(std::begin(kObjectForms), std::end(kObjectForms), [&](const ObjectForm& f) { return f.shape == shape; });
+    if (known == std::end(kObjectForms)) throw InputError("--object: shape '" + shape + "' is not known; " + accepted);
+    object.shape = known->kind;
     const bool round = shape == "sphere" || shape == "cylinder" || shape == "capsule";
     const bool elongated = shape == "cylinder" || shape == "capsule";
     const std::string fields = colon == std::string::npos ? "" : text.substr(colon + 1);
@@ -115,6 +140,15 @@ model::BuildOptions parseSubject(const std::string& sex, const std::string& mass
     anthropometry::validateStature(options.subject.stature, "--stature");
     options.preset = model::parsePreset(preset, "--preset");
     return options;
+}
+
+// The force-closure figure the planner checked: Q for three or more contacts; for two, whose Q
+// is round-off (nothing resists a turn about their line), the antipodal test's.
+std::string describeClosure(const planning::PlanDiagnostics& d) {
+    if (d.goals.size() == 2) return planning::describeAntipodal(d);
+    std::ostringstream text;
+    text << "Q " << d.quality;
+    return text.str();
 }
 
 // How long after the settle time the planned grasp is simulated before it counts as holding.
@@ -168,7 +202,7 @@ int GraspCommand::run() const {
     const std::string hold = o.noHoldCheck ? "hold not checked" : checkPlanHolds(planned, o.type);
     io::writeFileAtomically(o.output, planning::formatPlannedScenario(planned, plan));
     std::cout << "wrote " << o.output << ": " << o.type << " grasp, deepest segment "
-              << plan.diagnostics.maxPenetration * 1000 << " mm, Q " << plan.diagnostics.quality << ", " << hold << "\n";
+              << plan.diagnostics.maxPenetration * 1000 << " mm, " << describeClosure(plan.diagnostics) << ", " << hold << "\n";
     return 0;
 }
 

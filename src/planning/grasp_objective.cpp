@@ -30,6 +30,18 @@ constexpr double kClearance = 0.001;
 // Friction coefficient of the closure check: the default skin-plastic dynamic friction.
 constexpr double kFriction = 0.7;
 
+// Two contacts hold an object by friction when the line between them lies inside both friction
+// cones (force closure). Q, the grasp matrix's smallest singular value, is round-off for any two
+// point contacts (nothing resists a turn about their line), so the planner checks this instead
+// and reports by how much it passes. n_G points into the object.
+void checkAntipodal(const grasp::GraspContact& a, const grasp::GraspContact& b, PlanDiagnostics& d) {
+    const Eigen::Vector3d line = (b.p_GC - a.p_GC).normalized();
+    const double cosA = line.dot(a.n_G), cosB = -line.dot(b.n_G), cone = std::cos(std::atan(kFriction));
+    d.antipodal = cosA > cone && cosB > cone;
+    d.antipodalAngle = std::acos(std::clamp(std::min(cosA, cosB), -1.0, 1.0));
+    d.frictionConeAngle = std::atan(kFriction);
+}
+
 contact::ContactShape inflate(contact::ContactShape shape, double by) {
     if (shape.type == contact::ContactShape::Type::Box) {
         shape.halfLengths += SimTK::Vec3(by);
@@ -475,11 +487,7 @@ PlanDiagnostics GraspObjective::calcDiagnostics(const std::map<std::string, doub
     grasp::QualityOptions options;
     options.mu = kFriction;
     d.quality = grasp::calcGraspQuality(contacts, frame, options);
-    if (contacts.size() == 2) {
-        const Eigen::Vector3d line = (contacts[1].p_GC - contacts[0].p_GC).normalized();
-        const double cone = std::cos(std::atan(kFriction));
-        d.antipodal = line.dot(contacts[0].n_G) > cone && -line.dot(contacts[1].n_G) > cone;
-    }
+    if (contacts.size() == 2) checkAntipodal(contacts[0], contacts[1], d);
     return d;
 }
 

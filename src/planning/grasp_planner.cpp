@@ -2,11 +2,13 @@
 
 #include "grasp_objective.h"
 
+#include "graspsim/anthropometry/units.h"
 #include "graspsim/contact/surface_point.h"
 #include "graspsim/model/body_model.h"
 #include "graspsim/planning/goal_reach.h"
 #include "graspsim/planning/grasp_template.h"
 #include "graspsim/planning/lateral_pinch.h"
+#include "graspsim/planning/plan_rounding.h"
 #include "graspsim/system/simtk_conversion.h"
 
 #include <nlopt.hpp>
@@ -27,7 +29,11 @@ std::string formatMm(double metres) {
     return out.str() + " mm";
 }
 
-// Rounds to a multiple of `step`, so that written scenarios read as hand-written ones.
+// Rounds to a multiple of `step`, so that written scenarios read as hand-written ones. The
+// product carries float noise (1805 * 1e-4 = 0.18050000000000002), which finishAsWritten takes
+// out of the finished plan. Not here: the search's re-planning rounds hang on these last bits
+// (rounded exactly here, the shipped ball tripod is planned into another pose), and the plans
+// stay what they were.
 double roundTo(double value, double step) { return std::round(value / step) * step; }
 
 // Rounds joint angles to 0.1 deg and the object's position to 0.1 mm and its orientation to
@@ -126,7 +132,7 @@ double findPlannedPressDepth(const scenario::Scenario& scenario) {
     // A goal pressed past half the object's thickness would pass its centre (the reader refuses
     // it): a thin object (a card in a lateral pinch) is pressed half that deep.
     const double halfThickness = scenario.object.findHalfThickness(), press = scenario.controller.pressDepth;
-    return press < halfThickness ? press : std::round(halfThickness / 2 / 1e-4) * 1e-4;
+    return press < halfThickness ? press : roundToTenthMillimetre(halfThickness / 2);
 }
 
 GraspRequest makeGraspRequest(const scenario::Scenario& scenario, GraspType type) {
@@ -184,10 +190,22 @@ double findPressForWeakestFinger(const PlanDiagnostics& d, double requested, dou
     for (const GoalCheck& g : d.goals) weakest = std::min(weakest, g.steadyPress);
     const double missing = requested / 2 - weakest;
     if (!(missing > 0)) return requested;
-    const double raised = std::ceil((requested + missing) / 1e-4 - 1e-6) * 1e-4;
-    const double thin = std::floor(objectWidth / 4 / 1e-4 + 1e-6) * 1e-4;
+    const double raised = fromTenthMillimetres(std::ceil((requested + missing) / 1e-4 - 1e-6));
+    const double thin = fromTenthMillimetres(std::floor(objectWidth / 4 / 1e-4 + 1e-6));
     const double press = std::min({raised, 1.5 * requested, thin});
     return press > requested + 1e-9 ? press : requested;
+}
+
+// The finished plan as its scenario file reads it back: each rounded number the exact double of
+// its written decimal (plan_rounding.h), and the checks' numbers for those.
+void finishAsWritten(const GraspRequest& request, GraspPlan& plan) {
+    snapToWrittenDecimals(plan);
+    GraspRequest written = request;
+    written.bodyOptions.segmentPoints = plan.segmentPoints;  // the plan's press depth is taken from the plan
+    const PlanDiagnostics search = plan.diagnostics;
+    plan.diagnostics = calcPlanDiagnostics(written, plan);
+    plan.diagnostics.evaluations = search.evaluations;
+    plan.diagnostics.cost = search.cost;
 }
 
 // The least a goal finger of `d` is predicted to press once the object is released (m).
@@ -245,6 +263,7 @@ GraspPlan planGrasp(const GraspRequest& givenRequest, const PlanTolerances& tole
     plan.pressDepth = request.pressDepth;
     plan.segmentPoints = request.bodyOptions.segmentPoints;
     plan.diagnostics.evaluations = evaluations;
+    finishAsWritten(request, plan);
     const std::string failed = findFailedCheck(plan.diagnostics, tolerances);
     if (!failed.empty()) {
         throw NoGraspError("no " + toString(request.type) + " grasp found: " + failed + " (object width " +
@@ -293,6 +312,14 @@ std::string findFailedCheck(const PlanDiagnostics& d, const PlanTolerances& tole
         return out.str();
     }
     return "";
+}
+
+std::string describeAntipodal(const PlanDiagnostics& d) {
+    char text[128];
+    std::snprintf(text, sizeof text, "%santipodal (contact line %.1f deg off the normals, friction cone %.1f deg)",
+                  d.antipodal ? "" : "not ", d.antipodalAngle / anthropometry::fromDegrees(1.0),
+                  d.frictionConeAngle / anthropometry::fromDegrees(1.0));
+    return text;
 }
 
 PlanDiagnostics calcPlanDiagnostics(const GraspRequest& givenRequest, const GraspPlan& plan) {

@@ -1,5 +1,6 @@
 #include "graspsim/planning/planned_scenario.h"
 
+#include "graspsim/planning/plan_rounding.h"
 #include "graspsim/scenario/scenario_file.h"
 #include "graspsim/scenario/scenario_writer.h"
 
@@ -17,7 +18,9 @@ scenario::Scenario applyPlan(const scenario::Scenario& base, const GraspPlan& pl
     }
     s.goals.clear();
     for (const auto& [effector, p_OP] : plan.goals) s.goals[effector] = {p_OP[0], p_OP[1], p_OP[2]};
-    const SimTK::Vec3 xyz = plan.X_GO.R().convertRotationToBodyFixedXYZ();
+    // The plan's orientation is at 0.1 deg (planGrasp rounds it): the angles recovered from its
+    // rotation are rounded again, or the file would show their float noise (97.60000000000001).
+    const SimTK::Vec3 xyz = findRoundedOrientation(plan.X_GO.R());
     s.object.position = {plan.X_GO.p()[0], plan.X_GO.p()[1], plan.X_GO.p()[2]};
     s.object.orientation = {xyz[0], xyz[1], xyz[2]};
     s.controller.kp = plan.kp;
@@ -68,9 +71,12 @@ std::string formatPlannedScenario(const scenario::Scenario& planned, const Grasp
                       g.commandedPress * 1000, g.steadyPress * 1000, g.releasedPress * 1000);
         header << line;
     }
-    std::snprintf(line, sizeof line, "Grasp quality Q = %.3g (smallest singular value, unit normal forces)%s.",
-                  d.quality, d.goals.size() == 2 ? (d.antipodal ? "; antipodal" : "; not antipodal") : "");
-    header << line;
+    if (d.goals.size() == 2) {  // their Q is round-off: nothing resists a turn about the contact line
+        header << "Force closure: " << describeAntipodal(d) << ".";
+    } else {
+        std::snprintf(line, sizeof line, "Grasp quality Q = %.3g (smallest singular value, unit normal forces).", d.quality);
+        header << line;
+    }
     return scenario::formatScenarioYaml(planned, header.str());
 }
 

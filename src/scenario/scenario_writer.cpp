@@ -17,10 +17,28 @@ std::string formatNumber(double value) {
     return std::string(buffer, r.ptr);
 }
 
-std::string formatDegrees(double radians) { return formatNumber(radians / anthropometry::fromDegrees(1.0)); }
+// An angle in degrees: the shortest text that the reader (anthropometry::fromDegrees of the
+// number) turns back into the same radians. The shortest text of radians / (pi / 180) alone is
+// not enough: dividing 16.4 deg's radians by it gives 16.400000000000002, and that text reads
+// back a bit away. An angle no decimal reads back to exactly keeps that closest text.
+std::string formatDegrees(double radians) {
+    const double degrees = radians / anthropometry::fromDegrees(1.0);
+    for (int digits = 1; digits <= 17; ++digits) {
+        char buffer[32];
+        const std::to_chars_result r = std::to_chars(buffer, buffer + sizeof buffer, degrees, std::chars_format::general, digits);
+        double read = 0;
+        std::from_chars(buffer, r.ptr, read);
+        if (anthropometry::fromDegrees(read) == radians) return formatNumber(read);
+    }
+    return formatNumber(degrees);
+}
 
-std::string formatVec3(const Vec3& v, double scale = 1.0) {
-    return "[" + formatNumber(v[0] * scale) + ", " + formatNumber(v[1] * scale) + ", " + formatNumber(v[2] * scale) + "]";
+std::string formatVec3(const Vec3& v) {
+    return "[" + formatNumber(v[0]) + ", " + formatNumber(v[1]) + ", " + formatNumber(v[2]) + "]";
+}
+
+std::string formatDegreesVec3(const Vec3& radians) {
+    return "[" + formatDegrees(radians[0]) + ", " + formatDegrees(radians[1]) + ", " + formatDegrees(radians[2]) + "]";
 }
 
 // YAML double-quoted scalar: names and descriptions may hold ':' or '#'.
@@ -61,8 +79,7 @@ void writeSubjectAndObject(std::ostringstream& out, const Scenario& s) {
     const ObjectSpec& o = s.object;
     out << "object:\n  shape: " << toString(o.shape) << "\n  mass: " << formatNumber(o.mass) << "\n";
     writeObjectDimensions(out, o);
-    out << "  position: " << formatVec3(o.position) << "\n  orientation: " << formatVec3(o.orientation, 1 / anthropometry::fromDegrees(1.0))
-        << "  # deg\n\n";
+    out << "  position: " << formatVec3(o.position) << "\n  orientation: " << formatDegreesVec3(o.orientation) << "  # deg\n\n";
 }
 
 void writePoseAndGoals(std::ostringstream& out, const Scenario& s) {

@@ -9,6 +9,7 @@
 #include "scratch_folder.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <cstdlib>
 #include <filesystem>
@@ -70,6 +71,27 @@ TEST_F(CapacityPlot, DrawsAPngFromTheWrittenCapacityJson) {
     png.read(magic.data(), 8);
     EXPECT_EQ(magic, std::string("\x89PNG\r\n\x1a\n", 8));
     EXPECT_TRUE(fs::exists(dir_ / "plot_capacity.py"));  // left to redraw or overlay runs
+}
+
+// A ramp that ends without slip has no onset; the plot draws it as a lower bound at the ramp's last
+// load, from the keys it reads (analysis/plot_capacity.py's load: method, a null slip_onset_n,
+// max_load_n; its drawing is checked by tests/analysis/plot_capacity_test.py). Oracle: the last
+// sample's load, and the file as parsed JSON.
+TEST_F(CapacityPlot, ARampWithoutSlipWritesTheLowerBoundThePlotDraws) {
+    std::vector<capacity::GraspCapacity> all = makeAllDirections();
+    capacity::GraspCapacity& held = all[3];  // -y
+    held.trace.figures.slipped = false;
+    held.trace.samples.resize(2);
+    held.trace.samples[1].load = 2.0;
+    capacity::writeCapacityFiles(dir_.string(), "synthetic", all);
+    std::ifstream file(dir_ / "capacity.json");
+    const nlohmann::json entry = nlohmann::json::parse(file)["measurements"][3];
+    EXPECT_EQ(entry["direction"], "-y");
+    EXPECT_EQ(entry["method"], "ramp");
+    EXPECT_TRUE(entry["slip_onset_n"].is_null());
+    EXPECT_EQ(entry["max_load_n"], 2.0);
+    const capacity::CapacityPlot plot = capacity::drawCapacityPlot(dir_.string());
+    EXPECT_TRUE(plot.skipped.empty()) << plot.skipped;
 }
 
 TEST_F(CapacityPlot, WithoutAnInterpreterItSaysWhyAndLeavesTheFiles) {

@@ -5,6 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <regex>
+#include <set>
+
 namespace fs = std::filesystem;
 using graspsim::testing::RunResult;
 using GraspCommand = graspsim::testing::CliProcess;
@@ -57,6 +61,7 @@ TEST_F(GraspCommand, APlanThatCannotHoldItsObjectIsRefused) {
     const RunResult light = run("grasp plan --object sphere:radius=0.015,mass=0.03 --type tripod -o " + (dir_ / "light.yaml").string());
     ASSERT_EQ(light.exitCode, 0) << light.err;
     EXPECT_NE(light.out.find("holds its object 0.5 s after settling (drift "), std::string::npos) << light.out;
+    EXPECT_NE(light.out.find(", Q 0."), std::string::npos) << light.out;  // three contacts: their grasp quality
 }
 
 TEST_F(GraspCommand, BadInputNamesTheOptionAndValue) {
@@ -71,4 +76,78 @@ TEST_F(GraspCommand, BadInputNamesTheOptionAndValue) {
     // Refused before the planning's seconds of work, naming the option.
     expectBadInput("grasp plan --object sphere:radius=0.02,mass=0.2 -o " + dir_.string(), {"--output: value '", "' is a folder"});
     expectBadInput("grasp plan --object sphere:radius=0.02,mass=0.2 --mass 300 -o " + output(), {"--mass"});
+}
+
+namespace {
+
+// The forms "shape:fields" a text lists, e.g. "sphere:radius=R,mass=M".
+std::vector<std::string> findObjectForms(const std::string& text) {
+    static const std::regex form(R"([a-z_]+:[a-z_]+=[A-Za-z]+(,[a-z_]+=[A-Za-z]+)*)");
+    std::vector<std::string> forms;
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), form); it != std::sregex_iterator(); ++it) forms.push_back(it->str());
+    return forms;
+}
+
+// A form with numbers for its placeholders: "sphere:radius=0.02,mass=0.2".
+std::string fillForm(std::string form) {
+    const std::vector<std::pair<std::string, std::string>> values{
+        {"=XxYxZ", "=0.05x0.02x0.01"}, {"=AxBxC", "=0.03x0.02x0.01"}, {"=R", "=0.02"}, {"=L", "=0.1"}, {"=M", "=0.2"}};
+    for (const auto& [placeholder, value] : values) {
+        for (size_t at = form.find(placeholder); at != std::string::npos; at = form.find(placeholder)) form.replace(at, placeholder.size(), value);
+    }
+    return form;
+}
+
+}  // namespace
+
+// The help's --object text names every shape the planner takes, with its fields. Oracles: the
+// five shapes a scenario's object may have besides a mesh (docs/shapes.md), the list the parser
+// gives when it refuses a shape, and the parser itself: each listed form, filled with numbers,
+// passes --object (the command then stops at the next option checked, the bad --type).
+TEST_F(GraspCommand, HelpListsEveryObjectShapeTheParserAccepts) {
+    const RunResult help = run("grasp plan --help");
+    ASSERT_EQ(help.exitCode, 0) << help.err;
+    const size_t option = help.out.find("--object");
+    ASSERT_NE(option, std::string::npos) << help.out;
+    const std::string line = help.out.substr(option, help.out.find("\n  -", option) - option);
+    const std::vector<std::string> listed = findObjectForms(line);
+    std::set<std::string> shapes;
+    for (const std::string& form : listed) shapes.insert(form.substr(0, form.find(':')));
+    EXPECT_EQ(shapes, (std::set<std::string>{"sphere", "box", "cylinder", "capsule", "ellipsoid"})) << line;
+
+    const RunResult refused = run("grasp plan --object cone:radius=0.02,mass=0.2 -o " + output());
+    EXPECT_EQ(findObjectForms(refused.err), listed) << refused.err;
+    for (const std::string& form : listed) {
+        expectBadInput("grasp plan --object " + fillForm(form) + " --type fist -o " + output(), {"--type", "'fist'"});
+    }
+}
+
+// A pinch has two contacts, whose grasp quality Q is round-off: the line says what the planner
+// checked, the antipodal test, with its figure. Oracle: the angle between the line through the
+// two written goals and the phone's face normals (+-z in its frame), in closed form, within what
+// the goals' rounding to 0.1 mm allows (0.14 mm across an 8 mm thickness: 1 deg); the friction
+// cone of mu 0.7, atan(0.7) = 35.0 deg.
+TEST_F(GraspCommand, APinchReportsTheAntipodalTestNotQ) {
+    const std::string file = (dir_ / "pinch.yaml").string();
+    const RunResult r = run("grasp plan --type pinch --object box:size=0.07x0.14x0.008,mass=0.1 --no-hold-check -o " + file);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.out.find(" Q "), std::string::npos) << r.out;
+    std::smatch figure;
+    const std::string out = r.out;
+    ASSERT_TRUE(std::regex_search(out, figure, std::regex(R"(, antipodal \(contact line ([0-9.]+) deg off the normals, friction cone 35\.0 deg\), hold not checked)")))
+        << r.out;
+    const std::string text = graspsim::testing::slurp(file);
+    EXPECT_NE(text.find("# Force closure: antipodal (contact line " + figure[1].str() + " deg off the normals"), std::string::npos) << text;
+    std::smatch thumb, index;
+    const std::regex goal(R"(: \[(-?[0-9.e+-]+), (-?[0-9.e+-]+), (-?[0-9.e+-]+)\])");
+    const size_t goals = text.find("\ngoals:");
+    ASSERT_NE(goals, std::string::npos);
+    const std::string thumbLine = text.substr(text.find("thumb_tip:", goals)), indexLine = text.substr(text.find("index_tip:", goals));
+    ASSERT_TRUE(std::regex_search(thumbLine, thumb, goal));
+    ASSERT_TRUE(std::regex_search(indexLine, index, goal));
+    double d[3];
+    for (int i = 0; i < 3; ++i) d[i] = std::stod(index[i + 1].str()) - std::stod(thumb[i + 1].str());
+    EXPECT_NEAR(std::abs(d[2]), 0.008, 1e-12);  // across the thickness
+    const double expected = std::atan2(std::hypot(d[0], d[1]), std::abs(d[2])) * 180 / M_PI;
+    EXPECT_NEAR(std::stod(figure[1].str()), expected, 1.1) << "goals' line " << expected << " deg off the normals";
 }

@@ -143,6 +143,13 @@ TEST(GraspPlanner, ThePinchHoldsThePhoneAcrossItsThickness) {
     // antipodal across the thickness: the goals on the two faces z = -+4 mm
     EXPECT_NEAR(plan.goals.at("thumb_tip")[2] * plan.goals.at("index_tip")[2], -half[2] * half[2], 1e-6);
     expectPlanHolds(plan, body, {false, 0, half, plan.X_GO});
+    // The antipodal test's figure: the line through the goals against the faces' normals +-z, in
+    // closed form, within what the goals' rounding to 0.1 mm allows (0.14 mm across 8 mm: 1 deg);
+    // the cone of the planner's mu 0.7.
+    const SimTK::Vec3 d = plan.goals.at("index_tip") - plan.goals.at("thumb_tip");
+    EXPECT_NEAR(plan.diagnostics.antipodalAngle, std::atan2(std::hypot(d[0], d[1]), std::abs(d[2])), 0.018);
+    EXPECT_DOUBLE_EQ(plan.diagnostics.frictionConeAngle, std::atan(0.7));
+    EXPECT_LT(plan.diagnostics.antipodalAngle, plan.diagnostics.frictionConeAngle);
 }
 
 TEST(GraspPlanner, TheTripodHoldsASmallBall) {

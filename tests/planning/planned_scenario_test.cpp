@@ -11,6 +11,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <regex>
+#include <sstream>
 
 using namespace graspsim;
 
@@ -94,5 +96,49 @@ TEST(PlannedScenario, AnUnknownGraspTypeNamesTheFileAndField) {
         FAIL() << "planned";
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("ball.yaml: field 'grasp.type' value 'power_sphere'"), std::string::npos) << e.what();
+    }
+}
+
+// The planner rounds to 0.1 deg and 0.1 mm; its file shows those numbers as written decimals
+// (16.4, 0.1805; not 16.400000000000002, 0.18050000000000002) and reads back as the plan, bit for
+// bit. Oracles: the reader, and the text: a pose angle or orientation written with at most one
+// decimal, a length in at most 7 characters (-0.1805, 3e-04). The lateral pinch of a key: every
+// kind of number (pose, orientation, position, goals, its added end-effector, a thin press).
+TEST(PlannedScenario, ThePlansFileReadsBackBitForBit) {
+    const scenario::Scenario base = scenario::parseScenario(
+        "name: key\nobject: {shape: box, mass: 0.02, size: [0.05, 0.02, 0.003]}\ngrasp: {type: lateral}\n", "key.yaml");
+    const planning::GraspPlan plan = planning::planGrasp(planning::makeGraspRequest(base, planning::GraspType::Lateral));
+    const scenario::Scenario planned = planning::applyPlan(base, plan);
+    const std::string text = planning::formatPlannedScenario(planned, plan);
+    const scenario::Scenario back = scenario::parseScenario(text, "planned.yaml");
+    ASSERT_EQ(back.graspPose.size(), planned.graspPose.size());
+    for (const auto& [joint, angle] : planned.graspPose) EXPECT_EQ(back.graspPose.at(joint), angle) << joint;
+    for (const auto& [effector, goal] : planned.goals) {
+        for (int i = 0; i < 3; ++i) EXPECT_EQ(back.goals.at(effector)[i], goal[i]) << effector;
+    }
+    for (int i = 0; i < 3; ++i) {
+        EXPECT_EQ(back.object.position[i], planned.object.position[i]);
+        EXPECT_EQ(back.object.orientation[i], planned.object.orientation[i]);
+        EXPECT_EQ(back.object.position[i], plan.X_GO.p()[i]);
+    }
+    EXPECT_EQ(back.controller.pressDepth, planned.controller.pressDepth);
+    ASSERT_EQ(back.bodyOptions.segmentPoints.size(), 1u);
+    for (int i = 0; i < 3; ++i) EXPECT_EQ(back.bodyOptions.segmentPoints[0].p_B[i], plan.segmentPoints[0].p_B[i]);
+
+    const std::regex angle(R"(^  [a-z_]+: -?[0-9]+(\.[0-9])?$)"), number(R"(-?[0-9][0-9.e+-]*)");
+    const std::regex orientation(R"(\n  orientation: \[-?[0-9]+(\.[0-9])?, -?[0-9]+(\.[0-9])?, -?[0-9]+(\.[0-9])?\]  # deg\n)");
+    EXPECT_TRUE(std::regex_search(text, orientation)) << text;
+    const size_t pose = text.find("\ngrasp_pose:"), poseEnd = text.find("\n\n", pose + 1);
+    std::istringstream poseLines(text.substr(pose + 1, poseEnd - pose - 1));
+    std::string line;
+    std::getline(poseLines, line);  // the section's key
+    while (std::getline(poseLines, line)) EXPECT_TRUE(std::regex_match(line, angle)) << line;
+    for (const char* key : {"  position: [", "  index_middle_radial: [", "  thumb_tip: [", "point: ["}) {
+        const size_t at = text.find(key);
+        ASSERT_NE(at, std::string::npos) << key;
+        const std::string list = text.substr(at + std::string(key).size(), text.find(']', at) - at - std::string(key).size());
+        for (auto it = std::sregex_iterator(list.begin(), list.end(), number); it != std::sregex_iterator(); ++it) {
+            EXPECT_LE(it->str().size(), 7u) << key << list;
+        }
     }
 }

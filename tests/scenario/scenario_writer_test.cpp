@@ -4,6 +4,7 @@
 #include "graspsim/scenario/scenario_file.h"
 #include "graspsim/scenario/scenario_writer.h"
 
+#include "graspsim/anthropometry/units.h"
 #include "graspsim/error.h"
 #include "graspsim/model/mesh_file.h"
 #include "graspsim/model/triangle_mesh.h"
@@ -122,6 +123,25 @@ TEST(ScenarioWriter, NumbersAreShortAndReadBackExactly) {
     EXPECT_EQ(back.object.position[1], 1.0 / 3.0);
     EXPECT_EQ(back.object.position[2], 1e-300);
     EXPECT_EQ(back.simulation.outputInterval, 0.005);
+}
+
+// Angles are written in degrees as the shortest text the reader turns back into the same radians:
+// what was typed (30, 16.4), not the quotient radians / (pi / 180) (29.999999999999996,
+// 16.400000000000002), which reads back a bit away. Oracle: the typed text, and the reader.
+TEST(ScenarioWriter, AnglesAreWrittenAsTypedAndReadBackExactly) {
+    Scenario s = findBuiltinScenario("phone-pinch");
+    s.graspPose["shoulder_flexion"] = anthropometry::fromDegrees(30);  // as the reader makes "30"
+    s.graspPose["index_dip_flexion"] = anthropometry::fromDegrees(16.4);
+    s.graspPose["thumb_cmc_flexion"] = anthropometry::fromDegrees(-15);
+    s.object.orientation = {anthropometry::fromDegrees(97.6), anthropometry::fromDegrees(20.9), anthropometry::fromDegrees(-145)};
+    const std::string text = formatScenarioYaml(s);
+    for (const char* line : {"\n  shoulder_flexion: 30\n", "\n  index_dip_flexion: 16.4\n", "\n  thumb_cmc_flexion: -15\n",
+                             "\n  orientation: [97.6, 20.9, -145]  # deg\n"}) {
+        EXPECT_NE(text.find(line), std::string::npos) << line << text;
+    }
+    const Scenario back = parseScenario(text, "written.yaml");
+    for (const auto& [joint, angle] : s.graspPose) EXPECT_EQ(back.graspPose.at(joint), angle) << joint;
+    for (int i = 0; i < 3; ++i) EXPECT_EQ(back.object.orientation[i], s.object.orientation[i]) << i;
 }
 
 // The default friction law writes nothing new (result folders stay as they were); the anchor

@@ -84,6 +84,11 @@ struct PlanDiagnostics {
     std::string deepestSegment;     ///< that segment's geometry name, empty if none
     double quality = 0;             ///< Q, smallest singular value of the grasp matrix of the goal contacts (N per N)
     bool antipodal = false;         ///< two-contact grasps: the contact line inside both friction cones
+    /// Two-contact grasps: the larger of the angles between the line joining the contacts and
+    /// each contact's inward surface normal (rad); antipodal when below frictionConeAngle. 0 for
+    /// other grasps, which are checked by Q.
+    double antipodalAngle = 0;
+    double frictionConeAngle = 0;   ///< two-contact grasps: the check's friction cone half-angle, atan(0.7) (rad)
     double objectWidth = 0;         ///< the object's thinnest width (m)
     double handSpan = 0;            ///< the hand's span for this grasp type (m)
     int evaluations = 0;            ///< objective evaluations the optimizer used
@@ -94,7 +99,9 @@ struct PlanDiagnostics {
 struct GraspPlan {
     GraspType type = GraspType::PowerSphere;
     std::map<std::string, double> jointAngles;   ///< every arm and hand joint of the model (rad)
-    SimTK::Transform X_GO;                       ///< object pose in G at t = 0
+    /// Object pose in G at t = 0; planGrasp rounds it (position to 0.1 mm, body-fixed X-Y-Z
+    /// angles to 0.1 deg, plan_rounding.h), as it rounds the joint angles (0.1 deg) and goals (0.1 mm).
+    SimTK::Transform X_GO;
     std::vector<std::string> goalEffectors;      ///< thumb first, then index to little
     std::map<std::string, SimTK::Vec3> goals;    ///< goal point on the surface per effector, in O (m)
     double kp = 5;                               ///< suggested finger PD gain (N m/rad)
@@ -142,6 +149,10 @@ double findPlannedPressDepth(const scenario::Scenario& scenario);
 /// The object of a scenario as the planner's shape: the object body's (only) geometry.
 /// @throws InputError if the contact layer has no shape for it.
 GraspRequest makeGraspRequest(const scenario::Scenario& scenario, GraspType type);
+
+/// The two-contact closure check of `diagnostics` in words, with its figures in degrees:
+/// "antipodal (contact line 2.5 deg off the normals, friction cone 35.0 deg)", or "not antipodal (...)".
+std::string describeAntipodal(const PlanDiagnostics& diagnostics);
 
 /// Re-evaluates a plan's numbers (gaps, misalignments, penetration, Q) for joint angles, object
 /// pose and goal effectors as they stand, e.g. after rounding.

@@ -32,7 +32,8 @@ void completeScenario(scenario::Scenario& scenario);
 scenario::Scenario loadScenario(const std::string& nameOrPath);
 
 /// The planned scenario's YAML (scenario_writer.h), headed by comment lines that say it was
-/// planned, for which request, and the plan's checks (pad gaps in mm, deepest segment, Q).
+/// planned, for which request, and the plan's checks (pad gaps in mm, deepest segment, Q; for two
+/// contacts, whose Q is round-off, the antipodal test).
 std::string formatPlannedScenario(const scenario::Scenario& planned, const GraspPlan& plan);
 
 }  // namespace graspsim::planning
