@@ -8,6 +8,7 @@
 #include "graspsim/viewer/still_picture.h"
 
 #include <cmath>
+#include <cctype>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -60,6 +61,11 @@ void checkPictureFile(const std::string& pngTime, const std::string& pngFile) {
     if (std::filesystem::is_directory(pngFile, ec)) {
         throw InputError("--png-file: value '" + pngFile + "' is a folder; give the picture's file name, e.g. replay.png");
     }
+    std::string extension = std::filesystem::path(pngFile).extension().string();
+    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (extension != ".png") {
+        throw InputError("--png-file: value '" + pngFile + "' is not accepted; the picture is a PNG: give a name ending in .png");
+    }
     const std::filesystem::path parent = std::filesystem::path(pngFile).parent_path();
     if (!parent.empty() && !std::filesystem::is_directory(parent, ec)) {
         throw InputError("--png-file: value '" + pngFile + "': folder '" + parent.string() + "' does not exist; create it or give "
@@ -81,6 +87,9 @@ double parsePictureTime(const std::string& text, const viewer::ResultRecord& rec
 
 int ViewCommand::run() const {
     const Options& o = *options_;
+    if (o.pngTime.empty() && command_->count("--size") > 0) {
+        throw InputError("--size: value '" + o.size + "' is not accepted without --png TIME (the picture it sizes)");
+    }
     const viewer::PictureSize size = parseSize(o.size);
     checkPictureFile(o.pngTime, o.pngFile);
     // Everything is checked before the first file is written.

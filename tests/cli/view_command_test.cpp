@@ -70,6 +70,9 @@ TEST_F(ViewCommand, RefusesAPictureFileWithoutATimeOrThatIsAFolder) {
     EXPECT_FALSE(fs::exists(dir_ / "p.png"));
     expectRejected("view " + out.string() + " --png 0.01 --png-file " + dir_.string(), out,
                    "--png-file: value '" + dir_.string() + "' is a folder");
+    expectRejected("view " + out.string() + " --png 0.01 --png-file " + (dir_ / "p.jpg").string(), out,
+                   "--png-file: value '" + (dir_ / "p.jpg").string() + "' is not accepted; the picture is a PNG");
+    expectRejected("view " + out.string() + " --size 800x600", out, "--size: value '800x600' is not accepted without --png TIME");
     const fs::path missing = dir_ / "no-such-folder" / "p.png";
     expectRejected("view " + out.string() + " --png 0.01 --png-file " + missing.string(), out,
                    "--png-file: value '" + missing.string() + "': folder '" + (dir_ / "no-such-folder").string() + "' does not exist");
