@@ -176,6 +176,9 @@ std::string formatReplayJson(const ResultRecord& record) {
     j["constraint"] = record.realization;
     j["simTime"] = record.simTime;
     j["provenance"] = Json::parse(record.provenanceJson);
+    // A run that stopped early says so on the page (a complete run's data is as it was).
+    const Json summary = Json::parse(record.summaryJson);
+    if (!summary.value("complete", true)) j["failure"] = summary.value("failure", std::string("stopped early"));
     std::vector<std::size_t> drawn;
     j["bodies"] = makeBodies(record, drawn);
     Json times = Json::array(), quality = Json::array();

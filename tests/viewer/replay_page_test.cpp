@@ -174,6 +174,17 @@ TEST_F(ReplayPage, DataHoldsEverySampleWithPosesForcesAndEngagement) {
     EXPECT_EQ(data["engaged"][0][0].get<double>(), result_->summary.engageTime);
 }
 
+// A run that stopped early carries its failure to the page; a complete one has none.
+TEST_F(ReplayPage, AnIncompleteRunSaysWhyItStopped) {
+    ResultRecord record = readResultFolder(folder_->string());
+    EXPECT_FALSE(nlohmann::json::parse(formatReplayJson(record)).contains("failure"));
+    nlohmann::json summary = nlohmann::json::parse(record.summaryJson);
+    summary["complete"] = false;
+    summary["failure"] = "the integrator stalled at t = 0.2 s";
+    record.summaryJson = summary.dump();
+    EXPECT_EQ(nlohmann::json::parse(formatReplayJson(record))["failure"], "the integrator stalled at t = 0.2 s");
+}
+
 TEST_F(ReplayPage, PageIsSelfContained) {
     const std::string page = makeReplayPage(readResultFolder(folder_->string()));
     EXPECT_NE(page.find("THREE"), std::string::npos);

@@ -151,7 +151,8 @@
   var perturbation = data.perturbation === "none" ? "no perturbation" : "perturbation " + data.perturbation;
   var ramp = data.provenance.run && data.provenance.run.ramp ? ", ramp " + data.provenance.run.ramp : "";  // simulate --ramp
   $("title").textContent = data.scenario + ": " + data.mode + (data.mode === "approx" ? " (" + data.constraint + ")" : "") + ", " + data.contact + " contact, " + perturbation + ramp;
-  $("subtitle").textContent = "graspsim " + data.provenance.graspsim.version + " (" + String(data.provenance.graspsim.commit).slice(0, 10) + ")";
+  $("subtitle").textContent = "graspsim " + data.provenance.graspsim.version + " (" + String(data.provenance.graspsim.commit).slice(0, 10) + ")" +
+    (data.failure ? " \u2014 INCOMPLETE RUN, stopped at " + data.simTime + " s: " + data.failure : "");
   $("legend").innerHTML =
     '<svg width="40" height="10"><line x1="2" y1="5" x2="30" y2="5" stroke="#c0392b" stroke-width="2"/><polygon points="30,1 38,5 30,9" fill="#c0392b"/></svg> contact force on the object' +
     (data.mode === "approx" ? '<br><svg width="40" height="10"><line x1="2" y1="5" x2="30" y2="5" stroke="#27ae60" stroke-width="2"/><polygon points="30,1 38,5 30,9" fill="#27ae60"/></svg> constraint reaction on the object' : "") +
