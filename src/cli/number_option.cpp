@@ -8,14 +8,6 @@
 
 namespace graspsim::cli {
 
-double parseNonNegativeNumber(const std::string& text, const std::string& flag, const std::string& unit) {
-    if (text.empty()) return 0;
-    const std::string accepted = "a finite number >= 0 (" + unit + ")";
-    const double value = parseNumber(text, flag, accepted);
-    if (!(value >= 0 && std::isfinite(value))) throw InputError(flag + ": value " + text + " is not accepted; use " + accepted);
-    return value;
-}
-
 int parseCount(const std::string& text, const std::string& flag) {
     const double value = parseNumber(text, flag, "a whole number >= 1");
     if (!(value >= 1 && value <= 100000 && value == static_cast<int>(value))) {

@@ -11,10 +11,8 @@ namespace graspsim::cli {
 
 // A flag's number (io/number_text.h): "<flag>: value ... is not accepted; ...".
 using io::parseNumber;
+using io::parseNonNegativeNumber;
 using io::parsePositiveNumber;
-
-// A finite number >= 0, in `unit`; empty gives 0. Throws InputError naming the flag.
-double parseNonNegativeNumber(const std::string& text, const std::string& flag, const std::string& unit);
 
 // A whole number >= 1 (a count: --jobs, --array-size). Throws InputError naming the flag.
 int parseCount(const std::string& text, const std::string& flag);

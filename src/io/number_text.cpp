@@ -25,4 +25,12 @@ std::optional<double> parsePositiveNumber(const std::string& text, const std::st
     return value;
 }
 
+double parseNonNegativeNumber(const std::string& text, const std::string& what, const std::string& unit) {
+    if (text.empty()) return 0;
+    const std::string accepted = "a finite number >= 0 (" + unit + ")";
+    const double value = parseNumber(text, what, accepted);
+    if (!(value >= 0 && std::isfinite(value))) throw InputError(what + ": value " + text + " is not accepted; use " + accepted);
+    return value;
+}
+
 }  // namespace graspsim::io

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace graspsim::cli {
@@ -38,9 +39,10 @@ TEST(CommandLine, RefusesAnOptionGivenAnEmptyValue) {
     EXPECT_EQ(findParseError({"simulate", ""}), "scenario: value '' (empty) is not accepted; give a value");
 }
 
-// CLI11's own text for an option given twice counts values, not options ("received 3").
-TEST(CommandLine, AnOptionGivenTwiceIsNamedInOneLine) {
-    std::vector<const char*> arguments{"graspsim", "simulate", "ball-clutch", "--duration", "0.1", "--duration", "0.3"};
+// Parses `arguments` (without the program name) as main does a CLI11 parse error: what it prints
+// on stderr and the exit code.
+std::pair<std::string, int> findParseExit(std::vector<const char*> arguments) {
+    arguments.insert(arguments.begin(), "graspsim");
     CommandLine commandLine;
     ::testing::internal::CaptureStderr();
     int code = 0;
@@ -49,25 +51,19 @@ TEST(CommandLine, AnOptionGivenTwiceIsNamedInOneLine) {
     } catch (const CLI::ParseError& e) {
         code = commandLine.exit(e);
     }
-    EXPECT_EQ(::testing::internal::GetCapturedStderr(),
-              "graspsim: --duration: given more than once; give each option once (see graspsim --help)\n");
-    EXPECT_EQ(code, 2);
+    return {::testing::internal::GetCapturedStderr(), code};
+}
+
+// CLI11's own text for an option given twice counts values, not options ("received 3").
+TEST(CommandLine, AnOptionGivenTwiceIsNamedInOneLine) {
+    EXPECT_EQ(findParseExit({"simulate", "ball-clutch", "--duration", "0.1", "--duration", "0.3"}),
+              std::make_pair(std::string("graspsim: --duration: given more than once; give each option once (see graspsim --help)\n"), 2));
 }
 
 // CLI11 lists the words it did not expect last first; the line gives them as they were typed.
 TEST(CommandLine, AnUnknownOptionIsNamedAsTyped) {
-    std::vector<const char*> arguments{"graspsim", "simulate", "ball-clutch", "--output-interval", "0.1"};
-    CommandLine commandLine;
-    ::testing::internal::CaptureStderr();
-    int code = 0;
-    try {
-        commandLine.parse(static_cast<int>(arguments.size()), arguments.data());
-    } catch (const CLI::ParseError& e) {
-        code = commandLine.exit(e);
-    }
-    EXPECT_EQ(::testing::internal::GetCapturedStderr(),
-              "graspsim: not an option or argument of this command: --output-interval 0.1 (see graspsim --help)\n");
-    EXPECT_EQ(code, 2);
+    EXPECT_EQ(findParseExit({"simulate", "ball-clutch", "--output-interval", "0.1"}),
+              std::make_pair(std::string("graspsim: not an option or argument of this command: --output-interval 0.1 (see graspsim --help)\n"), 2));
 }
 
 TEST(CommandLine, AcceptsFlagsAndGivenValues) {

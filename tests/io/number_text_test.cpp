@@ -28,6 +28,9 @@ TEST(NumberText, TheWholeTextIsTheNumber) {
     EXPECT_TRUE(std::isnan(parseNumber("nan", "--x", "")));
     EXPECT_EQ(parsePositiveNumber("0.125", "--rate", "N/s"), 0.125);
     EXPECT_FALSE(parsePositiveNumber("", "--rate", "N/s").has_value());
+    EXPECT_EQ(graspsim::io::parseNonNegativeNumber("0", "--initial-load", "N"), 0.0);
+    EXPECT_EQ(graspsim::io::parseNonNegativeNumber("", "--initial-load", "N"), 0.0);
+    EXPECT_THROW(graspsim::io::parseNonNegativeNumber("-0.5", "--initial-load", "N"), graspsim::InputError);
 }
 
 TEST(NumberText, ARefusalNamesWhereTheValueCameFromAndWhatIsAccepted) {

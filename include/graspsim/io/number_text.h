@@ -18,4 +18,8 @@ double parseNumber(const std::string& text, const std::string& what, const std::
 /// @throws graspsim::InputError "<what>: value <text> is not accepted; use a finite number > 0 (<unit>)"
 std::optional<double> parsePositiveNumber(const std::string& text, const std::string& what, const std::string& unit);
 
+/// A finite number >= 0 in `unit`; empty text gives 0.
+/// @throws graspsim::InputError "<what>: value <text> is not accepted; use a finite number >= 0 (<unit>)"
+double parseNonNegativeNumber(const std::string& text, const std::string& what, const std::string& unit);
+
 }  // namespace graspsim::io
