@@ -103,6 +103,38 @@ SimTK::Vec3 findNormalsMeet(const std::vector<SimTK::Vec3>& p, const std::vector
     return A.invert() * b;
 }
 
+// Half of the shape's extent along each of its frame's axes (m): a box's half-lengths, and for a
+// convex mesh the same measured through its surface (support points far out along +-x, y, z), so
+// that a mesh of a box starts where that box does. 0 for the other shapes, which start otherwise.
+SimTK::Vec3 findHalfExtents(const contact::ContactShape& shape) {
+    if (shape.type == contact::ContactShape::Type::Box) return shape.halfLengths;
+    if (shape.type != contact::ContactShape::Type::ConvexMesh) return SimTK::Vec3(0);
+    const double far = 100;  // m, as calcObjectWidth: the support error is below 1e-4 m
+    SimTK::Vec3 halfExtents(0);
+    for (int k = 0; k < 3; ++k) {
+        const SimTK::Vec3 u = SimTK::Vec3(k == 0, k == 1, k == 2);
+        halfExtents[k] = far - (contact::findSurfacePoint(shape, far * u).distance +
+                                contact::findSurfacePoint(shape, -far * u).distance) / 2;
+    }
+    return halfExtents;
+}
+
+// S's orientation in G with its thinnest axis (of `halfExtents`) along the squeeze and its
+// longest along `out` (made perpendicular to the squeeze), right-handed.
+SimTK::Rotation alignThinnestWithSqueeze(const SimTK::Vec3& halfExtents, const SimTK::UnitVec3& squeeze,
+                                         const SimTK::Vec3& out) {
+    std::array<int, 3> axis{0, 1, 2};
+    std::sort(axis.begin(), axis.end(), [&](int a, int b) { return halfExtents[a] < halfExtents[b]; });
+    const SimTK::UnitVec3 longest(out - dot(out, squeeze) * squeeze);
+    std::array<SimTK::Vec3, 3> axes_G;  // S's axes in G
+    axes_G[axis[0]] = SimTK::Vec3(squeeze);
+    axes_G[axis[2]] = SimTK::Vec3(longest);
+    axes_G[axis[1]] = cross(longest, squeeze);
+    if (dot(cross(axes_G[0], axes_G[1]), axes_G[2]) < 0) axes_G[axis[1]] *= -1;
+    const SimTK::Mat33 R_SG(~axes_G[0], ~axes_G[1], ~axes_G[2]);
+    return SimTK::Rotation(~R_SG, true);
+}
+
 }  // namespace
 
 double calcObjectWidth(const contact::ContactShape& shape) {
@@ -197,22 +229,14 @@ void GraspObjective::placeObjectAtStart() {
     if (shape.type == contact::ContactShape::Type::Capsule || shape.type == contact::ContactShape::Type::Cylinder) {
         // the long axis across the fingers, along the hand's radial axis z_H
         R_GS.setRotationFromOneAxis(R_GH.z(), SimTK::ZAxis);
-    } else if (shape.type == contact::ContactShape::Type::Box) {
-        // thinnest axis along the squeeze (thumb pad to the other pads), longest out of the hand
+    } else if (shape.type == contact::ContactShape::Type::Box || shape.type == contact::ContactShape::Type::ConvexMesh) {
+        // thinnest axis along the squeeze (thumb pad to the other pads), longest out of the hand.
+        // A mesh too: left unturned, a mesh of the phone started edge-on to the pads and its
+        // optimum put both pads on edges, where a press along the edge normal goes nowhere.
         SimTK::Vec3 others(0);
         for (size_t i = 1; i < p.size(); ++i) others += p[i] / double(p.size() - 1);
         const SimTK::UnitVec3 squeeze(others - p[0]);
-        const SimTK::Vec3 out = p_GC - m_X_GB[m_palm].p();
-        std::array<int, 3> axis{0, 1, 2};
-        std::sort(axis.begin(), axis.end(), [&](int a, int b) { return shape.halfLengths[a] < shape.halfLengths[b]; });
-        const SimTK::UnitVec3 longest(out - dot(out, squeeze) * squeeze);
-        std::array<SimTK::Vec3, 3> axes_G;  // S's axes in G
-        axes_G[axis[0]] = SimTK::Vec3(squeeze);
-        axes_G[axis[2]] = SimTK::Vec3(longest);
-        axes_G[axis[1]] = cross(longest, squeeze);
-        if (dot(cross(axes_G[0], axes_G[1]), axes_G[2]) < 0) axes_G[axis[1]] *= -1;
-        const SimTK::Mat33 R_SG(~axes_G[0], ~axes_G[1], ~axes_G[2]);
-        R_GS = SimTK::Rotation(~R_SG, true);
+        R_GS = alignThinnestWithSqueeze(findHalfExtents(shape), squeeze, p_GC - m_X_GB[m_palm].p());
     }
     const SimTK::Transform X_GS(R_GS, p_GC);
     m_X_GO0 = X_GS * ~m_request.X_OS;
