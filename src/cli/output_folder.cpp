@@ -38,10 +38,15 @@ std::string findTopMissing(const std::string& path) {
     return top.string();
 }
 
+// The file probeWriting creates and removes in `folder`.
+std::string findProbeFile(const std::string& folder) {
+    return (fs::path(folder) / (".graspsim-write-test-" + std::to_string(::getpid()))).string();
+}
+
 // Why `folder` takes no file ("" when it does): a file is created, written and removed, as the
 // folder's permission bits alone do not say (root ignores them; a read-only mount does not).
 std::string probeWriting(const std::string& folder) {
-    const std::string probe = (fs::path(folder) / (".graspsim-write-test-" + std::to_string(::getpid()))).string();
+    const std::string probe = findProbeFile(folder);
     const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0600);
     if (fd < 0) return std::strerror(errno);
     const bool written = ::write(fd, "x", 1) == 1;
@@ -62,12 +67,14 @@ struct InterruptSlot {
     std::atomic<bool> used{false};
     int levels = 0;                                   // created folders, leaf first
     char paths[kInterruptLevels][kInterruptPath] = {};
+    char probe[kInterruptPath] = {};                  // the writing probe's file in the leaf
 };
 InterruptSlot gInterruptSlots[kInterruptSlots];
 
 // The folders from `leaf` up to `top`, leaf first, in a free slot; -1 if none is free or a path
 // does not fit (the folder is then left to the default signal action, as before).
-int publishCreated(const fs::path& leaf, const fs::path& top) {
+int publishCreated(const fs::path& leaf, const fs::path& top, const std::string& probe) {
+    if (probe.size() >= kInterruptPath) return -1;
     std::vector<std::string> levels;
     for (fs::path p = leaf; !p.empty(); p = p.parent_path()) {
         levels.push_back(p.string());
@@ -79,6 +86,7 @@ int publishCreated(const fs::path& leaf, const fs::path& top) {
         InterruptSlot& slot = gInterruptSlots[k];
         if (slot.used.load()) continue;
         for (std::size_t i = 0; i < levels.size(); ++i) std::memcpy(slot.paths[i], levels[i].c_str(), levels[i].size() + 1);
+        std::memcpy(slot.probe, probe.c_str(), probe.size() + 1);
         slot.levels = static_cast<int>(levels.size());
         slot.used.store(true);
         return k;
@@ -95,9 +103,12 @@ extern "C" void removeCreatedAndReraise(int signal) {
     writeError("graspsim: interrupted");
     for (InterruptSlot& slot : gInterruptSlots) {
         if (!slot.used.load() || slot.levels == 0) continue;
-        const bool removed = ::rmdir(slot.paths[0]) == 0;
+        // Published before the folders are made: a signal may come before they all exist, or
+        // while the writing probe's file is in the leaf. A folder not made yet is not left.
+        ::unlink(slot.probe);
+        const bool removed = ::rmdir(slot.paths[0]) == 0 || errno == ENOENT;
         for (int i = 1; removed && i < slot.levels; ++i) {
-            if (::rmdir(slot.paths[i]) != 0) break;
+            if (::rmdir(slot.paths[i]) != 0 && errno != ENOENT) break;
         }
         writeError(removed ? "; removed the unfinished folder " : "; left ");
         writeError(slot.paths[0]);
@@ -121,14 +132,16 @@ void removeFoldersOnInterrupt() {
 }
 
 OutputFolder::OutputFolder(const std::string& path) : path_(path), topCreated_(findTopMissing(path)) {
+    // Published before anything is made, so that no signal finds a folder the handler does not know.
+    if (!topCreated_.empty()) interruptSlot_ = publishCreated(normalize(path_), topCreated_, findProbeFile(normalize(path_).string()));
     std::error_code ec;
     fs::create_directories(path, ec);
     const std::string reason = ec ? ec.message() : !fs::is_directory(path, ec) ? "not a folder" : probeWriting(path);
     if (!reason.empty()) {
+        if (interruptSlot_ >= 0) gInterruptSlots[interruptSlot_].used.store(false);
         removeCreated();  // a failed creation may have made some of the parents
         throw InputError("--out: folder '" + path + "' cannot be created or written (" + reason + ")");
     }
-    if (!topCreated_.empty()) interruptSlot_ = publishCreated(normalize(path_), topCreated_);
 }
 
 OutputFolder::~OutputFolder() {
