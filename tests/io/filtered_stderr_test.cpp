@@ -35,12 +35,20 @@ TEST(FilterBlocks, KeepsEverythingWithoutAMatchAndHandlesEmptyText) {
     EXPECT_EQ(dropped, "");
 }
 
-// End to end on fd 2: what C code prints inside the scope reaches stderr without the dropped block.
-TEST(FilteredStderr, PassesOnWhatIsKeptWhenReleased) {
+// The scope on the process's fd 2, whose text gtest captures. Sanitizer builds leave stderr alone
+// (io/filtered_stderr.h): there is nothing to test.
+class FilteredStderrOnFd2 : public ::testing::Test {
+protected:
+    void SetUp() override {
 #ifdef GRASPSIM_SANITIZED
-    GTEST_SKIP() << "sanitizer builds leave stderr alone (io/filtered_stderr.h)";
+        GTEST_SKIP() << "sanitizer builds leave stderr alone (io/filtered_stderr.h)";
 #endif
-    testing::internal::CaptureStderr();
+        testing::internal::CaptureStderr();
+    }
+};
+
+// End to end on fd 2: what C code prints inside the scope reaches stderr without the dropped block.
+TEST_F(FilteredStderrOnFd2, PassesOnWhatIsKeptWhenReleased) {
     std::string dropped;
     {
         FilteredStderr filter({"[CPODES ERROR]"});
@@ -55,11 +63,7 @@ TEST(FilteredStderr, PassesOnWhatIsKeptWhenReleased) {
 
 // A long-lived filter (as the CPodes stepper holds one): forward() passes each batch on at once,
 // without its dropped blocks, and the scratch file starts empty for the next batch.
-TEST(FilteredStderr, ForwardPassesOnEachBatchAndStaysRedirected) {
-#ifdef GRASPSIM_SANITIZED
-    GTEST_SKIP() << "sanitizer builds leave stderr alone (io/filtered_stderr.h)";
-#endif
-    testing::internal::CaptureStderr();
+TEST_F(FilteredStderrOnFd2, ForwardPassesOnEachBatchAndStaysRedirected) {
     std::string dropped;
     {
         FilteredStderr filter({"[CPODES ERROR]"});
@@ -80,16 +84,12 @@ TEST(FilteredStderr, ForwardPassesOnEachBatchAndStaysRedirected) {
 // share one redirection, so the first to end leaves fd 2 redirected for the other, the last
 // restores it, and nothing is lost or passed on twice. Oracle: fd 2's file (device and inode)
 // before and after, and the captured text.
-TEST(FilteredStderr, OverlappingInstancesShareOneRedirection) {
-#ifdef GRASPSIM_SANITIZED
-    GTEST_SKIP() << "sanitizer builds leave stderr alone (io/filtered_stderr.h)";
-#endif
+TEST_F(FilteredStderrOnFd2, OverlappingInstancesShareOneRedirection) {
     const auto identify = [] {
         struct stat s {};
         ::fstat(2, &s);
         return std::pair{s.st_dev, s.st_ino};
     };
-    testing::internal::CaptureStderr();
     const auto before = identify();
     std::string dropped;
     {
@@ -112,11 +112,7 @@ TEST(FilteredStderr, OverlappingInstancesShareOneRedirection) {
 // A write that lands past the scratch file's end (another thread's, racing the file's reset; here
 // made by moving the offset fd 2 shares) leaves a hole of zero bytes before its text. The hole is
 // not stderr text: the block after it is still recognized and dropped, and nothing is passed on.
-TEST(FilteredStderr, AHoleBeforeABlockIsNotText) {
-#ifdef GRASPSIM_SANITIZED
-    GTEST_SKIP() << "sanitizer builds leave stderr alone (io/filtered_stderr.h)";
-#endif
-    testing::internal::CaptureStderr();
+TEST_F(FilteredStderrOnFd2, AHoleBeforeABlockIsNotText) {
     std::string dropped;
     {
         FilteredStderr filter({"[CPODES ERROR]"});
@@ -132,11 +128,7 @@ TEST(FilteredStderr, AHoleBeforeABlockIsNotText) {
 }
 
 // Many threads, each with its own instance for a while: fd 2 is the original at the end.
-TEST(FilteredStderr, ThreadsLeaveStderrAsTheyFoundIt) {
-#ifdef GRASPSIM_SANITIZED
-    GTEST_SKIP() << "sanitizer builds leave stderr alone (io/filtered_stderr.h)";
-#endif
-    testing::internal::CaptureStderr();
+TEST_F(FilteredStderrOnFd2, ThreadsLeaveStderrAsTheyFoundIt) {
     std::vector<std::thread> threads;
     for (int t = 0; t < 4; ++t) {
         threads.emplace_back([] {
