@@ -58,6 +58,7 @@ simulation::FingerComplianceSettings toFingerSettings(const CompliancePrediction
     f.tangentialStiffnessRatio = settings.tangentialStiffnessRatio;
     f.ikFollowsNullSpace = settings.ikFollowsNullSpace;
     f.tangentialByNormalForce = settings.tangentialByNormalForce;
+    f.rolling = settings.rolling;
     return f;
 }
 

@@ -16,8 +16,8 @@ struct MethodOption {
 
 const std::vector<MethodOption>& findTable() {
     static const std::vector<MethodOption> table{
-        {"rate", {"ramp", "bisection"}, "the ramp's rate; bisection's first load is rate x 1 s"},
-        {"max_duration", {"ramp"}, "the longest ramp"},
+        {"rate", {"ramp", "bisection", "compliance"}, "the ramp's rate, the compliance model's creep ramp's too; bisection's first load is rate x 1 s"},
+        {"max_duration", {"ramp", "compliance"}, "the longest ramp"},
         {"initial_load", {"ramp"}, "the ramp's step at its start"},
         {"hold", {"bisection", "constant"}, "how long each constant load is held"},
         {"load", {"constant"}, "the constant load"},

@@ -34,6 +34,7 @@ struct CapacityCommand::Options {
     std::string scenario;
     std::string direction = "-y";
     bool torque = false;
+    bool rolling = false;
     std::string rate;
     std::string method = "ramp";
     std::string maxDuration = "4";
@@ -70,6 +71,7 @@ struct CapacityCommand::Plan {
     std::vector<capacity::GraspCapacityRequest> requests;
     bool bisection = false;
     bool compliance = false;  // predicted by the compliance model, not measured
+    bool rolling = false;     // the model with the contacts' rolling stiffness
     bool constant = false;    // one constant load (`load`), held `hold` s
     /// With --direction all, --rate is the forces' rate; the torques' is scaled from it by the
     /// default rates' ratio (a lever, m).
@@ -137,6 +139,9 @@ CapacityCommand::CapacityCommand(CLI::App& app) : options_(std::make_shared<Opti
                          "approx: the compliance release trigger's onset: hand the object back once the grasp's "
                          "compliance model says full contact would have let it give this far at the grasp goals, m "
                          "(default 0.002, the model's slip onset)");
+    command_->add_flag("--rolling", o.rolling,
+                       "compliance: the model adds the contacts' rolling stiffness (their forces turning as the object rolls "
+                       "on the pads; research option, docs/capacity.md); default: the contacts' geometry frozen");
     command_->add_option("--hand-back", o.handBack,
                          "approx: the state full contact takes the object back in at a compliance-trigger release: engaged "
                          "(default: as the constraint held it) or deflected (object and finger joints deflected as the "
@@ -231,6 +236,9 @@ void checkMethodFlags(const CLI::App& command, const std::string& method, const 
         throw InputError("--direction: value all is not accepted with --method constant (one load, N or N m, for one "
                          "direction); use an axis or a vector");
     }
+    if (method != "compliance" && command.count("--rolling") > 0) {
+        throw InputError("--rolling: only with --method compliance (the compliance model's rolling stiffness), not --method " + method);
+    }
     if (method == "compliance" && mode == "approx") {
         throw InputError("--mode: value approx is not accepted with --method compliance, which predicts from full contact at the "
                          "load's start");
@@ -271,6 +279,7 @@ CapacityCommand::Plan CapacityCommand::makePlan() const {
     }
     plan.bisection = o.method == "bisection";
     plan.compliance = o.method == "compliance";
+    plan.rolling = o.rolling;
     plan.constant = o.method == "constant";
     checkMethodFlags(*command_, o.method, o.direction, o.mode);
     plan.load = parsePositiveNumber(o.load, "--load", "N, or N m with --torque").value_or(0);
@@ -335,7 +344,9 @@ int CapacityCommand::run() const {
     if (plan.compliance) {
         std::vector<capacity::GraspCapacityRequest> requests = plan.requests;
         for (capacity::GraspCapacityRequest& r : requests) r.rate = findRate(scenario, plan.torqueRateFromForceRate, r);
-        for (const capacity::CompliancePrediction& p : capacity::predictGraspCapacities(scenario, plan.simulation, requests, {})) {
+        capacity::CompliancePredictionSettings settings;
+        settings.rolling = plan.rolling;
+        for (const capacity::CompliancePrediction& p : capacity::predictGraspCapacities(scenario, plan.simulation, requests, settings)) {
             std::cout << scenario.name << " " << capacity::describePrediction(p) << "\n";
         }
         return 0;

@@ -343,6 +343,7 @@ private:
         report.p_G = contact.p_G;
         report.n_G = contact.n_G;
         report.depth = contact.depth;
+        report.radius = contact.radius;
         report.depthRate = force.depthRate;
         report.slipVelocity_G = force.slipVelocity_G;
         report.normalForce = force.normalForce;

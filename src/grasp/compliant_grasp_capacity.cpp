@@ -2,6 +2,7 @@
 
 #include "graspsim/error.h"
 #include "graspsim/grasp/grasp_matrix.h"
+#include "graspsim/grasp/rolling_stiffness.h"
 
 #include <Eigen/Dense>
 
@@ -234,10 +235,15 @@ void breakLoose(const CompliantContact& c, const Map63& map, double mu, double k
 
 // One piece of the path: the object's displacement rate per unit of the driving parameter (the
 // load, or the fraction of the pending wrench taken up), or false outside the stiffness's range.
-bool solvePiece(const std::vector<CompliantContact>& contacts, const std::vector<Map63>& maps, const Progress& p,
-                double kineticMu, const Vector6& driving, Vector6& rate, std::vector<Eigen::Vector3d>& rates) {
+// Less the rolling stiffness of the forces the contacts carry now (rolling_stiffness.h, about p_GO);
+// the contacts' force rates are their springs' alone, in frames that turn with them.
+bool solvePiece(const std::vector<CompliantContact>& contacts, const std::vector<Map63>& maps, const Eigen::Vector3d& p_GO,
+                const Progress& p, double kineticMu, const Vector6& driving, Vector6& rate, std::vector<Eigen::Vector3d>& rates) {
     std::vector<Eigen::Matrix3d> stiffness;
     Matrix6 total = Matrix6::Zero();
+    for (std::size_t i = 0; i < contacts.size(); ++i) {
+        if (p.states[i] != CompliantContactState::Open) total -= calcRollingStiffness(contacts[i], p.forces[i], p_GO);
+    }
     for (std::size_t i = 0; i < contacts.size(); ++i) {
         stiffness.push_back(findStiffness(contacts[i], p, i, kineticMu));
         total += maps[i] * stiffness[i] * maps[i].transpose();
@@ -309,7 +315,7 @@ CompliantCapacity followLoad(const std::vector<CompliantContact>& contacts, cons
         if (!takingUp && !(p.load < options.maxLoad)) break;
         Vector6 rate;
         std::vector<Eigen::Vector3d> rates;
-        if (!solvePiece(contacts, maps, p, kineticMu, takingUp ? p.pending : direction, rate, rates)) {
+        if (!solvePiece(contacts, maps, p_GO, p, kineticMu, takingUp ? p.pending : direction, rate, rates)) {
             result.ultimate = p.load;  // the grasp cannot take up the load (or the friction it shed)
             break;
         }

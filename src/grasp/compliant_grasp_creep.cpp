@@ -3,6 +3,7 @@
 #include "graspsim/contact/contact_force_law.h"
 #include "graspsim/error.h"
 #include "graspsim/grasp/grasp_matrix.h"
+#include "graspsim/grasp/rolling_stiffness.h"
 
 #include <Eigen/Dense>
 
@@ -69,19 +70,22 @@ bool solve(const Matrix6& a, const Vector6& b, Vector6& x) {
     return x.allFinite() && x.norm() * a.norm() < 1e12 * std::max(b.norm(), 1e-300);
 }
 
-Matrix6 assemble(std::vector<Contact>& contacts, std::vector<Eigen::Matrix3d>& stiffness, double mu_d) {
+// The springs' stiffness less the rolling stiffness of the forces the contacts carry now
+// (rolling_stiffness.h, about p_GO).
+Matrix6 assemble(std::vector<Contact>& contacts, const Eigen::Vector3d& p_GO, std::vector<Eigen::Matrix3d>& stiffness, double mu_d) {
     Matrix6 total = Matrix6::Zero();
     stiffness.clear();
     for (Contact& c : contacts) {
         stiffness.push_back(findStiffness(c, mu_d));
         total += c.map * stiffness.back() * c.map.transpose();
+        if (c.state != CompliantContactState::Open) total -= calcRollingStiffness(c.model, c.force, p_GO);
     }
     return total;
 }
 
 // A contact breaking loose: its friction drops to mu_d f_n and the others take the difference at
 // once. False when they cannot (the grasp gives way).
-bool breakLoose(std::vector<Contact>& contacts, std::size_t i, double mu_d, Vector6& displacement) {
+bool breakLoose(std::vector<Contact>& contacts, const Eigen::Vector3d& p_GO, std::size_t i, double mu_d, Vector6& displacement) {
     Contact& c = contacts[i];
     const Eigen::Vector3d ft = c.findTangentialForce();
     c.state = CompliantContactState::Sliding;
@@ -89,7 +93,7 @@ bool breakLoose(std::vector<Contact>& contacts, std::size_t i, double mu_d, Vect
     const Eigen::Vector3d drop = (mu_d * c.findNormalForce() - ft.norm()) * c.tangent;
     c.force += drop;
     std::vector<Eigen::Matrix3d> stiffness;
-    const Matrix6 total = assemble(contacts, stiffness, mu_d);
+    const Matrix6 total = assemble(contacts, p_GO, stiffness, mu_d);
     Vector6 jump;
     if (!solve(total, c.map * drop, jump)) return false;
     for (std::size_t j = 0; j < contacts.size(); ++j) contacts[j].force -= stiffness[j] * (contacts[j].map.transpose() * jump);
@@ -132,8 +136,8 @@ std::vector<Contact> makeContacts(const std::vector<CompliantContact>& contacts,
 }
 
 // Contacts opening or breaking loose at `load`; false when the grasp gives way.
-bool updateContactStates(std::vector<Contact>& contacts, double load, const contact::ContactParameters& friction,
-                         Vector6& displacement, CompliantCapacity& capacity) {
+bool updateContactStates(std::vector<Contact>& contacts, const Eigen::Vector3d& p_GO, double load,
+                         const contact::ContactParameters& friction, Vector6& displacement, CompliantCapacity& capacity) {
     for (std::size_t i = 0; i < contacts.size(); ++i) {
         Contact& c = contacts[i];
         if (c.state == CompliantContactState::Open) continue;
@@ -145,7 +149,7 @@ bool updateContactStates(std::vector<Contact>& contacts, double load, const cont
                    c.findTangentialForce().norm() >= friction.staticFriction * c.findNormalForce()) {
             capacity.events.push_back({load, int(i), CompliantContactState::Sliding});
             capacity.firstSlip = std::min(capacity.firstSlip, load);
-            if (!breakLoose(contacts, i, friction.dynamicFriction, displacement)) return false;
+            if (!breakLoose(contacts, p_GO, i, friction.dynamicFriction, displacement)) return false;
         }
     }
     return true;
@@ -153,10 +157,10 @@ bool updateContactStates(std::vector<Contact>& contacts, double load, const cont
 
 // One explicit step of the forces and the displacement under the load's rate `loadRate` (a wrench
 // per second, force first); false when the grasp gives way.
-bool stepRamp(std::vector<Contact>& contacts, const Vector6& loadRate, const contact::ContactParameters& friction,
-              double timeStep, Vector6& displacement) {
+bool stepRamp(std::vector<Contact>& contacts, const Eigen::Vector3d& p_GO, const Vector6& loadRate,
+              const contact::ContactParameters& friction, double timeStep, Vector6& displacement) {
     std::vector<Eigen::Matrix3d> stiffness;
-    const Matrix6 total = assemble(contacts, stiffness, friction.dynamicFriction);
+    const Matrix6 total = assemble(contacts, p_GO, stiffness, friction.dynamicFriction);
     Vector6 rhs = loadRate;
     std::vector<Eigen::Vector3d> creep;
     for (std::size_t i = 0; i < contacts.size(); ++i) {
@@ -189,14 +193,14 @@ CompliantRamp runCompliantRamp(const std::vector<CompliantContact>& input, const
     for (long k = 0;; ++k) {
         const double load = static_cast<double>(k) * options.rate * options.timeStep;
         if (!(load < options.maxLoad)) break;
-        if (!updateContactStates(contacts, load, friction, displacement, ramp.capacity)) {
+        if (!updateContactStates(contacts, p_GO, load, friction, displacement, ramp.capacity)) {
             ramp.capacity.ultimate = load;
             break;
         }
         const double slip = findSlip(contacts, displacement);
         ramp.samples.push_back({load, slip});
         if (slip >= options.slipDistance && !std::isfinite(ramp.capacity.onset)) ramp.capacity.onset = load;
-        if (!stepRamp(contacts, loadRate, friction, options.timeStep, displacement)) {
+        if (!stepRamp(contacts, p_GO, loadRate, friction, options.timeStep, displacement)) {
             ramp.capacity.ultimate = load;
             break;
         }

@@ -99,6 +99,30 @@ Eigen::VectorXd FingerCompliance::calcJointDeflection(const SimTK::State& state,
     return jointStiffness.ldlt().solve(torque);
 }
 
+namespace {
+
+// 1 / the radius of a sphere's or capsule's surface; 0 for the other shapes (a box's faces are
+// flat) and for a shape the model does not list.
+double findPadCurvature(const model::ModelDescription& d, const std::string& body, const std::string& shape) {
+    const model::Body* b = d.findBody(body);
+    if (!b) return 0;
+    for (const model::Geometry& g : b->geometry) {
+        const bool round = g.type == model::Geometry::Type::Sphere || g.type == model::Geometry::Type::Capsule;
+        if (g.name == shape && round && g.radius > 0) return 1 / g.radius;
+    }
+    return 0;
+}
+
+// The pad's and the object's curvatures (1/m): the object's is what the effective Hertz radius
+// 1/R = k_pad + k_object leaves (0 where R is unknown or the pad alone accounts for it).
+void setCurvatures(const model::ModelDescription& d, const contact::ContactReport& r, grasp::CompliantContact& c) {
+    c.fingerCurvature = findPadCurvature(d, r.bodyA, r.shapeA);
+    c.objectCurvature = r.radius > 0 ? std::max(0.0, 1 / r.radius - c.fingerCurvature) : 0.0;
+    if (c.objectCurvature < 1e-9 * c.fingerCurvature) c.objectCurvature = 0;
+}
+
+}  // namespace
+
 std::vector<grasp::CompliantContact> FingerCompliance::findCompliantContacts(const SimTK::State& state,
                                                                              const std::vector<contact::ContactReport>& reports,
                                                                              const FingerComplianceSettings& settings) const {
@@ -109,6 +133,7 @@ std::vector<grasp::CompliantContact> FingerCompliance::findCompliantContacts(con
         std::optional<grasp::CompliantContact> c = findPressingContact(r, settings);
         if (!c) continue;
         c->fingerCompliance_G = calcCompliance(state, jointStiffness, r.bodyA, r.p_G);
+        if (settings.rolling) setCurvatures(model_.getDescription(), r, *c);
         contacts.push_back(*c);
     }
     if (settings.tangentialByNormalForce) grasp::setTangentialStiffnessByNormalForce(contacts);

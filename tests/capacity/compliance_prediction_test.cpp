@@ -33,5 +33,28 @@ TEST(CompliancePrediction, LoadStartContactsCarryTheWeight) {
     EXPECT_LT((sum + weight).norm(), 0.02 * weight.norm());
 }
 
+// With rolling, each contact gets its pad's curvature from the hand's shapes and the object's from
+// what the contact's effective Hertz radius leaves: the ball's 1 / its radius at every contact (the
+// scenario's size, a source of its own), the phone's faces 0.
+TEST(CompliancePrediction, RollingContactsTakeThePadsAndTheObjectsCurvatures) {
+    CompliancePredictionSettings settings;
+    settings.rolling = true;
+    const scenario::Scenario ball = scenario::findBuiltinScenario("ball-clutch");
+    const LoadStartGrasp clutch = findLoadStartGrasp(ball, simulation::SimulationOptions{}, settings);
+    ASSERT_GE(clutch.contacts.size(), 3u);
+    for (const grasp::CompliantContact& c : clutch.contacts) {
+        EXPECT_GT(c.fingerCurvature, 0);
+        EXPECT_NEAR(c.objectCurvature, 1 / ball.object.radius, 1e-6 / ball.object.radius);
+    }
+    const LoadStartGrasp pinch = findLoadStartGrasp(scenario::findBuiltinScenario("phone-pinch"), simulation::SimulationOptions{}, settings);
+    for (const grasp::CompliantContact& c : pinch.contacts) {
+        EXPECT_GT(c.fingerCurvature, 0);
+        EXPECT_EQ(c.objectCurvature, 0);
+    }
+    for (const grasp::CompliantContact& c : findLoadStartGrasp(ball, simulation::SimulationOptions{}, {}).contacts) {
+        EXPECT_EQ(c.fingerCurvature + c.objectCurvature, 0);  // frozen geometry by default
+    }
+}
+
 }  // namespace
 }  // namespace graspsim::capacity

@@ -29,7 +29,7 @@ TEST(MethodOptions, EachMethodTakesItsOwnLoadOptionsOnly) {
         {"rate", "max_duration", "initial_load"},   // ramp
         {"rate", "hold", "guess"},                  // bisection
         {"hold", "load"},                           // constant
-        {},                                         // compliance
+        {"rate", "max_duration"},                   // compliance: its creep ramp's
     };
     const std::vector<std::string>& methods = graspsim::capacity::findCapacityMethods();
     ASSERT_EQ(methods.size(), taken.size());

@@ -75,9 +75,10 @@ TEST_F(CapacityCommand, BadInputIsOneLineAndWritesNothing) {
     expectRejected("--guess 2", "--guess: only with --method bisection");  // not silently unused by the ramp
     // Each method's options (method_options.h): none is silently left unused.
     expectRejected("--hold 1", "--hold: only with --method bisection or constant (how long each constant load is held), not --method ramp");
-    expectRejected("--method constant --load 2 --rate 3", "--rate: only with --method ramp or bisection");
-    expectRejected("--method constant --load 2 --max-duration 2", "--max-duration: only with --method ramp");
-    expectRejected("--method bisection --max-duration 2", "--max-duration: only with --method ramp");
+    expectRejected("--method constant --load 2 --rate 3", "--rate: only with --method ramp, bisection or compliance");
+    expectRejected("--method constant --load 2 --max-duration 2", "--max-duration: only with --method ramp or compliance");
+    expectRejected("--method bisection --max-duration 2", "--max-duration: only with --method ramp or compliance");
+    expectRejected("--rolling", "--rolling: only with --method compliance (the compliance model's rolling stiffness), not --method ramp");
     expectRejected("--method compliance --hold 1", "--hold: only with --method bisection or constant");
     expectRejected("--method compliance --mode approx", "--mode: value approx is not accepted with --method compliance");
     expectRejected("--method constant", "--load: missing; --method constant needs the load");

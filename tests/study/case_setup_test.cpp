@@ -218,7 +218,7 @@ TEST(CaseSetup, ACapacityStudysLoadOptionsAreTheMethods) {
     EXPECT_EQ(refusal("set: {load: 2}\naxes:\n  mode: [full]\n"),
               "s.yaml:4: run option 'load': only with method constant (the constant load), not method ramp");
     EXPECT_EQ(refusal("set: {rate: 8, load: 2}\naxes:\n  method: [constant, bisection]\n"),
-              "s.yaml:4: run option 'rate': only with method ramp or bisection (the ramp's rate; bisection's first load is rate x 1 s), "
+              "s.yaml:4: run option 'rate': only with method ramp, bisection or compliance (the ramp's rate, the compliance model's creep ramp's too; bisection's first load is rate x 1 s), "
               "not method constant");
     EXPECT_EQ(refusal("set: {method: constant}\naxes:\n  mode: [full]\n"),
               "s.yaml:4: run option 'load': missing; method constant needs the load, N (N m with a torque), a number > 0");

@@ -31,6 +31,8 @@ struct CompliancePredictionSettings {
     double creepTangentialStiffnessRatio = 10;
     /// Whether the PD targets follow the finger along its IK null space (simulation/finger_compliance.h).
     bool ikFollowsNullSpace = true;
+    /// Whether the contacts' curvatures add the preload's rolling stiffness (simulation/finger_compliance.h).
+    bool rolling = false;
 };
 
 /// The model's answer for one load, with both friction coefficients of the contact pair.

@@ -5,9 +5,9 @@
 /// leave unused is refused rather than silently ignored.
 ///
 /// Options by their study names (the command's flags are "--" + the name with '-' for '_'):
-/// rate (ramp; bisection's first load is rate x 1 s), max_duration and initial_load (ramp), hold
-/// (bisection, constant), load (constant, which needs it), guess (bisection). The compliance
-/// method takes none of them.
+/// rate (ramp; bisection's first load is rate x 1 s; compliance, whose creep ramp follows the
+/// load at that rate), max_duration (ramp, compliance), initial_load (ramp), hold (bisection,
+/// constant), load (constant, which needs it), guess (bisection).
 
 #include <functional>
 #include <string>

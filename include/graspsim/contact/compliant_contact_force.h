@@ -45,6 +45,7 @@ struct ContactReport {
     SimTK::Vec3 p_G{0, 0, 0};              ///< contact point in Ground (m)
     SimTK::UnitVec3 n_G;                   ///< unit normal from a toward b, in Ground
     double depth = 0;                      ///< penetration (m), > 0
+    double radius = 0;                     ///< effective Hertz radius of curvature (m; shape_contact.h)
     double depthRate = 0;                  ///< penetration rate xdot (m/s), > 0 while penetrating
     SimTK::Vec3 slipVelocity_G{0, 0, 0};   ///< v_t, slip of b relative to a at P, in Ground (m/s)
     double normalForce = 0;                ///< f_n (N), >= 0, pushes b along +n_G and a along -n_G

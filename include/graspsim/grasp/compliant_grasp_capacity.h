@@ -33,8 +33,14 @@
 /// direction leaves the range of the stiffness matrix (the remaining contacts let the object move
 /// freely along it): that load is the ultimate capacity.
 ///
-/// Limits of the model: the contacts' geometry is frozen (small displacements); a sliding contact
-/// never sticks again and keeps its friction direction; the regularized friction of full contact,
+/// Rolling: a contact given curvatures (fingerCurvature, objectCurvature) adds its preload's
+/// geometric stiffness (rolling_stiffness.h): its force turns with the line of the two surfaces'
+/// centres of curvature as the object moves, and the moments are taken about the moving centre of
+/// mass. The solver then balances (sum_i D_i K_i D_i^T - G) delta = d s, the contacts' states
+/// judged in frames that turn with them.
+///
+/// Limits of the model: small displacements (the geometry is linearized at the load's start, and
+/// frozen for contacts without curvatures); a sliding contact never sticks again and keeps its friction direction; the regularized friction of full contact,
 /// which creeps under any tangential load, is replaced by a spring k_t; no inertia.
 
 #include "graspsim/grasp/grasp_contact.h"
@@ -58,6 +64,12 @@ struct CompliantContact {
     /// The finger's Cartesian compliance at C (m/N), in G: symmetric positive semi-definite; zero
     /// for a rigid finger (or a contact on the palm).
     Eigen::Matrix3d fingerCompliance_G = Eigen::Matrix3d::Zero();
+    /// Curvature (1/m) of the finger's surface at C: 1 / the pad's radius, 0 for a flat one.
+    /// With objectCurvature, what turns the contact's force as the object rolls on the finger
+    /// (rolling_stiffness.h); both 0 (the default): the contact's geometry stays frozen.
+    double fingerCurvature = 0;
+    /// Curvature (1/m) of the object's surface at C: 1 / its radius there, 0 for a flat face.
+    double objectCurvature = 0;
 };
 
 /// What the model does at each contact.
@@ -98,7 +110,8 @@ struct CompliantCapacity {
     double ultimate = 0;
     /// Every change of a contact's state, in load order.
     std::vector<CompliantCapacityEvent> events;
-    /// The contact forces on the object at the ultimate load (or at maxLoad), in G (N).
+    /// The contact forces on the object at the ultimate load (or at maxLoad), in G (N); with
+    /// curvatures, in the contacts' frames turned back to their start.
     std::vector<Eigen::Vector3d> forces_G;
     /// The object's displacement from the load's start to the same load: rotation (rad, small,
     /// as a rotation vector) then translation of the point at p_GO (m), both in G.

@@ -48,6 +48,10 @@ struct FingerComplianceSettings {
     bool tangentialByNormalForce = true;
     /// Whether the PD targets follow the finger along its IK null space (file comment).
     bool ikFollowsNullSpace = true;
+    /// Whether each contact gets its surfaces' curvatures (the finger pad's, 1 / its sphere's or
+    /// capsule's radius; the object's, from the contact's effective Hertz radius), so that the
+    /// model adds the preload's rolling stiffness (grasp/rolling_stiffness.h); false: frozen geometry.
+    bool rolling = false;
 };
 
 /// The compliance model's contact for one contact report that presses (normal force and depth
