@@ -141,6 +141,25 @@ TEST_F(CapacityCommand, RampWritesTheFiguresItPrints) {
     EXPECT_FALSE(fs::exists(fs::path(out) / "plot_capacity.py"));
 }
 
+// The compliance method's rate and longest ramp reach its creep ramp and nothing else: the static
+// model has no time, so its onset is the same at both rates, while the creep ramp's moves (full
+// contact's regularized friction creeps for as long as the load takes), and a ramp bounded at 0.1 N
+// ends before the phone's onset (0.36-0.41 N along x).
+TEST_F(CapacityCommand, TheComplianceMethodsRateAndDurationAreItsCreepRamps) {
+    const auto onsets = [&](const std::string& args) {
+        const RunResult r = run("capacity phone-pinch --method compliance --direction x " + args);
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        std::smatch staticOnset, creepOnset;
+        EXPECT_TRUE(std::regex_search(r.out, staticOnset, std::regex("mu_s \\(sliding at mu_d\\): first slip [^,]*, onset ([0-9.e+-]+) N"))) << r.out;
+        EXPECT_TRUE(std::regex_search(r.out, creepOnset, std::regex("creep ramp: first slip [^,]*, onset ([^ ,]+)"))) << r.out;
+        return std::make_pair(staticOnset[1].str(), creepOnset[1].str());
+    };
+    const auto slow = onsets("--rate 0.25 --max-duration 12"), fast = onsets("--rate 4");
+    EXPECT_EQ(slow.first, fast.first);
+    EXPECT_GT(std::abs(std::stod(slow.second) / std::stod(fast.second) - 1), 0.01) << slow.second << " " << fast.second;
+    EXPECT_EQ(onsets("--rate 1 --max-duration 0.1").second, "none");
+}
+
 // The ramp on the linearly implicit stepper against the same ramp on CPodes (the second method):
 // the phone's slip onset and drop within 3 % of each other (two integrators of one model at the
 // scenario's accuracy; their trajectories agree within 0.14 mm, docs/performance.md).
