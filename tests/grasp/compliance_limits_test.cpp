@@ -5,6 +5,8 @@
 
 #include "graspsim/error.h"
 
+#include "pressing_contact.h"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -22,13 +24,8 @@ constexpr double kSlip = 1.5e-3;  // m
 
 CompliantContact makeContact(const Eigen::Vector3d& p, const Eigen::Vector3d& n, double kn, double fingerCompliance,
                              double weight) {
-    CompliantContact c;
-    c.p_GC = p;
-    c.n_G = n;
-    c.force_G = kN * n + Eigen::Vector3d(0, weight / 2, 0);
-    c.normalStiffness = kn;
-    c.tangentialStiffness = 2.0 / 3.0 * kn;
-    c.fingerCompliance_G = fingerCompliance * Eigen::Matrix3d::Identity();
+    CompliantContact c = examples::makePressingContact(p, n, kN, kn, 2.0 / 3.0 * kn, fingerCompliance);
+    c.force_G += Eigen::Vector3d(0, weight / 2, 0);
     return c;
 }
 

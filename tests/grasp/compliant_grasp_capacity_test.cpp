@@ -4,6 +4,8 @@
 #include "graspsim/grasp/compliant_grasp_creep.h"
 #include "graspsim/grasp/friction_limits.h"
 
+#include "pressing_contact.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -17,14 +19,7 @@ using Vector6 = Eigen::Matrix<double, 6, 1>;
 
 CompliantContact makeContact(const Eigen::Vector3d& p, const Eigen::Vector3d& n, double normalForce, double kn,
                              double fingerCompliance) {
-    CompliantContact c;
-    c.p_GC = p;
-    c.n_G = n.normalized();
-    c.force_G = normalForce * c.n_G;
-    c.normalStiffness = kn;
-    c.tangentialStiffness = 2.0 / 3.0 * kn;
-    c.fingerCompliance_G = fingerCompliance * Eigen::Matrix3d::Identity();
-    return c;
+    return examples::makePressingContact(p, n, normalForce, kn, 2.0 / 3.0 * kn, fingerCompliance);
 }
 
 Vector6 force(const Eigen::Vector3d& f) {

@@ -2,6 +2,8 @@
 
 #include "graspsim/error.h"
 
+#include "pressing_contact.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,15 +14,6 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 using Vector6 = Eigen::Matrix<double, 6, 1>;
 
-CompliantContact makeContact(const Eigen::Vector3d& p, const Eigen::Vector3d& n, double normalForce, double kn, double kt) {
-    CompliantContact c;
-    c.p_GC = p;
-    c.n_G = n.normalized();
-    c.force_G = normalForce * c.n_G;
-    c.normalStiffness = kn;
-    c.tangentialStiffness = kt;
-    return c;
-}
 
 Vector6 force(const Eigen::Vector3d& f) {
     Vector6 w = Vector6::Zero();
@@ -42,8 +35,8 @@ contact::ContactParameters makeFriction(double mu_s, double mu_d) {
 // x(F) = F / (2 k_t) + v_tr F^2 / (4 mu N R), until both contacts break loose at F = 2 mu N.
 TEST(CompliantGraspCreep, SqueezeCreepsAsTheClosedForm) {
     const double N = 5, kt = 2e4, R = 1, mu = 0.6, v_tr = 1e-3;
-    const std::vector<CompliantContact> pinch = {makeContact({-0.02, 0, 0}, {1, 0, 0}, N, 3000, kt),
-                                                 makeContact({0.02, 0, 0}, {-1, 0, 0}, N, 3000, kt)};
+    const std::vector<CompliantContact> pinch = {examples::makePressingContact({-0.02, 0, 0}, {1, 0, 0}, N, 3000, kt),
+                                                 examples::makePressingContact({0.02, 0, 0}, {-1, 0, 0}, N, 3000, kt)};
     CompliantRampOptions options;
     options.rate = R;
     options.timeStep = 1e-4;
@@ -70,7 +63,7 @@ TEST(CompliantGraspCreep, RingBreaksLooseAtTheStaticPeak) {
     for (int k = 0; k < 5; ++k) {
         const double angle = 2 * kPi * k / 5;
         const Eigen::Vector3d p(R * std::cos(angle), 0, R * std::sin(angle));
-        ring.push_back(makeContact(p, -p, N, 4000, 4e4));
+        ring.push_back(examples::makePressingContact(p, -p, N, 4000, 4e4));
         ring.back().fingerCompliance_G = 3e-4 * Eigen::Matrix3d::Identity();
     }
     CompliantRampOptions options;
@@ -82,7 +75,7 @@ TEST(CompliantGraspCreep, RingBreaksLooseAtTheStaticPeak) {
 }
 
 TEST(CompliantGraspCreep, RejectsBadInput) {
-    const std::vector<CompliantContact> one = {makeContact({0.02, 0, 0}, {-1, 0, 0}, 5, 3000, 3e4)};
+    const std::vector<CompliantContact> one = {examples::makePressingContact({0.02, 0, 0}, {-1, 0, 0}, 5, 3000, 3e4)};
     CompliantRampOptions options;
     EXPECT_THROW(runCompliantRamp(one, Eigen::Vector3d::Zero(), force({0, 0.5, 0}), makeFriction(0.9, 0.7), options), InputError);
     options.rate = 0;

@@ -2,6 +2,8 @@
 
 #include "graspsim/error.h"
 
+#include "pressing_contact.h"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -16,12 +18,7 @@ using Matrix6 = Eigen::Matrix<double, 6, 6>;
 
 CompliantContact makeContact(const Eigen::Vector3d& p_GC, const Eigen::Vector3d& n_G, double normalForce, double fingerCurvature,
                              double objectCurvature) {
-    CompliantContact c;
-    c.p_GC = p_GC;
-    c.n_G = n_G.normalized();
-    c.force_G = normalForce * c.n_G;
-    c.normalStiffness = 1e4;
-    c.tangentialStiffness = 1e4;
+    CompliantContact c = examples::makePressingContact(p_GC, n_G, normalForce, 1e4, 1e4);
     c.fingerCurvature = fingerCurvature;
     c.objectCurvature = objectCurvature;
     return c;
