@@ -103,11 +103,13 @@ SimTK::Vec3 findNormalsMeet(const std::vector<SimTK::Vec3>& p, const std::vector
     return A.invert() * b;
 }
 
-// Half of the shape's extent along each of its frame's axes (m): a box's half-lengths, and for a
-// convex mesh the same measured through its surface (support points far out along +-x, y, z), so
-// that a mesh of a box starts where that box does. 0 for the other shapes, which start otherwise.
+// Half of the shape's extent along each of its frame's axes (m): a box's half-lengths, an
+// ellipsoid's semi-axes, and for a convex mesh the same measured through its surface (support
+// points far out along +-x, y, z), so that a mesh of a box starts where that box does. 0 for the
+// other shapes, which start otherwise.
 SimTK::Vec3 findHalfExtents(const contact::ContactShape& shape) {
     if (shape.type == contact::ContactShape::Type::Box) return shape.halfLengths;
+    if (shape.type == contact::ContactShape::Type::Ellipsoid) return shape.semiAxes;
     if (shape.type != contact::ContactShape::Type::ConvexMesh) return SimTK::Vec3(0);
     const double far = 100;  // m, as calcObjectWidth: the support error is below 1e-4 m
     SimTK::Vec3 halfExtents(0);
@@ -229,14 +231,15 @@ void GraspObjective::placeObjectAtStart() {
     if (shape.type == contact::ContactShape::Type::Capsule || shape.type == contact::ContactShape::Type::Cylinder) {
         // the long axis across the fingers, along the hand's radial axis z_H
         R_GS.setRotationFromOneAxis(R_GH.z(), SimTK::ZAxis);
-    } else if (shape.type == contact::ContactShape::Type::Box || shape.type == contact::ContactShape::Type::ConvexMesh) {
+    } else if (const SimTK::Vec3 halfExtents = findHalfExtents(shape); halfExtents != SimTK::Vec3(0)) {
         // thinnest axis along the squeeze (thumb pad to the other pads), longest out of the hand.
-        // A mesh too: left unturned, a mesh of the phone started edge-on to the pads and its
-        // optimum put both pads on edges, where a press along the edge normal goes nowhere.
+        // A mesh and an ellipsoid too: left unturned, a mesh of the phone started edge-on to the
+        // pads and its optimum put both pads on edges, where a press along the edge normal goes
+        // nowhere; a flat ellipsoid thin along y was refused (thumb pad 0.04 mm outside).
         SimTK::Vec3 others(0);
         for (size_t i = 1; i < p.size(); ++i) others += p[i] / double(p.size() - 1);
         const SimTK::UnitVec3 squeeze(others - p[0]);
-        R_GS = alignThinnestWithSqueeze(findHalfExtents(shape), squeeze, p_GC - m_X_GB[m_palm].p());
+        R_GS = alignThinnestWithSqueeze(halfExtents, squeeze, p_GC - m_X_GB[m_palm].p());
     }
     const SimTK::Transform X_GS(R_GS, p_GC);
     m_X_GO0 = X_GS * ~m_request.X_OS;

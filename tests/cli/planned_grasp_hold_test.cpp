@@ -10,21 +10,28 @@
 #include <gtest/gtest.h>
 
 using graspsim::testing::RunResult;
-using PlannedGraspHold = graspsim::testing::CliProcess;
+class PlannedGraspHold : public graspsim::testing::CliProcess {
+protected:
+    // Simulates the scenario `text` (its grasp planned as simulate loads it, its own duration) and
+    // expects its object held, drifting less than `drift` (m) after settling.
+    void expectHeld(const std::string& text, double drift) {
+        const std::string scenario = write("planned.yaml", text);
+        extraFiles_ = 1;
+        const RunResult r = run("simulate " + scenario + " -q --out " + (dir_ / "out").string());
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        const nlohmann::json summary = nlohmann::json::parse(graspsim::testing::slurp(dir_ / "out" / "summary.json"));
+        EXPECT_TRUE(summary["held"].get<bool>());
+        EXPECT_LT(summary["object_displacement_m"].get<double>(), drift);
+    }
+};
 
 TEST_F(PlannedGraspHold, TheSmallWomanHoldsTheThesisBallInAPlannedClutch) {
-    const std::string scenario = write("ball.yaml", R"(name: small-woman-ball
+    expectHeld(R"(name: small-woman-ball
 subject: {sex: female, mass: 50, stature: 1.52}
 object: {shape: sphere, mass: 0.2, radius: 0.045}
 grasp: {type: power-sphere}
 controller: {kp: 10}
-)");
-    extraFiles_ = 1;
-    const RunResult r = run("simulate " + scenario + " -q --out " + (dir_ / "out").string());
-    ASSERT_EQ(r.exitCode, 0) << r.err;
-    const nlohmann::json summary = nlohmann::json::parse(graspsim::testing::slurp(dir_ / "out" / "summary.json"));
-    EXPECT_TRUE(summary["held"].get<bool>());
-    EXPECT_LT(summary["object_displacement_m"].get<double>(), 0.005);
+)", 0.005);
 }
 
 // The cells the approximation did not engage on (docs/planning.md, the study): the 100 kg, 1.90 m
@@ -46,4 +53,16 @@ TEST_F(PlannedGraspHold, TheTallHeavyMansPlannedSphereAndCylinderEngageTheApprox
         const nlohmann::json summary = nlohmann::json::parse(graspsim::testing::slurp(dir_ / name / "summary.json"));
         EXPECT_TRUE(summary["engaged"].get<bool>()) << object;
     }
+}
+
+// A flat ellipsoid (semi-axes 70, 4 and 35 mm: thin along y of its frame) in a pinch planned on
+// load holds: the physical criterion of docs/planning.md, here held and a drift under 2 mm over
+// 2 s after settling (0.72 mm measured). Before the planner started an ellipsoid turned like a box
+// (thinnest axis along the squeeze), it started as labelled and its plan was refused ("the
+// thumb_tip cannot press its goal").
+TEST_F(PlannedGraspHold, APlannedPinchOfAFlatEllipsoidHolds) {
+    expectHeld(R"(name: flat-ellipsoid
+object: {shape: ellipsoid, mass: 0.1, semi_axes: [0.07, 0.004, 0.035]}
+grasp: {type: pinch}
+)", 0.002);
 }
