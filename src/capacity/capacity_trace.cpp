@@ -1,6 +1,28 @@
 #include "graspsim/capacity/capacity_trace.h"
 
+#include "graspsim/error.h"
+
+#include <sstream>
+
 namespace graspsim::capacity {
+
+namespace {
+
+// "0.02 m, the default" or "0.03 m".
+std::string describeDistance(double metres, double defaultMetres) {
+    std::ostringstream text;
+    text << metres << " m" << (metres == defaultMetres ? ", the default" : "");
+    return text.str();
+}
+
+}  // namespace
+
+void checkSlipCriteria(const SlipCriteria& criteria, const std::string& source, const std::string& value) {
+    if (criteria.slip < criteria.drop) return;
+    const SlipCriteria defaults;
+    throw InputError(source + ": value " + value + " is not accepted; the slip threshold (" + describeDistance(criteria.slip, defaults.slip) +
+                     ") must be below the drop threshold (" + describeDistance(criteria.drop, defaults.drop) + ")");
+}
 
 bool isDropped(const CapacitySample& sample, const SlipCriteria& criteria) {
     return !sample.held || sample.slip > criteria.drop;

@@ -9,6 +9,7 @@
 #include "graspsim/planning/planned_scenario.h"
 #include "graspsim/capacity/capacity_files.h"
 #include "graspsim/capacity/capacity_plot.h"
+#include "graspsim/capacity/capacity_trace.h"
 #include "graspsim/capacity/compliance_prediction.h"
 #include "graspsim/capacity/load_direction.h"
 #include "graspsim/capacity/method_options.h"
@@ -26,7 +27,6 @@
 #include <iostream>
 #include <mutex>
 #include <optional>
-#include <sstream>
 
 namespace graspsim::cli {
 
@@ -160,22 +160,14 @@ bool CapacityCommand::parsed() const { return command_->parsed(); }
 
 namespace {
 
-// The slip onset and drop distances (m): both > 0, the onset below the drop.
+// The slip onset and drop distances (m): both > 0, the onset below the drop. A refusal of the
+// pair names the flag given (--slip-threshold when both are).
 capacity::SlipCriteria parseSlipCriteria(const std::string& slipText, const std::string& dropText) {
     capacity::SlipCriteria criteria;
     criteria.slip = parsePositiveNumber(slipText, "--slip-threshold", "m").value_or(criteria.slip);
     criteria.drop = parsePositiveNumber(dropText, "--drop-threshold", "m").value_or(criteria.drop);
-    if (!(criteria.slip < criteria.drop)) {
-        const auto shown = [](const std::string& given, double value) {
-            std::ostringstream text;
-            text << value << " m" << (given.empty() ? ", the default" : "");
-            return text.str();
-        };
-        const bool slipGiven = !slipText.empty();
-        throw InputError(std::string(slipGiven ? "--slip-threshold" : "--drop-threshold") + ": value " + (slipGiven ? slipText : dropText) +
-                         " is not accepted; the slip threshold (" + shown(slipText, criteria.slip) +
-                         ") must be below the drop threshold (" + shown(dropText, criteria.drop) + ")");
-    }
+    const bool slipGiven = !slipText.empty();
+    capacity::checkSlipCriteria(criteria, slipGiven ? "--slip-threshold" : "--drop-threshold", slipGiven ? slipText : dropText);
     return criteria;
 }
 

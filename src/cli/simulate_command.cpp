@@ -275,6 +275,20 @@ std::string describeHold(const scenario::Scenario& scenario, const simulation::S
     return text.str();
 }
 
+// The run's summary line, and the approximation's line in approx mode.
+void printRunResult(const scenario::Scenario& scenario, const simulation::SimulationResult& result,
+                    const simulation::SimulationOptions& options, const std::string& ramp, const std::string& out) {
+    const simulation::SimulationSummary& s = result.summary;
+    std::cout << scenario.name << " (" << simulation::toString(s.contact) << ", " << simulation::toString(s.mode) << ", perturbation " << s.perturbation
+              << (ramp.empty() ? "" : ", ramp " + ramp) << "): " << s.simTime << " s simulated in " << s.wallTime << " s, " << s.steps << " steps, "
+              << describeHold(scenario, s) << "; results in " << out << "\n";
+    if (s.mode == simulation::SimulationMode::Approx) {
+        std::cout << "approximation (" << simulation::toString(options.approx.constraint) << ", "
+                  << simulation::toString(options.approx.attach) << "): " << (s.engaged ? "engaged at t = " + std::to_string(s.engageTime) + " s" : "never engaged")
+                  << ", " << result.events.size() << " switch event(s) in events.csv\n";
+    }
+}
+
 }  // namespace
 
 int SimulateCommand::run(const std::vector<std::string>& commandLine) const {
@@ -301,20 +315,14 @@ int SimulateCommand::run(const std::vector<std::string>& commandLine) const {
     meter.finish();
     results::writeResultFolder(o.out, scenario, result, makeRunProvenance(commandLine, scenario, options, ramp));
     opensim::writeOpenSimResultFiles(o.out, result);
-    const simulation::SimulationSummary& s = result.summary;
-    if (o.view) std::cout << "replay written to " << viewer::writeReplayPage(o.out) << ": open it in a web browser\n";
+    const std::string replay = o.view ? viewer::writeReplayPage(o.out) : "";
     if (!o.view) io::removeStaleFile(o.out + "/replay.html");  // an earlier run's replay would show another run
     io::removeStaleFile(o.out + "/replay.png");  // and so would its picture (graspsim view --png)
-    std::cout << scenario.name << " (" << simulation::toString(s.contact) << ", " << simulation::toString(s.mode) << ", perturbation " << s.perturbation
-              << (ramp.empty() ? "" : ", ramp " + ramp) << "): " << s.simTime << " s simulated in " << s.wallTime << " s, " << s.steps << " steps, "
-              << describeHold(scenario, s) << "; results in " << o.out << "\n";
-    if (s.mode == simulation::SimulationMode::Approx) {
-        std::cout << "approximation (" << simulation::toString(options.approx.constraint) << ", "
-                  << simulation::toString(options.approx.attach) << "): " << (s.engaged ? "engaged at t = " + std::to_string(s.engageTime) + " s" : "never engaged")
-                  << ", " << result.events.size() << " switch event(s) in events.csv\n";
-    }
-    if (!s.complete) {
-        std::cerr << "graspsim: simulation stopped early: " << s.failure << " (summary.json is marked incomplete)\n";
+    printRunResult(scenario, result, options, ramp, o.out);
+    // The run's result first, where a reader looks; the last line points at the replay.
+    if (!replay.empty()) std::cout << "replay written to " << replay << ": open it in a web browser\n";
+    if (!result.summary.complete) {
+        std::cerr << "graspsim: simulation stopped early: " << result.summary.failure << " (summary.json is marked incomplete)\n";
         return 3;
     }
     return 0;

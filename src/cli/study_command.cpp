@@ -68,22 +68,11 @@ std::string findExecutable() {
     return self.string();
 }
 
-std::string formatClock(double seconds) {
-    const long s = static_cast<long>(seconds + 0.5);
-    char text[32];
-    std::snprintf(text, sizeof text, "%ld:%02ld:%02ld", s / 3600, s / 60 % 60, s % 60);
-    return text;
-}
-
 // A progress bar with an ETA on a terminal; nothing otherwise (logs of batch jobs stay clean).
 std::function<void(const study::RunProgress&)> makeProgressBar() {
     if (!::isatty(STDERR_FILENO)) return {};
     return [](const study::RunProgress& p) {
-        constexpr int kWidth = 30;
-        const int filled = p.total ? kWidth * p.finished / p.total : kWidth;
-        std::fprintf(stderr, "\r[%s%s] %d/%d cases, %d failed, %s elapsed, ETA %s ", std::string(filled, '#').c_str(),
-                     std::string(kWidth - filled, '.').c_str(), p.finished, p.total, p.failed, formatClock(p.elapsed).c_str(),
-                     p.remaining < 0 ? "-:--:--" : formatClock(p.remaining).c_str());
+        std::fprintf(stderr, "\r%s", study::formatRunProgress(p).c_str());
         if (p.finished == p.total) std::fprintf(stderr, "\n");
     };
 }
@@ -101,13 +90,12 @@ LoadedStudy loadStudy(const std::string& path) {
     return loaded;
 }
 
-// The cases counted and listed in the words of results.csv's status column. The incomplete count
-// is given only when there are some, so a study without any prints what it always printed.
+// The cases counted and listed in the words of results.csv's status column.
 void printTableSummary(const study::StudySpec& spec, const study::StudyTable& table, const std::string& folder, bool grid) {
     const std::size_t notOk = table.missing.size() + table.incomplete.size() + table.failed.size();
-    std::cout << "study '" << spec.name << "': " << table.total << " cases, " << table.total - static_cast<int>(notOk) << " ok, ";
-    if (!table.incomplete.empty()) std::cout << table.incomplete.size() << " incomplete, ";
-    std::cout << table.failed.size() << " failed, " << table.missing.size() << " missing; table in " << folder << "/results.csv"
+    std::cout << "study '" << spec.name << "': " << table.total << " cases, " << table.total - static_cast<int>(notOk) << " ok, "
+              << study::formatFailureCounts(table.incomplete.size(), table.failed.size()) << ", " << table.missing.size()
+              << " missing; table in " << folder << "/results.csv"
               << (grid ? " (a grid by base scenario in results.md)" : "") << "\n";
     if (!table.incomplete.empty()) {
         std::cout << "incomplete (stopped early; see their error column): " << study::formatCaseList(table.incomplete) << "\n";
@@ -166,8 +154,8 @@ int StudyCommand::runCases() const {
     const study::RunReport report = study::runStudyCases(loaded.spec, loaded.bases, settings);
     if (settings.shard.count > 1) {
         std::cout << "shard " << o.shard << ": " << report.total << " cases (" << report.skipped << " already finished, "
-                  << report.ran << " run now), " << report.failed << " failed or incomplete; merge the shards with "
-                  << "`graspsim study collect " << o.out << "`\n";
+                  << report.ran << " run now), " << study::formatFailureCounts(report.incomplete, report.failed)
+                  << "; merge the shards with `graspsim study collect " << o.out << "`\n";
         return 0;
     }
     return mergeResults(loaded.spec, o.out);

@@ -164,6 +164,25 @@ void validateTree(const std::string& source, const ModelDescription& m) {
     }
 }
 
+// A movable joint that carries only massless links has nothing resisting its motion: its
+// articulated-body inertia is zero, and Simbody silently gives NaN accelerations. Needs a valid tree.
+void validateMassOutboard(const std::string& source, const ModelDescription& m) {
+    std::set<std::string> carriesMass;  // links with mass at or beyond them
+    for (const Body& b : m.bodies) {
+        if (!b.isVirtual()) carriesMass.insert(b.name);
+    }
+    for (bool grew = true; grew;) {  // from the leaves toward the root
+        grew = false;
+        for (const Joint& j : m.joints) grew = (carriesMass.count(j.child) && carriesMass.insert(j.parent).second) || grew;
+    }
+    for (const Joint& j : m.joints) {
+        if (j.getDofCount() > 0 && !carriesMass.count(j.child)) {
+            fail(source, "joint '" + j.name + "' outboard mass", "0 kg (it moves only massless links)",
+                 "a movable joint needs a link with mass > 0 at or beyond its child");
+        }
+    }
+}
+
 void validateUniqueNames(const std::string& source, const ModelDescription& m) {
     std::set<std::string> names;
     for (const Body& b : m.bodies) {
@@ -241,6 +260,7 @@ void ModelDescription::validate(const std::string& source) const {
     for (const Body& b : bodies) validateBody(source, b);
     for (const Joint& j : joints) validateJoint(source, j);
     validateTree(source, *this);
+    validateMassOutboard(source, *this);
 }
 
 std::string toString(BodyRole role) {

@@ -99,13 +99,9 @@ void checkCapacityOption(const std::string& name, const std::string& value) {
     if (name == "hold" || name == "max_duration") checkPositiveNumber(source, value, "s");
     if (name == "slip_threshold") {
         checkPositiveNumber(source, value, "m");
-        const double drop = capacity::SlipCriteria{}.drop;  // a study does not change it
-        if (!(std::strtod(value.c_str(), nullptr) < drop)) {
-            char text[200];
-            std::snprintf(text, sizeof text, ": value %s is not accepted; the slip threshold must be below the drop threshold, %g m",
-                          value.c_str(), drop);
-            throw InputError(source + text);
-        }
+        capacity::SlipCriteria criteria;  // a study does not change the drop threshold
+        criteria.slip = std::strtod(value.c_str(), nullptr);
+        capacity::checkSlipCriteria(criteria, source, value);
     }
 }
 

@@ -5,12 +5,14 @@
 #include "graspsim/study/case_process.h"
 #include "graspsim/study/case_setup.h"
 #include "graspsim/study/study_folder.h"
+#include "graspsim/study/study_table.h"
 
 #include <nlohmann/json.hpp>
 
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdio>
 #include <deque>
 #include <filesystem>
 #include <map>
@@ -99,10 +101,10 @@ private:
         for (const StudyCase& c : selectShard(expandCases(spec_), settings_.shard)) {
             ++report_.total;
             if (isCaseFinished(settings_.folder, c.index)) {
-                const bool ok = readCaseRecord(settings_.folder, c.index).status == CaseStatus::Ok;
-                if (ok || !settings_.retryFailed) {
+                const CaseStatus status = readCaseRecord(settings_.folder, c.index).status;
+                if (status == CaseStatus::Ok || !settings_.retryFailed) {
                     ++report_.skipped;
-                    report_.failed += ok ? 0 : 1;
+                    countNotOk(status);
                     continue;
                 }
                 fs::remove_all(findCaseFolder(settings_.folder, c.index));
@@ -144,8 +146,13 @@ private:
     void record(const std::string& tmp, const CaseRecord& caseRecord) {
         commitCase(settings_.folder, tmp, caseRecord);
         ++report_.ran;
-        if (caseRecord.status != CaseStatus::Ok) ++report_.failed;
+        countNotOk(caseRecord.status);
         report();
+    }
+
+    void countNotOk(CaseStatus status) {
+        if (status == CaseStatus::Incomplete) ++report_.incomplete;
+        if (status == CaseStatus::Failed) ++report_.failed;
     }
 
     void report() const {
@@ -153,6 +160,7 @@ private:
         RunProgress progress;
         progress.finished = report_.skipped + report_.ran;
         progress.total = report_.total;
+        progress.incomplete = report_.incomplete;
         progress.failed = report_.failed;
         progress.elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
         if (report_.ran > 0) progress.remaining = progress.elapsed / report_.ran * (report_.total - progress.finished);
@@ -168,7 +176,22 @@ private:
     RunReport report_;
 };
 
+std::string formatClock(double seconds) {
+    const long s = static_cast<long>(seconds + 0.5);
+    char text[32];
+    std::snprintf(text, sizeof text, "%ld:%02ld:%02ld", s / 3600, s / 60 % 60, s % 60);
+    return text;
+}
+
 }  // namespace
+
+std::string formatRunProgress(const RunProgress& p) {
+    constexpr int kWidth = 30;
+    const int filled = p.total ? kWidth * p.finished / p.total : kWidth;
+    return "[" + std::string(filled, '#') + std::string(kWidth - filled, '.') + "] " + std::to_string(p.finished) + "/" +
+           std::to_string(p.total) + " cases, " + formatFailureCounts(p.incomplete, p.failed) + ", " + formatClock(p.elapsed) +
+           " elapsed, ETA " + (p.remaining < 0 ? "-:--:--" : formatClock(p.remaining)) + " ";
+}
 
 RunReport runStudyCases(const StudySpec& spec, const std::vector<scenario::ScenarioText>& bases, const RunSettings& settings) {
     return CaseScheduler(spec, bases, settings).run();

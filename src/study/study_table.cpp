@@ -70,6 +70,11 @@ void writeStudyTable(const std::string& folder, const StudyTable& table) {
     io::writeFileAtomically(folder + "/results.csv", table.csv);
 }
 
+std::string formatFailureCounts(std::size_t incomplete, std::size_t failed) {
+    const std::string counted = std::to_string(failed) + " failed";
+    return incomplete == 0 ? counted : std::to_string(incomplete) + " incomplete, " + counted;
+}
+
 std::string formatCaseList(const std::vector<int>& cases, std::size_t limit) {
     std::ostringstream text;
     for (std::size_t i = 0; i < cases.size() && i < limit; ++i) text << (i ? ", " : "") << cases[i];

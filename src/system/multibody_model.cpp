@@ -1,7 +1,6 @@
 #include "graspsim/system/multibody_model.h"
 
 #include <algorithm>
-#include <set>
 #include <utility>
 
 #include "body_mobilizer.h"
@@ -27,8 +26,7 @@ decltype(auto) callSimbody(const std::string& context, Call&& call) {
 MultibodyModel::MultibodyModel(const model::ModelDescription& description,
                                const SystemOptions& options)
     : description_(description), options_(options), matter_(system_), forces_(system_) {
-    description_.validate("model '" + description_.name + "'");
-    checkMassOutboardOfJoints();
+    description_.validate("model '" + description_.name + "'");  // also a joint that moves only massless bodies
     for (const model::Body& body : description_.bodies) checkMassPropertiesForSimbody(body, describe("link '" + body.name + "'"));
     callSimbody(describe("gravity"),
                 [&] { gravity_ = SimTK::Force::Gravity(forces_, matter_, options_.gravity); });
@@ -40,32 +38,6 @@ MultibodyModel::~MultibodyModel() = default;
 
 std::string MultibodyModel::describe(const std::string& what) const {
     return "model '" + description_.name + "': " + what;
-}
-
-void MultibodyModel::checkMassOutboardOfJoints() const {
-    // A pin or slider that carries only massless bodies has nothing resisting its motion: its
-    // articulated-body inertia is zero. Simbody does not complain; every acceleration silently
-    // comes out NaN. Catch it here, where the joint's name is known.
-    std::set<std::string> carriesMass;
-    bool grew = true;
-    while (grew) {  // propagate "has mass in its subtree" from leaves toward the root
-        grew = false;
-        for (const model::Joint& joint : description_.joints) {
-            const bool childMassive = !description_.findBody(joint.child)->isVirtual();
-            if ((childMassive || carriesMass.count(joint.child)) &&
-                carriesMass.insert(joint.parent).second) {
-                grew = true;
-            }
-        }
-    }
-    for (const model::Joint& joint : description_.joints) {
-        const bool childMassive = !description_.findBody(joint.child)->isVirtual();
-        if (joint.getDofCount() > 0 && !childMassive && !carriesMass.count(joint.child)) {
-            throw InputError(
-                describe("joint '" + joint.name +
-                         "' moves only massless bodies; a movable joint needs mass outboard"));
-        }
-    }
 }
 
 void MultibodyModel::addBodies() {

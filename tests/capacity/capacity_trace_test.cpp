@@ -1,10 +1,13 @@
 #include "graspsim/capacity/capacity_trace.h"
 
+#include "graspsim/error.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 using graspsim::capacity::CapacitySample;
+using graspsim::capacity::checkSlipCriteria;
 using graspsim::capacity::findCapacityFigures;
 using graspsim::capacity::SlipCriteria;
 
@@ -95,4 +98,23 @@ TEST(CapacityTrace, GripForceAtTheStartAndInterpolatedAtTheOnset) {
     EXPECT_TRUE(std::isnan(engaged.gripForceAtStart));
     EXPECT_TRUE(std::isnan(engaged.gripForceAtOnset));
     EXPECT_NEAR(engaged.slipOnsetLoad, f.slipOnsetLoad, 1e-12);
+}
+
+// The slip onset must come before the drop: just below is accepted, equal or above is refused
+// naming the source and value given, with the distance left at its default called so.
+TEST(CapacityTrace, TheSlipOnsetMustComeBeforeTheDrop) {
+    const auto refusal = [](const SlipCriteria& criteria) {
+        try {
+            checkSlipCriteria(criteria, "--slip-threshold", "given");
+        } catch (const graspsim::InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string("accepted");
+    };
+    EXPECT_EQ(refusal(SlipCriteria{}), "accepted");
+    EXPECT_EQ(refusal({0.0199, 0.02}), "accepted");
+    EXPECT_EQ(refusal({0.02, 0.02}),
+              "--slip-threshold: value given is not accepted; the slip threshold (0.02 m) must be below the drop threshold (0.02 m, the default)");
+    EXPECT_EQ(refusal({0.002, 0.001}),
+              "--slip-threshold: value given is not accepted; the slip threshold (0.002 m, the default) must be below the drop threshold (0.001 m)");
 }

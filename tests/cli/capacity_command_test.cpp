@@ -68,9 +68,13 @@ TEST_F(CapacityCommand, BadInputIsOneLineAndWritesNothing) {
     expectRejected("--contact rigid --friction anchor", "--friction");  // rigid contact's is Coulomb's
     expectRejected("--slip-threshold 0", "--slip-threshold");
     expectRejected("--slip-threshold nan", "--slip-threshold");
-    expectRejected("--slip-threshold 0.03", "--slip-threshold");  // above the default drop, 0.02
-    expectRejected("--drop-threshold 0.001", "--drop-threshold");  // below the default slip, 0.002
-    expectRejected("--slip-threshold 0.01 --drop-threshold 0.01", "--slip-threshold");
+    // The pair's rule is capacity::checkSlipCriteria's; the flag given names the refusal.
+    expectRejected("--slip-threshold 0.03",
+                   "--slip-threshold: value 0.03 is not accepted; the slip threshold (0.03 m) must be below the drop threshold (0.02 m, the default)");
+    expectRejected("--drop-threshold 0.001",
+                   "--drop-threshold: value 0.001 is not accepted; the slip threshold (0.002 m, the default) must be below the drop threshold (0.001 m)");
+    expectRejected("--slip-threshold 0.01 --drop-threshold 0.01",
+                   "--slip-threshold: value 0.01 is not accepted; the slip threshold (0.01 m) must be below the drop threshold (0.01 m)");
     expectRejected("--method bisection --initial-load 1", "--initial-load");  // a ramp's step only
     expectRejected("--guess 2", "--guess: only with --method bisection");  // not silently unused by the ramp
     // Each method's options (method_options.h): none is silently left unused.

@@ -95,6 +95,21 @@ TEST_F(ModelCommand, RejectsBadUrdf) {
     EXPECT_NE(none.err.find("absent.urdf"), std::string::npos) << none.err;
 }
 
+// A joint that moves only massless links is named with the file it is in, as the other URDF errors
+// are (not with the model's name, which the user may never have seen).
+TEST_F(ModelCommand, AJointMovingOnlyMasslessLinksIsNamedWithItsFile) {
+    const std::string file = write("slider.urdf",
+        "<robot name='tiny'><link name='base'><inertial><mass value='1'/>"
+        "<inertia ixx='0.01' iyy='0.01' izz='0.01' ixy='0' ixz='0' iyz='0'/></inertial></link><link name='tip'/>"
+        "<joint name='slide' type='prismatic'><parent link='base'/><child link='tip'/><axis xyz='1 0 0'/>"
+        "<limit lower='0' upper='1' effort='1' velocity='1'/></joint></robot>");
+    const RunResult r = run("model info " + file);
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_EQ(r.err, "graspsim: " + file + ": joint 'slide' outboard mass = 0 kg (it moves only massless links) is not accepted; "
+                     "a movable joint needs a link with mass > 0 at or beyond its child\n");
+    EXPECT_EQ(r.out, "");
+}
+
 TEST_F(ModelCommand, UnwritableOutputLeavesNothing) {
     const RunResult r = run("model build -o /nonexistent-graspsim-dir/arm.urdf");
     EXPECT_EQ(r.exitCode, 2);

@@ -8,8 +8,10 @@
 
 #include <gtest/gtest.h>
 
+#include <sstream>
 #include <tuple>
 #include <utility>
+#include <vector>
 
 namespace fs = std::filesystem;
 using graspsim::testing::RunResult;
@@ -99,6 +101,25 @@ TEST_F(SimulateCommand, ShortRunWritesTheSummary) {
     ASSERT_EQ(b.exitCode, 0) << b.err;
     EXPECT_NE(b.out.find("(the run ended before the settle time, 1 s: no drift after settling measured)"), std::string::npos) << b.out;
     EXPECT_EQ(b.out.find("mm after settling"), std::string::npos) << b.out;
+}
+
+// With --view the run's result comes first, where a reader looks (and the approximation's line
+// after it in approx mode); the last line points at the replay the run wrote.
+TEST_F(SimulateCommand, WithViewTheResultComesFirstAndTheReplayLineLast) {
+    for (const std::string mode : {"full", "approx"}) {
+        const std::string out = (dir_ / mode).string();
+        const RunResult r = run("simulate ball-clutch --mode " + mode + " --duration 0.05 -q --view --out " + out);
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        std::vector<std::string> lines;
+        std::istringstream text(r.out);
+        for (std::string line; std::getline(text, line);) lines.push_back(line);
+        ASSERT_EQ(lines.size(), mode == "full" ? 2u : 3u) << r.out;
+        const std::string result = "ball-clutch (compliant, " + mode + ", perturbation none): 0.05 s simulated in ";
+        EXPECT_EQ(lines.front().substr(0, result.size()), result) << r.out;
+        if (mode == "approx") EXPECT_EQ(lines[1].rfind("approximation (", 0), 0u) << r.out;
+        EXPECT_EQ(lines.back(), "replay written to " + out + "/replay.html: open it in a web browser") << r.out;
+        EXPECT_TRUE(fs::is_regular_file(fs::path(out) / "replay.html"));
+    }
 }
 
 // --capsule-contact ends reaches the run's scenario, which scenario.yaml records; the default

@@ -110,6 +110,28 @@ TEST(ModelDescription, NegativeMassAndReversedLimitsAreRejected) {
     EXPECT_NE(messageOf(m).find("limits"), std::string::npos);
 }
 
+// A movable joint with no mass beyond it would leave Simbody's accelerations NaN: refused naming
+// the source (the URDF file) and the joint. Mass further out, or a weld, is fine.
+TEST(ModelDescription, AMovableJointThatMovesOnlyMasslessLinksIsRejected) {
+    ModelDescription m = twoLinks();
+    m.bodies[1].mass = 0;
+    m.bodies[1].inertia = {0, 0, 0};
+    EXPECT_EQ(messageOf(m), "test.urdf: joint 'hinge' outboard mass = 0 kg (it moves only massless links) is not accepted; "
+                            "a movable joint needs a link with mass > 0 at or beyond its child");
+    ModelDescription welded = m;
+    welded.joints[0].type = Joint::Type::Fixed;
+    EXPECT_EQ(messageOf(welded), "");
+    Body hand = twoLinks().bodies[1];
+    hand.name = "hand";
+    Joint wrist = m.joints[0];
+    wrist.name = "wrist";
+    wrist.parent = "arm";
+    wrist.child = "hand";
+    m.bodies.push_back(hand);
+    m.joints.push_back(wrist);
+    EXPECT_EQ(messageOf(m), "") << "the massless arm carries the hand";
+}
+
 TEST(ModelDescription, DuplicateNamesAreRejected) {
     ModelDescription m = twoLinks();
     m.bodies[1].name = "base";

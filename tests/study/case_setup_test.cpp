@@ -196,9 +196,10 @@ TEST(CaseSetup, CapacityOptionsBecomeTheCommandsFlags) {
     EXPECT_NE(refusal("  hold: [inf]\n").find("run option 'hold': value inf is not accepted"), std::string::npos);
     EXPECT_NE(refusal("  torque: [yes]\n").find("run option 'torque': 'yes' is not accepted; true"), std::string::npos);
     EXPECT_NE(refusal("  method: [compliance]\n").find("'compliance' is not accepted; ramp, bisection or constant"), std::string::npos);
-    EXPECT_NE(refusal("  slip_threshold: [0.001, 0.05]\n").find("run option 'slip_threshold': value 0.05 is not accepted; the slip "
-                                                               "threshold must be below the drop threshold, 0.02 m"),
-              std::string::npos);
+    // The command's rule (capacity::checkSlipCriteria) against the drop threshold a study keeps.
+    EXPECT_EQ(refusal("  slip_threshold: [0.001, 0.05]\n"),
+              "s.yaml:6: axis 'slip_threshold': run option 'slip_threshold': value 0.05 is not accepted; the slip threshold (0.05 m) "
+              "must be below the drop threshold (0.02 m, the default)");
 }
 
 // The load options each method takes (method_options.h), for every method the study runs: an

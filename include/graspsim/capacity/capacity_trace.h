@@ -8,6 +8,7 @@
 /// the first time it exceeds SlipCriteria::slip, by linear interpolation between samples.
 
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace graspsim::capacity {
@@ -40,6 +41,16 @@ struct SlipCriteria {
     /// 20 mm is the thesis scenarios' held tolerance: a pad that far from its spot has lost it.
     double drop = 0.020;
 };
+
+/// Checks that the slip onset comes before the drop (each already a finite number > 0): with the
+/// onset at or beyond the drop, every run would drop before it slips. Both the capacity command and
+/// a capacity study check their distances here; a distance equal to SlipCriteria's default is
+/// named as such, since that is the one the user did not change.
+/// @param source where the refused value came from ("--slip-threshold", "run option 'slip_threshold'")
+/// @param value that value as the user wrote it
+/// @throws graspsim::InputError "<source>: value <value> is not accepted; the slip threshold
+///         (0.03 m) must be below the drop threshold (0.02 m, the default)"
+void checkSlipCriteria(const SlipCriteria& criteria, const std::string& source, const std::string& value);
 
 /// The capacity figures of one run.
 struct CapacityFigures {

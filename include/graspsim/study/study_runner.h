@@ -18,7 +18,8 @@ namespace graspsim::study {
 struct RunProgress {
     int finished = 0;       ///< cases of this run's shard finished (including skipped ones)
     int total = 0;          ///< cases in this run's shard
-    int failed = 0;         ///< of the finished ones, those not Ok
+    int incomplete = 0;     ///< of the finished ones, those stopped early (CaseStatus::Incomplete)
+    int failed = 0;         ///< of the finished ones, those without a result (CaseStatus::Failed)
     double elapsed = 0;     ///< wall seconds since the run started
     double remaining = -1;  ///< estimated wall seconds left; -1 until one case ran
 };
@@ -38,8 +39,14 @@ struct RunReport {
     int total = 0;    ///< cases in the shard
     int skipped = 0;  ///< already finished before this run
     int ran = 0;      ///< run now
-    int failed = 0;   ///< of all the shard's cases, those not Ok
+    int incomplete = 0;  ///< of all the shard's cases, those stopped early (CaseStatus::Incomplete)
+    int failed = 0;   ///< of all the shard's cases, those without a result (CaseStatus::Failed)
 };
+
+/// The progress line a terminal shows: a bar, the cases finished, the incomplete and failed ones
+/// counted apart as the summary counts them (formatFailureCounts), elapsed time and the time left
+/// ("[###############...............] 2/4 cases, 1 incomplete, 0 failed, 0:00:12 elapsed, ETA 0:00:12").
+std::string formatRunProgress(const RunProgress& progress);
 
 /// Runs every unfinished case of the shard.
 /// @throws graspsim::Error when a child process cannot be started or a case folder cannot be written.

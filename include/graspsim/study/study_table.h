@@ -32,6 +32,11 @@ StudyTable collectStudyTable(const StudySpec& spec, const std::string& folder);
 /// Writes `table.csv` to `folder`/results.csv (atomically).
 void writeStudyTable(const std::string& folder, const StudyTable& table);
 
+/// The cases that are not ok in the status column's words: "2 incomplete, 1 failed", or "1 failed"
+/// when none is incomplete (so a study without any reads as it always did). The summary, the
+/// progress line and a shard's line all count them so.
+std::string formatFailureCounts(std::size_t incomplete, std::size_t failed);
+
 /// "3, 7, 12" (at most `limit` numbers, then "... (N in all)").
 std::string formatCaseList(const std::vector<int>& cases, std::size_t limit = 20);
 

@@ -134,7 +134,6 @@ private:
 
     void addBodies();
     void addBody(const model::Joint& joint);
-    void checkMassOutboardOfJoints() const;
     void cacheStateIndices(const SimTK::State& defaultState);
     const JointEntry& getJointEntry(const std::string& jointName) const;
     /// "model '<name>': <what>", the context every message starts with.
