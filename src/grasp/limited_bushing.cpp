@@ -1,5 +1,6 @@
 #include "graspsim/grasp/limited_bushing.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <string>
@@ -450,11 +451,20 @@ void LimitedBushing::engage(SimTK::State& state, const AttachmentEngagement& eng
     const SimTK::MassProperties mp = bodyO.getBody().getDefaultRigidBodyMassProperties();
     const SimTK::Vec3 I = mp.calcCentralInertia().getMoments();
     const SimTK::Vec6 lower = engagement.lowerLimits.value_or(engagement.limits);
-    const SimTK::Vec6 stiffness = calcStiffnessForBound(getStiffness(), findLargerSide(lower, engagement.limits),
-                                                        engagement.leverArm, engagement.penetrationBound);
+    SimTK::Vec6 stiffness = calcStiffnessForBound(getStiffness(), findLargerSide(lower, engagement.limits),
+                                                  engagement.leverArm, engagement.penetrationBound);
+    for (int k = 0; k < 6; ++k) {
+        if (engagement.stiffness && (*engagement.stiffness)[k] > 0) stiffness[k] = (*engagement.stiffness)[k];
+    }
     setStiffness(state, stiffness, calcCriticalDamping(stiffness, I, mp.getMass()));
     setLimits(state, lower, engagement.limits);
     for (int k = 0; k < 6; ++k) setAxisLocked(state, static_cast<BushingAxis>(k), engagement.lockedAxes[k]);
+    if (engagement.preload) {
+        const SimTK::Vec6 upper = findEffectiveLimits(state), below = findEffectiveLowerLimits(state);
+        SimTK::Vec6 e;
+        for (int k = 0; k < 6; ++k) e[k] = -std::clamp((*engagement.preload)[k], -below[k], upper[k]) / stiffness[k];
+        setAnchorDisplacement(state, e);
+    }
     system.realize(state, SimTK::Stage::Position);
 }
 

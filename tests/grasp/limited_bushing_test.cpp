@@ -370,5 +370,34 @@ TEST_P(LimitedBushingDynamics, LimitSetByAnEventHandlerStartsTheSlide) {
     EXPECT_NEAR((v2 - v1) / (t2 - t1), expected, 0.02 * expected);
 }
 
+// ---- engagement with a preload and a stiffness of its own -----------------------------------
+
+// Engaged (as the grasp switch does) under a constant force and torque, with a preload that is
+// part of them and a soft rotational stiffness K_z of its own: the spring starts out carrying the
+// preload, so O moves only by the rest, (F - P_F) / K_x and (T - P_T) / K_z; the preload's part
+// causes no sag.
+TEST_P(LimitedBushingDynamics, EngagedWithAPreloadMovesOnlyByTheLoadBeyondIt) {
+    BushedBox scene;
+    const double force = 1.5, torque = 0.06, preloadForce = 1.2, preloadTorque = 0.05, softStiffness = 3;
+    scene.addForce(Vec3(force, 0, 0));
+    scene.addTorque(Vec3(0, 0, torque));
+    SimTK::State initial = scene.system.realizeTopology();
+    scene.system.realize(initial, SimTK::Stage::Position);
+    AttachmentEngagement engagement;
+    engagement.limits = Vec6(kAngularLimit, kAngularLimit, kAngularLimit, kLinearLimit, kLinearLimit, kLinearLimit);
+    engagement.leverArm = 0.01;
+    engagement.penetrationBound = 1;  // the constructor's stiffness rules
+    engagement.stiffness = Vec6(SimTK::NaN, SimTK::NaN, softStiffness, SimTK::NaN, SimTK::NaN, SimTK::NaN);
+    engagement.preload = Vec6(0, 0, -preloadTorque, -preloadForce, 0, 0);  // on O, against the loads
+    scene.bushing.engage(initial, engagement);
+    EXPECT_EQ(scene.bushing.getStiffness(initial), Vec6(kAngularStiffness, kAngularStiffness, softStiffness,
+                                                         kLinearStiffness, kLinearStiffness, kLinearStiffness));
+    SteppedRun run(GetParam(), scene.system, initial);
+    const SimTK::State& state = run.stepTo(1.0);  // 11 time constants sqrt(I / K_z)
+    const double x = (force - preloadForce) / kLinearStiffness, angle = (torque - preloadTorque) / softStiffness;
+    EXPECT_NEAR(scene.box.getBodyOriginLocation(state)[0], x, 1e-3 * x);
+    EXPECT_NEAR(calcAngleAboutZ(scene.box.getBodyRotation(state)), angle, 1e-3 * angle);
+}
+
 }  // namespace
 }  // namespace graspsim::grasp

@@ -56,6 +56,14 @@ struct AttachmentEngagement {
     /// How far the element's elastic deflection under loads up to its limits may move a
     /// fingertip into the object (m); compliant elements are stiffened to keep within it.
     double penetrationBound = 0;
+    /// Per axis, a stiffness (N m/rad for 0-2, N/m for 3-5) in place of the penetration bound's,
+    /// where set and positive (NaN: the bound's). Only the bushing takes it.
+    std::optional<SimTK::Vec6> stiffness;
+    /// The generalized force on the object along M's axes (N m, N) that the element carries at
+    /// engagement, clamped to its limits: its anchor is set back by preload / K, so that the
+    /// element takes over the contacts' wrench without the object first sagging into its spring.
+    /// Unset: none (the anchor at the current pose). Only the bushing takes it.
+    std::optional<SimTK::Vec6> preload;
     std::vector<FingerLoad> fingers;  ///< per part, in part order (multi-attachment)
     double mu = 0;                    ///< friction coefficient of the per-finger limits (multi-attachment)
 };

@@ -170,8 +170,10 @@ public:
     /// anchor at the current pose (no spring force jump), stiffens it so that its elastic
     /// deflection at the limits moves no fingertip (at most engagement.leverArm from M) more
     /// than engagement.penetrationBound (calcStiffnessForBound with each axis's larger side, never below the constructor's
-    /// stiffness; damping critical with the object's mass and central moments of inertia), then
-    /// sets the limits (two-sided if engagement.lowerLimits is set) and locks. Leaves `state`
+    /// stiffness; engagement.stiffness in its place on the axes it sets; damping critical with the
+    /// object's mass and central moments of inertia), then sets the limits (two-sided if
+    /// engagement.lowerLimits is set) and locks. With engagement.preload, the anchor is then set
+    /// back so that the spring carries it (clamped to the limits in force). Leaves `state`
     /// realized to Stage::Position.
     void engage(SimTK::State& state, const AttachmentEngagement& engagement) const override;
     /// GraspAttachment: disables the element.
