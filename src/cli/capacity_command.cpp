@@ -58,6 +58,7 @@ struct CapacityCommand::Options {
     std::string releaseAt = "auto";
     std::string releaseGive;
     std::string handBack = "engaged";
+    std::string bushingGive = "stiff";
     std::string accuracy;
     std::string integrator = "auto";
     std::string stepSize;
@@ -142,6 +143,10 @@ CapacityCommand::CapacityCommand(CLI::App& app) : options_(std::make_shared<Opti
     command_->add_flag("--rolling", o.rolling,
                        "compliance: the model adds the contacts' rolling stiffness (their forces turning as the object rolls "
                        "on the pads; research option, docs/capacity.md); default: the contacts' geometry frozen");
+    command_->add_option("--bushing-give", o.bushingGive,
+                         "approx: how the merged bushing gives under a load: stiff (default: stiffened for the penetration "
+                         "bound) or model (research: its rotational stiffness from the grasp's compliance model, preloaded "
+                         "with the contacts' wrench; docs/capacity.md)");
     command_->add_option("--hand-back", o.handBack,
                          "approx: the state full contact takes the object back in at a compliance-trigger release: engaged "
                          "(default: as the constraint held it) or deflected (object and finger joints deflected as the "
@@ -247,7 +252,7 @@ CapacityCommand::Plan CapacityCommand::makePlan() const {
     plan.capsuleContact = parseCapsuleContactOption(o.capsuleContact, plan.simulation.contact);
     plan.simulation.mode = simulation::parseSimulationMode(o.mode, "--mode");
     checkApproxOnlyOptions(*command_, o.mode, {"--constraint", "--attach", "--release-slide", "--release-penetration", "--q-minimum",
-                                               "--limits-friction", "--limits", "--release-at", "--release-give", "--hand-back"});
+                                               "--limits-friction", "--limits", "--release-at", "--release-give", "--hand-back", "--bushing-give"});
     plan.simulation.accuracy = parseAccuracy(o.accuracy);
     plan.simulation.integrator = simulation::parseIntegratorChoice(o.integrator, "--integrator");
     plan.simulation.stepSize = parseStepSize(o.stepSize);
@@ -266,6 +271,7 @@ CapacityCommand::Plan CapacityCommand::makePlan() const {
     plan.simulation.approx.releaseTrigger = simulation::parseApproxReleaseTrigger(o.releaseAt, "--release-at");
     plan.simulation.approx.releaseGive = parseReleaseGive(o.releaseGive);
     plan.simulation.approx.handBack = simulation::parseApproxHandBack(o.handBack, "--hand-back");
+    plan.simulation.approx.bushingGive = simulation::parseApproxBushingGive(o.bushingGive, "--bushing-give");
     if (o.method != "ramp" && o.method != "bisection" && o.method != "constant" && o.method != "compliance") {
         throw InputError("--method: value '" + o.method + "' is not accepted; use ramp, bisection, constant or compliance");
     }

@@ -46,6 +46,7 @@ struct SimulateCommand::Options {
     std::string releaseAt = "auto";
     std::string releaseGive;
     std::string handBack = "engaged";
+    std::string bushingGive = "stiff";
     std::string ramp, rampRate;
     bool rampTorque = false;
     std::string out = "out";
@@ -97,6 +98,10 @@ SimulateCommand::SimulateCommand(CLI::App& app) : options_(std::make_shared<Opti
                          "approx: the compliance release trigger's onset: hand the object back once the grasp's "
                          "compliance model says full contact would have let it give this far at the grasp goals, m "
                          "(default 0.002, the model's slip onset)");
+    command_->add_option("--bushing-give", o.bushingGive,
+                         "approx: how the merged bushing gives under a load: stiff (default: stiffened for the penetration "
+                         "bound) or model (research: its rotational stiffness from the grasp's compliance model, preloaded "
+                         "with the contacts' wrench; docs/capacity.md)");
     command_->add_option("--hand-back", o.handBack,
                          "approx: the state full contact takes the object back in at a compliance-trigger release: engaged "
                          "(default: as the constraint held it) or deflected (object and finger joints deflected as the "
@@ -147,7 +152,7 @@ simulation::SimulationOptions SimulateCommand::parseOptions() const {
     parseCapsuleContactOption(o.capsuleContact, options.contact);
     options.mode = simulation::parseSimulationMode(o.mode, "--mode");
     checkApproxOnlyOptions(*command_, o.mode,
-                           {"--constraint", "--attach", "--q-threshold", "--q-minimum", "--limits", "--release-at", "--release-give", "--hand-back"});
+                           {"--constraint", "--attach", "--q-threshold", "--q-minimum", "--limits", "--release-at", "--release-give", "--hand-back", "--bushing-give"});
     options.duration = parsePositiveNumber(o.duration, "--duration", "s").value_or(0);  // 0: the scenario's
     options.integrator = simulation::parseIntegratorChoice(o.integrator, "--integrator");
     options.accuracy = parseAccuracy(o.accuracy);
@@ -160,6 +165,7 @@ simulation::SimulationOptions SimulateCommand::parseOptions() const {
     options.approx.releaseTrigger = simulation::parseApproxReleaseTrigger(o.releaseAt, "--release-at");
     options.approx.releaseGive = parseReleaseGive(o.releaseGive);
     options.approx.handBack = simulation::parseApproxHandBack(o.handBack, "--hand-back");
+    options.approx.bushingGive = simulation::parseApproxBushingGive(o.bushingGive, "--bushing-give");
     if (options.approx.qThreshold > 0 && options.approx.qMinimum >= options.approx.qThreshold) {
         throw InputError("--q-minimum: value " + o.qMinimum + " is not accepted; Q_M must be below --q-threshold " + o.qThreshold);
     }
@@ -252,6 +258,9 @@ results::RunProvenance makeRunProvenance(const std::vector<std::string>& command
         run.run["limits"] = grasp::toString(options.approx.limitModel);
         run.run["release_at"] = simulation::toString(simulation::resolveApproxOptions(options.approx, scenario.approximation).releaseTrigger);
         if (options.approx.handBack != simulation::ApproxHandBack::Engaged) run.run["hand_back"] = simulation::toString(options.approx.handBack);
+        if (options.approx.bushingGive != simulation::ApproxBushingGive::Stiff) {
+            run.run["bushing_give"] = simulation::toString(options.approx.bushingGive);
+        }
     }
     return run;
 }

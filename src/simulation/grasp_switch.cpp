@@ -1,6 +1,7 @@
 #include "graspsim/simulation/grasp_switch.h"
 
 #include "graspsim/error.h"
+#include "graspsim/simulation/bushing_give.h"
 #include "graspsim/grasp/limited_bushing_law.h"
 #include "graspsim/simulation/compliance_release.h"
 #include "graspsim/simulation/contact_grasp_quality.h"
@@ -354,12 +355,17 @@ void GraspSwitch::engage(SimTK::State& state, double quality, const std::vector<
     }
     engagement.leverArm = findLeverArm(reports, p_GM);
     engagement.penetrationBound = options_.maxEngagedPenetration;
+    if (options_.bushingGive == ApproxBushingGive::Model) setModelGive(context_, state, reports, p_GM, engagement);
     for (int k = 0; k < 6; ++k) engagement.lockedAxes[k] = !(*options_.relaxedAxes)[k];
     context_.contacts.setPairsEnabled(state, context_.contacts.findAllPairIndices(), false);  // (b)
     setFingersMerged(state, true);                                                        // (c)
     context_.attachment.engage(state, engagement);                                                // (d)
     const SimTK::Transform X_HO = ~context_.palm.getBodyTransform(state) * context_.object.getBodyTransform(state);
     std::string text = describeEngagement(qThreshold, engagement);
+    if (engagement.stiffness) {
+        const SimTK::Vec6& k = *engagement.stiffness;
+        text += format("; rotational stiffness from the compliance model %.6g", k[0]) + format(" %.6g", k[1]) + format(" %.6g N m/rad", k[2]);
+    }
     // As --limits compliance computes them (static friction unless told otherwise, M at O's origin
     // with O's orientation), whatever the constraint's own limits are; at the first engagement
     // only, on the unloaded grasp, and kept for the run.

@@ -78,6 +78,14 @@ ApproxHandBack parseApproxHandBack(const std::string& text, const std::string& s
 
 std::string toString(ApproxHandBack handBack) { return handBack == ApproxHandBack::Engaged ? "engaged" : "deflected"; }
 
+ApproxBushingGive parseApproxBushingGive(const std::string& text, const std::string& source) {
+    if (text == "stiff") return ApproxBushingGive::Stiff;
+    if (text == "model") return ApproxBushingGive::Model;
+    throw InputError(source + ": bushing give '" + text + "' is not accepted; use stiff or model");
+}
+
+std::string toString(ApproxBushingGive give) { return give == ApproxBushingGive::Stiff ? "stiff" : "model"; }
+
 std::string toString(SimulationMode mode) { return mode == SimulationMode::Full ? "full" : "approx"; }
 
 void checkApproxAttach(const scenario::Scenario& scenario, const SimulationOptions& options) {
@@ -175,6 +183,11 @@ ApproxOptions resolveApproxOptions(const ApproxOptions& given, const scenario::A
     if (options.handBack == ApproxHandBack::Deflected && options.releaseTrigger != ApproxReleaseTrigger::Compliance) {
         throw InputError("--hand-back: 'deflected' needs the compliance release trigger (--release-at compliance, or auto "
                          "on the merged bushing); this run's is " + toString(options.releaseTrigger));
+    }
+    const bool mergedBushing = options.constraint == ApproxConstraint::Bushing && options.attach == ApproxAttach::Merged;
+    if (options.bushingGive == ApproxBushingGive::Model && !mergedBushing) {
+        throw InputError("--bushing-give: 'model' needs the merged bushing (--constraint bushing --attach merged); this run's is " +
+                         toString(options.constraint) + " " + toString(options.attach));
     }
     if (options.qThreshold > 0 && options.qMinimum >= options.qThreshold) {
         char text[160];

@@ -75,6 +75,15 @@ enum class ApproxHandBack {
     Deflected
 };
 
+/// How the merged bushing gives under a load while engaged.
+enum class ApproxBushingGive {
+    Stiff,  ///< stiffened so that its deflection at its limits sinks no fingertip past the bound (the default)
+    /// its rotational stiffness from the grasp's compliance model, rolling included (bushing_give.h),
+    /// and preloaded with the contacts' wrench at engagement: the object turns in the palm under a
+    /// load as the model says full contact's would; the translations stay stiff. Bushing and merged only.
+    Model
+};
+
 /// Settings of the grasp switch of `--mode approx` (thesis Figure 4.1; see grasp_switch.h).
 /// Defaults are this project's choices, documented where they are used.
 struct ApproxOptions {
@@ -140,6 +149,9 @@ struct ApproxOptions {
     /// The state full contact starts from at a compliance-trigger release (Engaged, the default;
     /// Deflected needs the compliance trigger).
     ApproxHandBack handBack = ApproxHandBack::Engaged;
+    /// How the merged bushing gives under a load (Stiff, the default; Model: docs/capacity.md,
+    /// "The bushing's rotational give").
+    ApproxBushingGive bushingGive = ApproxBushingGive::Stiff;
 };
 
 /// ApproxOptions::releaseGive's default (m): the model's slip onset, the capacity protocol's 2 mm.
@@ -186,6 +198,9 @@ std::string toString(ApproxReleaseTrigger trigger);
 /// Parses "engaged" or "deflected". @throws graspsim::InputError naming `source`, the value and the choices.
 ApproxHandBack parseApproxHandBack(const std::string& text, const std::string& source);
 std::string toString(ApproxHandBack handBack);
+/// Parses "stiff" or "model". @throws graspsim::InputError naming `source`, the value and the choices.
+ApproxBushingGive parseApproxBushingGive(const std::string& text, const std::string& source);
+std::string toString(ApproxBushingGive give);
 
 /// Whether the scene of `scenario` supports `options.approx.attach` in approx mode: multi needs
 /// the bushing realization, and every goal end-effector on a body with contact geometry; and
