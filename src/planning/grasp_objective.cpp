@@ -1,5 +1,7 @@
 #include "grasp_objective.h"
 
+#include "object_extents.h"
+
 #include "graspsim/contact/shape_contact.h"
 #include "graspsim/contact/surface_point.h"
 #include "graspsim/grasp/grasp_quality.h"
@@ -103,24 +105,6 @@ SimTK::Vec3 findNormalsMeet(const std::vector<SimTK::Vec3>& p, const std::vector
     return A.invert() * b;
 }
 
-// Half of the shape's extent along each of its frame's axes (m): a box's half-lengths, an
-// ellipsoid's semi-axes, and for a convex mesh the same measured through its surface (support
-// points far out along +-x, y, z), so that a mesh of a box starts where that box does. 0 for the
-// other shapes, which start otherwise.
-SimTK::Vec3 findHalfExtents(const contact::ContactShape& shape) {
-    if (shape.type == contact::ContactShape::Type::Box) return shape.halfLengths;
-    if (shape.type == contact::ContactShape::Type::Ellipsoid) return shape.semiAxes;
-    if (shape.type != contact::ContactShape::Type::ConvexMesh) return SimTK::Vec3(0);
-    const double far = 100;  // m, as calcObjectWidth: the support error is below 1e-4 m
-    SimTK::Vec3 halfExtents(0);
-    for (int k = 0; k < 3; ++k) {
-        const SimTK::Vec3 u = SimTK::Vec3(k == 0, k == 1, k == 2);
-        halfExtents[k] = far - (contact::findSurfacePoint(shape, far * u).distance +
-                                contact::findSurfacePoint(shape, -far * u).distance) / 2;
-    }
-    return halfExtents;
-}
-
 // S's orientation in G with its thinnest axis (of `halfExtents`) along the squeeze and its
 // longest along `out` (made perpendicular to the squeeze), right-handed.
 SimTK::Rotation alignThinnestWithSqueeze(const SimTK::Vec3& halfExtents, const SimTK::UnitVec3& squeeze,
@@ -138,25 +122,6 @@ SimTK::Rotation alignThinnestWithSqueeze(const SimTK::Vec3& halfExtents, const S
 }
 
 }  // namespace
-
-double calcObjectWidth(const contact::ContactShape& shape) {
-    const double far = 100;  // m: the support error is (extent^2)/(2 far), below 1e-4 m
-    double width = SimTK::Infinity;
-    const int n = 400;  // Fibonacci sphere (half of it: each direction is paired with its opposite)
-    for (int i = 0; i < n; ++i) {
-        const double z = 1 - (i + 0.5) / n, r = std::sqrt(1 - z * z), phi = i * 2.399963229728653;
-        const SimTK::Vec3 u(r * std::cos(phi), r * std::sin(phi), z);
-        const double d1 = contact::findSurfacePoint(shape, far * u).distance;
-        const double d2 = contact::findSurfacePoint(shape, -far * u).distance;
-        width = std::min(width, 2 * far - d1 - d2);
-    }
-    for (int k = 0; k < 3; ++k) {
-        const SimTK::Vec3 u = SimTK::Vec3(k == 0, k == 1, k == 2);
-        width = std::min(width, 2 * far - contact::findSurfacePoint(shape, far * u).distance -
-                                    contact::findSurfacePoint(shape, -far * u).distance);
-    }
-    return width;
-}
 
 GraspObjective::GraspObjective(const GraspRequest& request, const GraspTemplate& graspTemplate)
     : m_request(request), m_template(graspTemplate), m_arm(model::buildBodyModel(request.bodyOptions)),
@@ -231,7 +196,7 @@ void GraspObjective::placeObjectAtStart() {
     if (shape.type == contact::ContactShape::Type::Capsule || shape.type == contact::ContactShape::Type::Cylinder) {
         // the long axis across the fingers, along the hand's radial axis z_H
         R_GS.setRotationFromOneAxis(R_GH.z(), SimTK::ZAxis);
-    } else if (const SimTK::Vec3 halfExtents = findHalfExtents(shape); halfExtents != SimTK::Vec3(0)) {
+    } else if (const SimTK::Vec3 halfExtents = findObjectExtents(shape).halfExtents; halfExtents != SimTK::Vec3(0)) {
         // thinnest axis along the squeeze (thumb pad to the other pads), longest out of the hand.
         // A mesh and an ellipsoid too: left unturned, a mesh of the phone started edge-on to the
         // pads and its optimum put both pads on edges, where a press along the edge normal goes
@@ -437,6 +402,26 @@ GraspPlan GraspObjective::makePlan(const double* x) const {
     plan.X_GO = findObjectPose(x);
     for (const Pad& pad : m_pads) plan.goalEffectors.push_back(pad.effector);
     return plan;
+}
+
+std::vector<double> GraspObjective::findVariables(const std::map<std::string, double>& angles,
+                                                 const SimTK::Transform& X_GO) const {
+    std::vector<double> x = m_start;
+    const auto& joints = m_arm.getModel().joints;
+    for (size_t k = 0; k < m_freeJoints.size(); ++k) {
+        const auto angle = angles.find(joints[m_freeJoints[k]].name);
+        if (angle != angles.end()) x[k] = angle->second;
+    }
+    // findObjectPose's inverse: X_GO = (R(w) R_GO0, p_GO0 + offset).
+    double* placement = x.data() + m_freeJoints.size();
+    const SimTK::Vec3 offset = X_GO.p() - m_X_GO0.p();
+    for (int i = 0; i < 3; ++i) placement[i] = offset[i];
+    if (m_rotates) {
+        const SimTK::Vec4 angleAxis = (X_GO.R() * ~m_X_GO0.R()).convertRotationToAngleAxis();
+        for (int i = 0; i < 3; ++i) placement[3 + i] = angleAxis[0] * angleAxis[1 + i];
+    }
+    for (size_t k = 0; k < x.size(); ++k) x[k] = std::clamp(x[k], m_lower[k], m_upper[k]);
+    return x;
 }
 
 std::vector<SimTK::Transform> GraspObjective::calcBodyPoses(const std::map<std::string, double>& angles) const {

@@ -50,6 +50,10 @@ public:
     double evaluate(const double* x);
     // The plan at variables x: joint angles, object pose, goals (not rounded, no diagnostics).
     GraspPlan makePlan(const double* x) const;
+    // The variables of joint angles (rad, by name; a finger joint not named keeps its start) and
+    // object pose X_GO: makePlan's inverse, clamped to the bounds. A plan made for another shape of
+    // the same object (its smooth stand-in) as a start for this one.
+    std::vector<double> findVariables(const std::map<std::string, double>& angles, const SimTK::Transform& X_GO) const;
     // The checks' numbers for joint angles (rad, by name; missing = 0) and object pose X_GO.
     PlanDiagnostics calcDiagnostics(const std::map<std::string, double>& angles, const SimTK::Transform& X_GO) const;
     // The surface point (in O) nearest each goal pad, rounded to 0.1 mm, for joint angles and X_GO.
@@ -101,9 +105,5 @@ private:
     std::string m_spanName;
     std::vector<SimTK::Transform> m_X_GB;           // scratch
 };
-
-// The object's thinnest width (m): the least distance between two parallel planes holding it,
-// over a fixed set of directions, from signed distances to far points (findSurfacePoint).
-double calcObjectWidth(const contact::ContactShape& shape);
 
 }  // namespace graspsim::planning

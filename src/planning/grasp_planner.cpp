@@ -1,6 +1,7 @@
 #include "graspsim/planning/grasp_planner.h"
 
 #include "grasp_objective.h"
+#include "object_extents.h"
 
 #include "graspsim/anthropometry/units.h"
 #include "graspsim/contact/surface_point.h"
@@ -178,6 +179,41 @@ GraspPlan optimizeReachable(const GraspRequest& request, const PlanTolerances& t
     return plan;
 }
 
+// A plan of a shape with edges (a box, a convex mesh) that fails a check is made again from the
+// optimum of the shape's smooth stand-in, the ellipsoid of its extents (object_extents.h),
+// optimized from the same start; kept, with its objective and variables, if it passes every check.
+// A plan that passes stays as it was (the shipped key-lateral.yaml is such a box).
+//
+// Why: the surface normal jumps at an edge, and a segment crossing one is pushed out through one
+// face or the other, so the cost has creases along the edges that BOBYQA's quadratic models do
+// not see. A start that must turn the object far meets them: the lateral template's thumb pad and
+// index side sit side by side (the line between them 77 deg off the directions they face), so a
+// flat object starts across both digits, and its grasp lies about 100 deg away. The 70 x 140 x
+// 8 mm box stopped with both pads on one of its edges (cost 665, the index's side 8.3 mm off),
+// where the ellipsoid of its half-lengths turns through to a pinch (cost 3.5); from that pinch the
+// box's own optimum costs 5.2 and holds.
+void replanThroughSmoothStandIn(const GraspRequest& request, const PlanTolerances& tolerances,
+                                const GraspTemplate& graspTemplate, GraspObjective& objective,
+                                std::vector<double>& x, GraspPlan& plan, int& evaluations) {
+    if (!hasEdges(request.shape) || findFailedCheck(plan.diagnostics, tolerances).empty()) return;
+    const SmoothStandIn standIn = findSmoothStandIn(request.shape);
+    GraspRequest smooth = request;
+    smooth.shape = standIn.shape;
+    smooth.X_OS = request.X_OS * standIn.X_SE;
+    GraspObjective smoothObjective(smooth, graspTemplate);
+    std::vector<double> start = smoothObjective.getStart();
+    evaluations += optimize(smoothObjective, start);
+    const GraspPlan smoothPlan = smoothObjective.makePlan(start.data());
+
+    GraspObjective fresh(request, graspTemplate);  // the first search's re-aimed pad gaps left behind
+    std::vector<double> y = fresh.findVariables(smoothPlan.jointAngles, smoothPlan.X_GO);
+    const GraspPlan replanned = optimizeReachable(request, tolerances, fresh, y, evaluations);
+    if (!findFailedCheck(replanned.diagnostics, tolerances).empty()) return;
+    plan = replanned;
+    x = y;
+    objective = fresh;
+}
+
 // The press depth (m) that leaves every goal finger at least half the requested press while the
 // object is held (its steady press, against the passive springs): the requested one raised by
 // what the weakest finger lacks, rounded up to 0.1 mm, at most by half, and never past a quarter
@@ -228,6 +264,7 @@ GraspPlan planGrasp(const GraspRequest& givenRequest, const PlanTolerances& tole
     std::vector<double> x = objective.getStart();
     int evaluations = 0;
     GraspPlan plan = optimizeReachable(request, tolerances, objective, x, evaluations);
+    replanThroughSmoothStandIn(request, tolerances, graspTemplate, objective, x, plan, evaluations);
     if (plan.goalEffectors.size() >= 3 && findWeakestReleasedPress(plan.diagnostics) < request.pressDepth / 2) {
         // A finger the release would leave with less than half the press: planned again, from
         // the template's start, with the release term in the cost (from the first plan's

@@ -18,7 +18,10 @@
 ///     segment within clearance of the object (contact::findContacts) and a small pull toward the
 ///     start pose.
 ///  4. Goals are the surface points nearest each pad (contact::findSurfacePoint). The plan is
-///     checked (PlanDiagnostics); a plan failing a check is refused with NoGraspError.
+///     checked (PlanDiagnostics); a plan failing a check is refused with NoGraspError, except
+///     that a box or convex mesh is first planned again from the optimum of its smooth stand-in
+///     (the ellipsoid of its extents, optimized from the same start: a box's edges stop the
+///     optimizer where the ellipsoid turns through), and that plan kept if it passes.
 /// The object is handled only through contact::findSurfacePoint and contact::findContacts, so
 /// every shape the contact layer knows can be planned for.
 ///
