@@ -1,5 +1,7 @@
 #include "graspsim/model/model_description.h"
 
+#include "simbody_mass_properties.h"
+
 #include "graspsim/error.h"
 #include "graspsim/model/geometry_inertia.h"
 
@@ -102,6 +104,7 @@ void validateBody(const std::string& source, const Body& body) {
         if (!std::isfinite(c)) fail(source, "link '" + body.name + "' centre of mass", describe(c), "must be finite");
     }
     validateInertia(source, body);
+    checkMassPropertiesForSimbody(source, body);
     for (const Geometry& g : body.geometry) {
         const std::string field = "link '" + body.name + "' geometry '" + g.name + "'";
         const bool needsRadius = g.type == Geometry::Type::Sphere || g.type == Geometry::Type::Capsule ||

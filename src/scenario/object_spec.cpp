@@ -134,7 +134,9 @@ double ObjectSpec::findHalfThickness() const {
     return 0;
 }
 
-model::ModelDescription buildObjectModel(const ObjectSpec& object) {
+namespace {
+
+model::ModelDescription buildShapeModel(const ObjectSpec& object) {
     switch (object.shape) {
         case ObjectShape::Sphere: return model::buildBallModel(object.mass, object.radius);
         case ObjectShape::Box: return model::buildPhoneModel(object.mass, object.size);
@@ -145,6 +147,19 @@ model::ModelDescription buildObjectModel(const ObjectSpec& object) {
             return model::buildMeshModel(object.mass, *object.meshData, object.mesh, object.meshScale);
     }
     return {};
+}
+
+}  // namespace
+
+model::ModelDescription buildObjectModel(const ObjectSpec& object) {
+    // The builders name their bodies for the thesis's objects ("phone" for any box, "ball" for any
+    // sphere) and their geometry after themselves ("mesh_shape"); a scenario's object is none of
+    // those but the scenario's `object`, so contacts.csv names it the same way whatever its shape.
+    model::ModelDescription model = buildShapeModel(object);
+    model::Body& body = model.bodies.at(0);
+    model.name = body.name = kObjectBodyName;
+    body.geometry.at(0).name = toString(object.shape);
+    return model;
 }
 
 }  // namespace graspsim::scenario

@@ -15,13 +15,6 @@ namespace graspsim::system {
 /// p_BCm (m) and the central inertia shifted to the body origin (kg m^2), all in B.
 SimTK::MassProperties calcMassPropertiesAboutOrigin(const model::Body& body);
 
-/// Checks that Simbody will accept `body`'s mass properties. Simbody keeps the inertia about the
-/// body origin and recovers the central inertia from it when the topology is realized; a mass
-/// centre far from the origin next to the body's size cancels the central inertia away in
-/// rounding, and Simbody then stops with an error trace. Massless bodies pass.
-/// @throws graspsim::InputError, starting with `what`, naming the mass, p_BCm and the limit.
-void checkMassPropertiesForSimbody(const model::Body& body, const std::string& what);
-
 /// Rotation R_JF of a mobilizer frame F whose `mobilizerAxis` (z for a pin, x for a slider)
 /// lies along `axis_J`, the joint axis in the joint frame J.
 SimTK::Rotation calcAxisAlignedRotation(const model::Vec3& axis_J,

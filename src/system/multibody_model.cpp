@@ -26,8 +26,8 @@ decltype(auto) callSimbody(const std::string& context, Call&& call) {
 MultibodyModel::MultibodyModel(const model::ModelDescription& description,
                                const SystemOptions& options)
     : description_(description), options_(options), matter_(system_), forces_(system_) {
-    description_.validate("model '" + description_.name + "'");  // also a joint that moves only massless bodies
-    for (const model::Body& body : description_.bodies) checkMassPropertiesForSimbody(body, describe("link '" + body.name + "'"));
+    // Also a joint that moves only massless bodies, and mass properties Simbody cannot hold.
+    description_.validate("model '" + description_.name + "'");
     callSimbody(describe("gravity"),
                 [&] { gravity_ = SimTK::Force::Gravity(forces_, matter_, options_.gravity); });
     addBodies();

@@ -73,8 +73,6 @@ std::string findFinger(const std::string& body) {
     return "";
 }
 
-std::string getObjectName(const scenario::Scenario& s) { return scenario::buildObjectModel(s.object).bodies.at(0).name; }
-
 // Bodies drawn: every hand/arm body with geometry, then the object (last).
 Json makeBodies(const ResultRecord& record, std::vector<std::size_t>& drawn) {
     Json bodies = Json::array();
@@ -106,7 +104,6 @@ Json makePoses(const ResultRecord& record, const std::vector<std::size_t>& drawn
 
 // Per frame, every contact as [x, y, z, force on the object x, y, z, finger] (ground, m, N).
 Json makeContacts(const ResultRecord& record) {
-    const std::string object = getObjectName(record.scenario);
     Json frames = Json::array();
     std::size_t c = 0;
     for (const TrajectoryRow& row : record.trajectory) {
@@ -114,13 +111,16 @@ Json makeContacts(const ResultRecord& record) {
         for (; c < record.contacts.size() && record.contacts[c].time <= row.time; ++c) {
             const ContactRow& k = record.contacts[c];
             if (k.time < row.time) continue;
-            // contacts.csv gives the force on b; the arrows show the force on the object.
-            const double sign = k.bodyB == object ? 1.0 : -1.0;
+            // contacts.csv gives the force on b; the arrows show the force on the object. The object is
+            // the side that is not a body of model.urdf, so folders that named it otherwise (before it
+            // was "object" in every scenario) still show it the right way round.
+            const bool objectIsB = record.model.findBody(k.bodyB) == nullptr;
+            const double sign = objectIsB ? 1.0 : -1.0;
             model::Vec3 f;
             for (int i = 0; i < 3; ++i) f[i] = sign * (k.normalForce * k.n_G[i] + k.friction_G[i]);
             Json entry = toJson(k.p_G);
             for (double v : f) entry.push_back(round6(v));
-            entry.push_back(findFinger(k.bodyB == object ? k.bodyA : k.bodyB));
+            entry.push_back(findFinger(objectIsB ? k.bodyA : k.bodyB));
             contacts.push_back(entry);
         }
         frames.push_back(contacts);

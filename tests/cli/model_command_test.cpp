@@ -110,6 +110,31 @@ TEST_F(ModelCommand, AJointMovingOnlyMasslessLinksIsNamedWithItsFile) {
     EXPECT_EQ(r.out, "");
 }
 
+// An inertia that passes import's checks (the triangle inequality within 1e-6 of the trace) but not
+// Simbody's (within sqrt(eps) of it) is named with its file too, its link, field and values; it
+// used to name the robot: "model 'tiny': link 'plate' mass 100 kg with its mass centre at (0, 0, 0) m
+// ... diagonal (50, 50, 100) kg m^2, breaks its rules", the offending 100.00001 rounded away.
+TEST_F(ModelCommand, AnInertiaSimbodyRefusesIsNamedWithItsFile) {
+    const std::string file = write("plate.urdf",
+        "<robot name='tiny'><link name='plate'><inertial><mass value='100'/>"
+        "<inertia ixx='50' iyy='50' izz='100.00001' ixy='0' ixz='0' iyz='0'/></inertial></link></robot>");
+    const RunResult r = run("model info " + file);
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_EQ(r.err, "graspsim: " + file + ": link 'plate' inertia = [50 50 100.00001 0 0 0] kg m^2 is not accepted; "
+                     "Simbody accepts a central inertia whose moments are >= 0, each at most the sum of the other two "
+                     "and at least 2 |the product of the other two axes| (ixx >= 2 |iyz|), all within 1.49e-06 kg m^2; "
+                     "here izz exceeds ixx + iyy by 1e-05 kg m^2\n");
+    EXPECT_EQ(r.out, "");
+    const std::string far = write("far.urdf",
+        "<robot name='tiny'><link name='ball'><inertial><origin xyz='0 0 5'/><mass value='2e11'/>"
+        "<inertia ixx='1.62e-4' iyy='1.62e-4' izz='1.62e-4' ixy='0' ixz='0' iyz='0'/></inertial></link></robot>");
+    const RunResult f = run("model info " + far);
+    EXPECT_EQ(f.exitCode, 2);
+    EXPECT_EQ(f.err.rfind("graspsim: " + far + ": link 'ball' centre of mass = (0, 0, 5) m is not accepted; ", 0), 0u)
+        << f.err;
+    EXPECT_EQ(std::count(f.err.begin(), f.err.end(), '\n'), 1) << f.err;
+}
+
 TEST_F(ModelCommand, UnwritableOutputLeavesNothing) {
     const RunResult r = run("model build -o /nonexistent-graspsim-dir/arm.urdf");
     EXPECT_EQ(r.exitCode, 2);

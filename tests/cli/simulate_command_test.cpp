@@ -103,6 +103,43 @@ TEST_F(SimulateCommand, ShortRunWritesTheSummary) {
     EXPECT_EQ(b.out.find("mm after settling"), std::string::npos) << b.out;
 }
 
+// contacts.csv names the object as the scenario does, whatever its shape: body_b is "object" and
+// shape_b the scenario's shape. The same phone given as a box and as a mesh (box.stl scaled to the
+// phone's size), and the ball: before, "phone,phone_box" (any box, a key as well), "mesh,mesh_shape"
+// and "ball,ball_sphere".
+TEST_F(SimulateCommand, ContactsNameTheObjectAsTheScenarioDoesWhateverItsShape) {
+    std::string phoneMesh = slurp(fs::path(GRASPSIM_SOURCE_DIR) / "models/scenarios/phone-pinch.yaml");
+    for (const auto& [from, to] : {std::pair<std::string, std::string>{"shape: box", "shape: mesh"},
+                                   {"size: [0.070, 0.140, 0.008]", "mesh: " GRASPSIM_TEST_DATA_DIR "/meshes/box.stl\n"
+                                                                   "  scale: [1.75, 2.3333333333333335, 0.4]"}}) {
+        const std::size_t at = phoneMesh.find(from);
+        ASSERT_NE(at, std::string::npos) << from;
+        phoneMesh.replace(at, from.size(), to);
+    }
+    const std::string meshScenario = write("phone_mesh.yaml", phoneMesh);
+    for (const auto& [scenario, shape] : {std::pair<std::string, std::string>{"phone-pinch", "box"},
+                                          {meshScenario, "mesh"},
+                                          {"ball-clutch", "sphere"}}) {
+        const std::string out = (dir_ / shape).string();
+        const RunResult r = run("simulate " + scenario + " --duration 0.1 -q --out " + out);
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        std::istringstream contacts(slurp(fs::path(out) / "contacts.csv"));
+        std::string line;
+        std::getline(contacts, line);
+        ASSERT_EQ(line.rfind("time_s,body_a,shape_a,body_b,shape_b,", 0), 0u) << line;
+        int rows = 0;
+        for (; std::getline(contacts, line); ++rows) {
+            std::vector<std::string> fields;
+            std::istringstream row(line);
+            for (std::string field; fields.size() < 5 && std::getline(row, field, ',');) fields.push_back(field);
+            ASSERT_EQ(fields.size(), 5u) << line;
+            EXPECT_EQ(fields[3], "object") << scenario << ": " << line;
+            EXPECT_EQ(fields[4], shape) << scenario << ": " << line;
+        }
+        EXPECT_GT(rows, 0) << scenario << ": the fingers reach the object within 0.1 s";
+    }
+}
+
 // With --view the run's result comes first, where a reader looks (and the approximation's line
 // after it in approx mode); the last line points at the replay the run wrote.
 TEST_F(SimulateCommand, WithViewTheResultComesFirstAndTheReplayLineLast) {

@@ -132,6 +132,29 @@ TEST(ModelDescription, AMovableJointThatMovesOnlyMasslessLinksIsRejected) {
     EXPECT_EQ(messageOf(m), "") << "the massless arm carries the hand";
 }
 
+// Mass properties that pass the rigid-body checks (the triangle inequality within 1e-6 of the trace,
+// which a plate written to six digits needs) but not Simbody's tighter ones are refused here, naming
+// the source (the URDF file) rather than leaving it to MultibodyModel, which knows only the model's name.
+TEST(ModelDescription, MassPropertiesSimbodyCannotHoldAreRejectedNamingTheSource) {
+    ModelDescription plate = twoLinks();
+    plate.bodies[1].mass = 100;
+    plate.bodies[1].inertia = {50, 50, 100.00001};
+    EXPECT_EQ(messageOf(plate),
+              "test.urdf: link 'arm' inertia = [50 50 100.00001 0 0 0] kg m^2 is not accepted; Simbody accepts a central "
+              "inertia whose moments are >= 0, each at most the sum of the other two and at least 2 |the product of the "
+              "other two axes| (ixx >= 2 |iyz|), all within 1.49e-06 kg m^2; here izz exceeds ixx + iyy by 1e-05 kg m^2");
+    ModelDescription far = twoLinks();
+    far.bodies[1].mass = 2e11;
+    far.bodies[1].p_BCm = {0, 0, 5};
+    far.bodies[1].inertia = {1.62e-4, 1.62e-4, 1.62e-4};
+    EXPECT_EQ(messageOf(far),
+              "test.urdf: link 'arm' centre of mass = (0, 0, 5) m is not accepted; with mass 2e+11 kg, m |p|^2 = 5e+12 kg m^2 "
+              "swamps the central inertia (trace 0.000486 kg m^2) when Simbody shifts it to the link origin; accepted: "
+              "m |p|^2 below 4.19e+06 kg m^2 (put the link origin nearer the mass centre)");
+    plate.bodies[1].inertia.zz = 100;  // a plate exactly flat
+    EXPECT_EQ(messageOf(plate), "");
+}
+
 TEST(ModelDescription, DuplicateNamesAreRejected) {
     ModelDescription m = twoLinks();
     m.bodies[1].name = "base";

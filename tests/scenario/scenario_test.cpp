@@ -1,10 +1,16 @@
 #include "graspsim/scenario/scenario.h"
 
 #include "graspsim/anthropometry/subject.h"
+#include "graspsim/model/mesh_file.h"
+#include "graspsim/model/triangle_mesh.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
 
 using namespace graspsim;
 using namespace graspsim::scenario;
@@ -135,6 +141,37 @@ TEST(ObjectSpec, ModelIsTheObjectBuilderWithTheSpecsMassAndSize) {
     const model::ModelDescription box = buildObjectModel(makeBox({0.05, 0.1, 0.02}));
     EXPECT_DOUBLE_EQ(box.bodies.at(0).mass, 0.1);
     expectNear(box.bodies[0].geometry.at(0).halfLengths, {0.025, 0.05, 0.01}, 1e-17);
+}
+
+// contacts.csv names the object by these: the body is "object" and its geometry is named after the
+// scenario's shape, for every shape (not "phone" for any box, "ball" for any sphere, "mesh" and
+// "mesh_shape" for a mesh, as the thesis builders name theirs).
+TEST(ObjectSpec, ModelIsNamedObjectWithItsGeometryNamedAfterTheShape) {
+    ObjectSpec cylinder = makeSphere(0.03);
+    cylinder.shape = ObjectShape::Cylinder;
+    cylinder.length = 0.1;
+    ObjectSpec capsule = cylinder;
+    capsule.shape = ObjectShape::Capsule;
+    ObjectSpec ellipsoid = makeSphere(0);
+    ellipsoid.shape = ObjectShape::Ellipsoid;
+    ellipsoid.semiAxes = {0.05, 0.04, 0.03};
+    ObjectSpec mesh = makeSphere(0);
+    mesh.shape = ObjectShape::Mesh;
+    mesh.mesh = "box.stl";
+    mesh.meshData = std::make_shared<const model::TriangleMesh>(
+        model::readMeshFile(GRASPSIM_TEST_DATA_DIR "/meshes/box.stl", {1, 1, 1}, "test"));
+    const std::vector<std::pair<ObjectSpec, std::string>> objects{
+        {makeSphere(0.05), "sphere"}, {makeBox({0.07, 0.14, 0.008}), "box"}, {cylinder, "cylinder"},
+        {capsule, "capsule"},         {ellipsoid, "ellipsoid"},             {mesh, "mesh"}};
+    for (const auto& [object, shape] : objects) {
+        const model::ModelDescription m = buildObjectModel(object);
+        EXPECT_EQ(m.name, "object") << shape;
+        ASSERT_EQ(m.bodies.size(), 1u) << shape;
+        EXPECT_EQ(m.bodies[0].name, "object") << shape;
+        ASSERT_EQ(m.bodies[0].geometry.size(), 1u) << shape;
+        EXPECT_EQ(m.bodies[0].geometry[0].name, shape);
+        EXPECT_NO_THROW(m.validate("test")) << shape;
+    }
 }
 
 TEST(Perturbation, ActsFromStartUntilStartPlusDuration) {

@@ -52,9 +52,14 @@ void realizeInSimbody(const model::Body& body) {
     system.realizeTopology();
 }
 
+// Simbody's rules are part of ModelDescription::validate (so that a URDF breaking them is refused
+// naming its file): a one-link model, validated as MultibodyModel does.
 std::string rejectionOf(const model::Body& body) {
+    model::ModelDescription m;
+    m.name = "m";
+    m.bodies.push_back(body);
     try {
-        checkMassPropertiesForSimbody(body, "model 'm': link '" + body.name + "'");
+        m.validate("model 'm'");
     } catch (const InputError& e) {
         return e.what();
     }
@@ -68,7 +73,10 @@ TEST(BodyMobilizer, MassCentreThatSwampsTheInertiaIsRefusedAndSimbodyWouldStopOn
 
     const std::string message = rejectionOf(ball);
 
-    EXPECT_NE(message.find("model 'm': link 'ball' mass 2e+11 kg"), std::string::npos) << message;
+    EXPECT_NE(message.find("model 'm': link 'ball' centre of mass = (0, 0, 5) m is not accepted; with mass 2e+11 kg, "
+                           "m |p|^2 = 5e+12 kg m^2 swamps"),
+              std::string::npos)
+        << message;
     EXPECT_NE(message.find("accepted: m |p|^2 below"), std::string::npos) << message;
     EXPECT_EQ(message.find('\n'), std::string::npos) << message;
     EXPECT_THROW(realizeInSimbody(ball), SimTK::Exception::Base);
@@ -93,7 +101,25 @@ TEST(BodyMobilizer, HeavyPlateWithinTheDescriptionSlackButOutsideSimbodysIsRefus
 
     const std::string message = rejectionOf(plate);
 
-    EXPECT_NE(message.find("breaks its rules"), std::string::npos) << message;
+    EXPECT_NE(message.find("model 'm': link 'plate' inertia = [50 50 100.00001 0 0 0] kg m^2 is not accepted; "),
+              std::string::npos)
+        << message;
+    EXPECT_NE(message.find("here izz exceeds ixx + iyy by 1e-05 kg m^2"), std::string::npos) << message;
+    EXPECT_THROW(realizeInSimbody(plate), SimTK::Exception::Base);
+}
+
+TEST(BodyMobilizer, ProductOfInertiaWithinTheDescriptionSlackButOutsideSimbodysIsRefused) {
+    // The plate above (principal moments 50, 50, 100.00001) turned 45 degrees about x: the triangle
+    // inequality holds on the diagonal, but |2 iyz| = 50.00001 exceeds ixx = 50 by 1e-5.
+    model::Body plate = test::makeBody("plate", 100.0, {0, 0, 0}, {50, 75.000005, 75.000005});
+    plate.inertia.yz = -25.000005;
+
+    const std::string message = rejectionOf(plate);
+
+    EXPECT_NE(message.find("model 'm': link 'plate' inertia = [50 75.000005 75.000005 0 0 -25.000005] kg m^2"),
+              std::string::npos)
+        << message;
+    EXPECT_NE(message.find("here |2 iyz| exceeds ixx by 1e-05 kg m^2"), std::string::npos) << message;
     EXPECT_THROW(realizeInSimbody(plate), SimTK::Exception::Base);
 }
 

@@ -132,6 +132,22 @@ TEST_F(ReplayPage, ConstraintReactionStaysWithinItsLimits) {
     }
 }
 
+// A folder written before the object was "object" in every scenario (the phone was body "phone",
+// geometry "phone_box") replays the same: the object is the side that is not a body of model.urdf.
+TEST_F(ReplayPage, ContactsOfAnObjectNamedOtherwiseShowTheSameArrows) {
+    const ResultRecord record = readResultFolder(folder_->string());
+    ResultRecord renamed = record;
+    std::size_t onObject = 0;
+    for (ContactRow& k : renamed.contacts) {
+        if (k.bodyB != "object") continue;
+        k.bodyB = "phone";
+        ++onObject;
+    }
+    ASSERT_GT(onObject, 0u);
+    const nlohmann::json data = nlohmann::json::parse(formatReplayJson(record));
+    EXPECT_EQ(nlohmann::json::parse(formatReplayJson(renamed))["contacts"], data["contacts"]);
+}
+
 TEST_F(ReplayPage, DataHoldsEverySampleWithPosesForcesAndEngagement) {
     const ResultRecord record = readResultFolder(folder_->string());
     const nlohmann::json data = nlohmann::json::parse(formatReplayJson(record));
@@ -140,7 +156,7 @@ TEST_F(ReplayPage, DataHoldsEverySampleWithPosesForcesAndEngagement) {
     std::size_t withGeometry = 0;
     for (const model::Body& b : record.model.bodies) withGeometry += b.geometry.empty() ? 0 : 1;
     ASSERT_EQ(data["bodies"].size(), withGeometry + 1);  // and the object, last
-    EXPECT_EQ(data["bodies"].back()["name"], "phone");
+    EXPECT_EQ(data["bodies"].back()["name"], "object");
     for (std::size_t f = 0; f < frames; ++f) {
         const nlohmann::json& pose = data["poses"][f];
         ASSERT_EQ(pose.size(), 7 * data["bodies"].size());
@@ -153,7 +169,7 @@ TEST_F(ReplayPage, DataHoldsEverySampleWithPosesForcesAndEngagement) {
         ASSERT_EQ(contacts.size(), result_->contacts[f].contacts.size());
         for (std::size_t i = 0; i < contacts.size(); ++i) {
             const contact::ContactReport& c = result_->contacts[f].contacts[i];
-            const double intoObject = c.bodyB == "phone" ? 1.0 : -1.0;  // n_G points from a to b
+            const double intoObject = c.bodyB == "object" ? 1.0 : -1.0;  // n_G points from a to b
             double along = 0;
             for (int k = 0; k < 3; ++k) along += contacts[i][3 + k].get<double>() * intoObject * c.n_G[k];
             EXPECT_NEAR(along, c.normalForce, 1e-5 * (1 + c.normalForce)) << "t = " << record.trajectory[f].time;

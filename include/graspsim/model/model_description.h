@@ -161,8 +161,9 @@ struct ModelDescription {
     /// Checks that the description is a well-formed tree and physically valid: unique names,
     /// every joint's parent and child exist, one root, no cycles, every body reachable, masses
     /// finite and non-negative, inertias of massive bodies positive definite and satisfying the
-    /// triangle inequality, limits ordered, axes unit length, geometry sizes positive, and every
-    /// movable joint carrying mass (a link with mass at or beyond its child).
+    /// triangle inequality, mass properties Simbody can hold (about the link origin, within its
+    /// tighter inertia tolerance), limits ordered, axes unit length, geometry sizes positive, and
+    /// every movable joint carrying mass (a link with mass at or beyond its child).
     /// @param source names the origin (file name or builder) for the error message.
     /// @throws graspsim::InputError naming source, field, value and what is accepted.
     void validate(const std::string& source) const;

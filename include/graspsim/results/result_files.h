@@ -7,7 +7,9 @@
 ///   joint angle (rad) by name;
 /// - contacts.csv: one row per contact and output time: time (s), body_a, shape_a, body_b,
 ///   shape_b, contact point x, y, z (m, ground), normal x, y, z (from a toward b), normal force
-///   (N), friction force on b x, y, z (N, ground), penetration (m);
+///   (N), friction force on b x, y, z (N, ground), penetration (m). For a hand-object contact a is
+///   the hand segment and its capsule (e.g. index_distal, index_distal_capsule) and b the object:
+///   body "object" in every scenario, shape the scenario's object shape ("box", "sphere", "mesh", ...);
 /// - summary.json: the SimulationSummary fields (see grasp_simulation.h), with "complete": false
 ///   and "failure" when the run stopped early; approx runs add engaged, engage_time_s and
 ///   release_time_s (null when none), q_at_engage_n, q_threshold_n and approx_step_us;

@@ -86,10 +86,15 @@ struct ObjectSpec {
     Vec3 toMeshFrame(const Vec3& p_OP) const;
 };
 
-/// The object as a one-body model (body "ball" for a sphere, "phone" for a box, else named
-/// after the shape), built by model::buildBallModel, buildPhoneModel, buildCylinderModel,
-/// buildCapsuleModel, buildEllipsoidModel or buildMeshModel with the spec's mass and size. The pose is
-/// not part of the description; use ObjectSpec::findPose().
+/// The name of the object's body in every scenario, whatever its shape: what contacts.csv gives
+/// as body_b (the object's geometry is named after its shape, toString(ObjectShape)).
+constexpr const char* kObjectBodyName = "object";
+
+/// The object as a one-body model: model and body named kObjectBodyName, its one geometry named
+/// toString(object.shape) ("box", "mesh", ...), whatever the shape. Built by model::buildBallModel,
+/// buildPhoneModel, buildCylinderModel, buildCapsuleModel, buildEllipsoidModel or buildMeshModel
+/// with the spec's mass and size, then renamed (those builders keep the thesis's names, "phone",
+/// for the models they export). The pose is not part of the description; use ObjectSpec::findPose().
 model::ModelDescription buildObjectModel(const ObjectSpec& object);
 
 /// A force pushed on the object's centre of mass for a while. The thesis runs each
