@@ -363,8 +363,13 @@ void GraspSwitch::engage(SimTK::State& state, double quality, const std::vector<
     const SimTK::Transform X_HO = ~context_.palm.getBodyTransform(state) * context_.object.getBodyTransform(state);
     std::string text = describeEngagement(qThreshold, engagement);
     if (engagement.stiffness) {
-        const SimTK::Vec6& k = *engagement.stiffness;
-        text += format("; rotational stiffness from the compliance model %.6g", k[0]) + format(" %.6g", k[1]) + format(" %.6g N m/rad", k[2]);
+        // An axis the model leaves to the bound (no positive stiffness) is named as such.
+        text += "; rotational stiffness from the compliance model";
+        for (int k = 0; k < 3; ++k) {
+            const double value = (*engagement.stiffness)[k];
+            text += value > 0 ? format(" %.6g", value) : std::string(" (the bound's)");
+        }
+        text += " N m/rad";
     }
     // As --limits compliance computes them (static friction unless told otherwise, M at O's origin
     // with O's orientation), whatever the constraint's own limits are; at the first engagement
