@@ -101,7 +101,7 @@ SimulateCommand::SimulateCommand(CLI::App& app) : options_(std::make_shared<Opti
     command_->add_option("--bushing-give", o.bushingGive,
                          "approx: how the merged bushing gives under a load: stiff (default: stiffened for the penetration "
                          "bound) or model (research: its rotational stiffness from the grasp's compliance model, preloaded "
-                         "with the contacts' wrench; docs/capacity.md)");
+                         "with the contacts' wrench, the locked fingers following the object's turn; docs/capacity.md)");
     command_->add_option("--hand-back", o.handBack,
                          "approx: the state full contact takes the object back in at a compliance-trigger release: engaged "
                          "(default: as the constraint held it) or deflected (object and finger joints deflected as the "

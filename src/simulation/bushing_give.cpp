@@ -7,14 +7,14 @@
 
 namespace graspsim::simulation {
 
-void setModelGive(const ApproximationContext& context, const SimTK::State& state,
-                  const std::vector<contact::ContactReport>& reports, const SimTK::Vec3& p_GM,
-                  grasp::AttachmentEngagement& engagement) {
+std::vector<grasp::CompliantContact> setModelGive(const ApproximationContext& context, const SimTK::State& state,
+                                                  const std::vector<contact::ContactReport>& reports, const SimTK::Vec3& p_GM,
+                                                  grasp::AttachmentEngagement& engagement) {
     FingerComplianceSettings settings;
     settings.rolling = true;
     const std::vector<grasp::CompliantContact> contacts =
         makeFingerCompliance(context).findCompliantContacts(state, reports, settings);
-    if (contacts.empty()) return;
+    if (contacts.empty()) return contacts;
     const Eigen::Matrix3d R_GM = system::toEigenMatrix(context.object.getBodyTransform(state).R());
     const Eigen::Vector3d p = system::toEigenVector(p_GM);
     // Force first in the model; its rotational block in M's axes is R_MG K_rr R_GM.
@@ -29,6 +29,7 @@ void setModelGive(const ApproximationContext& context, const SimTK::State& state
     for (int k = 0; k < 6; ++k) preload[k] = w0[k];
     engagement.stiffness = stiffness;
     engagement.preload = preload;
+    return contacts;
 }
 
 }  // namespace graspsim::simulation

@@ -18,6 +18,11 @@ namespace graspsim::simulation {
 
 namespace {
 
+// How far (m) the locked fingers must be able to move their pads toward the give's targets before
+// they are moved: moving them re-initializes the integrator, and 10 um is a hundredth of the pads'
+// compression under the grip (1-2.6 mm).
+constexpr double kFollowTolerance = 1e-5;
+
 std::string format(const char* pattern, double a, double b = 0) {
     char buffer[160];
     std::snprintf(buffer, sizeof buffer, pattern, a, b);
@@ -147,7 +152,7 @@ private:
 GraspSwitch::GraspSwitch(const ApproximationContext& context, SimTK::GeneralForceSubsystem& forces,
                          const ApproxOptions& options)
     : SimTK::PeriodicEventHandler(context.ikInterval), context_(context), options_(options) {
-    GraspSwitchRecord initial{options_.qThreshold, 0, SimTK::Transform(), {}, EngagedGraspTracker(context), std::nullopt};
+    GraspSwitchRecord initial{options_.qThreshold, 0, SimTK::Transform(), {}, EngagedGraspTracker(context), std::nullopt, {}};
     initial.qMinimum = options_.qMinimum > 0 ? options_.qMinimum : options_.hysteresisFraction * initial.qThreshold;
     auto* keeper = new RecordKeeper(forces, std::move(initial));
     SimTK::Force::Custom(forces, keeper);
@@ -355,7 +360,10 @@ void GraspSwitch::engage(SimTK::State& state, double quality, const std::vector<
     }
     engagement.leverArm = findLeverArm(reports, p_GM);
     engagement.penetrationBound = options_.maxEngagedPenetration;
-    if (options_.bushingGive == ApproxBushingGive::Model) setModelGive(context_, state, reports, p_GM, engagement);
+    FollowedGrasp followed;
+    if (options_.bushingGive == ApproxBushingGive::Model) {
+        followed = captureFollowedGrasp(context_, state, reports, setModelGive(context_, state, reports, p_GM, engagement));
+    }
     for (int k = 0; k < 6; ++k) engagement.lockedAxes[k] = !(*options_.relaxedAxes)[k];
     context_.contacts.setPairsEnabled(state, context_.contacts.findAllPairIndices(), false);  // (b)
     setFingersMerged(state, true);                                                        // (c)
@@ -385,6 +393,7 @@ void GraspSwitch::engage(SimTK::State& state, double quality, const std::vector<
     GraspSwitchRecord& record = updRecord(state);
     record.X_HO_engaged = X_HO;
     record.releaseLimits = releaseLimits;
+    record.followed = std::move(followed);
     record.events.push_back({state.getTime(), GraspEventKind::Engage, quality, text});  // (e)
 }
 
@@ -398,6 +407,10 @@ void GraspSwitch::placeConstraintFrames(const SimTK::State& state, const SimTK::
 }
 
 void GraspSwitch::checkRelease(SimTK::State& state) const {
+    if (!getRecord(state).followed.pads.empty()) {
+        const FollowedGrasp followed = getRecord(state).followed;  // a copy: the move writes the State
+        followObjectGive(context_, state, followed, kFollowTolerance);
+    }
     double q = 0;
     std::string reason;
     // Written back only when a maximum grew: writing the record (a discrete variable) at every

@@ -14,9 +14,13 @@
 ///    normals, into the object, while a turn about an axis through the contact centroid mostly
 ///    slides them along it;
 ///  - the bushing is preloaded with the contacts' wrench on the object about M's origin, so that
-///    taking over from the contacts does not first sag the object into the soft spring.
+///    taking over from the contacts does not first sag the object into the soft spring;
+///  - the locked fingers follow the object's turn by their share of it (finger_follow.h), so that
+///    the pads neither sink into the object nor leave it, and full contact takes back fingers that
+///    carry the load.
 
 #include "graspsim/contact/compliant_contact_force.h"
+#include "graspsim/grasp/compliant_grasp_capacity.h"
 #include "graspsim/grasp/grasp_attachment.h"
 #include "graspsim/simulation/approximation_context.h"
 
@@ -30,9 +34,10 @@ namespace graspsim::simulation {
 /// `engagement.preload` (N m, N; along M's axes) from the grasp's compliance model in `state`
 /// (contacts `reports`), for the constraint frame M at p_GM (m, in G) with O's orientation. An
 /// axis whose model stiffness is not positive keeps the bound's. Nothing is set without a pressing
-/// contact. Realizes `state` to Stage::Velocity.
-void setModelGive(const ApproximationContext& context, const SimTK::State& state,
-                  const std::vector<contact::ContactReport>& reports, const SimTK::Vec3& p_GM,
-                  grasp::AttachmentEngagement& engagement);
+/// contact. Returns the model's contacts, one per pressing report in order, for the fingers that
+/// follow the give (finger_follow.h). Realizes `state` to Stage::Velocity.
+std::vector<grasp::CompliantContact> setModelGive(const ApproximationContext& context, const SimTK::State& state,
+                                                  const std::vector<contact::ContactReport>& reports, const SimTK::Vec3& p_GM,
+                                                  grasp::AttachmentEngagement& engagement);
 
 }  // namespace graspsim::simulation

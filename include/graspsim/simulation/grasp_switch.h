@@ -84,6 +84,7 @@
 #include "graspsim/simulation/approximation_context.h"
 #include "graspsim/simulation/compliance_release.h"
 #include "graspsim/simulation/engaged_grasp_tracker.h"
+#include "graspsim/simulation/finger_follow.h"
 #include "graspsim/simulation/simulation_options.h"
 
 #include "graspsim/simbody.h"
@@ -129,6 +130,9 @@ struct GraspSwitchRecord {
     /// unloaded grasp, kept for the run) at which the switch releases, and outside which it does not
     /// engage again; unset otherwise.
     std::optional<ComplianceReleaseLimits> releaseLimits;
+    /// With the bushing's rotational give, the pads whose locked fingers follow the object's give
+    /// (finger_follow.h); empty otherwise.
+    FollowedGrasp followed;
 };
 
 /// The periodic event handler described in the file comment (owned by the System once added).

@@ -80,7 +80,8 @@ enum class ApproxBushingGive {
     Stiff,  ///< stiffened so that its deflection at its limits sinks no fingertip past the bound (the default)
     /// its rotational stiffness from the grasp's compliance model, rolling included (bushing_give.h),
     /// and preloaded with the contacts' wrench at engagement: the object turns in the palm under a
-    /// load as the model says full contact's would; the translations stay stiff. Bushing and merged only.
+    /// load as the model says full contact's would, and the locked fingers follow it by their share
+    /// (finger_follow.h); the translations stay stiff. Bushing and merged only.
     Model
 };
 
