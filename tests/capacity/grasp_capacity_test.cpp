@@ -63,6 +63,25 @@ void expectBallCellAgrees(const GraspCapacityRequest& request, const std::vector
     EXPECT_NEAR(a.slipOnsetTime, f.slipOnsetTime, 0.1 * f.slipOnsetTime);
 }
 
+// The same ramp in full contact and with the approximation `given`, on the linearly implicit
+// stepper at 3e-4: the second method and the one under test.
+struct RampPair {
+    GraspCapacity full;
+    GraspCapacity approx;
+};
+
+RampPair measureFullAndApprox(const scenario::Scenario& s, const GraspCapacityRequest& request, const simulation::ApproxOptions& given) {
+    simulation::SimulationOptions options;
+    options.integrator = simulation::IntegratorChoice::LinearlyImplicit;
+    options.accuracy = 3e-4;
+    RampPair ramps;
+    ramps.full = measureGraspCapacityRamp(s, options, request);
+    options.mode = simulation::SimulationMode::Approx;
+    options.approx = given;
+    ramps.approx = measureGraspCapacityRamp(s, options, request);
+    return ramps;
+}
+
 GraspCapacityRequest makeBallRamp(const SimTK::Vec3& direction, const std::string& name) {
     GraspCapacityRequest request;
     request.direction = SimTK::UnitVec3(direction);
@@ -116,14 +135,11 @@ TEST(GraspCapacity, ReleaseAtComplianceLimitsWellBeforeCapacityGivesFullContacts
     const scenario::Scenario phone = scenario::findBuiltinScenario("phone-pinch");
     GraspCapacityRequest request;  // -y at the default rate, 1.96 N/s
     request.maxRampDuration = 1.5;
-    simulation::SimulationOptions options;
-    options.integrator = simulation::IntegratorChoice::LinearlyImplicit;
-    options.accuracy = 3e-4;
-    const GraspCapacity full = measureGraspCapacityRamp(phone, options, request);
-    options.mode = simulation::SimulationMode::Approx;
-    options.approx.releaseTrigger = simulation::ApproxReleaseTrigger::Compliance;
-    const GraspCapacity approx = measureGraspCapacityRamp(phone, options, request);
-    const CapacityFigures& f = full.trace.figures;
+    simulation::ApproxOptions given;
+    given.releaseTrigger = simulation::ApproxReleaseTrigger::Compliance;
+    const RampPair ramps = measureFullAndApprox(phone, request, given);
+    const GraspCapacity& approx = ramps.approx;
+    const CapacityFigures& f = ramps.full.trace.figures;
     const CapacityFigures& a = approx.trace.figures;
     ASSERT_TRUE(f.slipped);
     ASSERT_TRUE(a.slipped);
@@ -165,14 +181,11 @@ TEST(GraspCapacity, TheGivesFollowingFingersHandTheBallsTurnBackWithoutAJump) {
     // `--direction all --rate 6`: the forces' 6 N/s scaled by the default rates' ratio (a lever, m).
     request.rate = 6 * findDefaultRate(ball, true) / findDefaultRate(ball, false);
     request.maxRampDuration = 1.5;
-    simulation::SimulationOptions options;
-    options.integrator = simulation::IntegratorChoice::LinearlyImplicit;
-    options.accuracy = 3e-4;
-    const GraspCapacity full = measureGraspCapacityRamp(ball, options, request);
-    options.mode = simulation::SimulationMode::Approx;
-    options.approx.bushingGive = simulation::ApproxBushingGive::Model;
-    const GraspCapacity approx = measureGraspCapacityRamp(ball, options, request);
-    const CapacityFigures& f = full.trace.figures;
+    simulation::ApproxOptions given;
+    given.bushingGive = simulation::ApproxBushingGive::Model;
+    const RampPair ramps = measureFullAndApprox(ball, request, given);
+    const GraspCapacity& approx = ramps.approx;
+    const CapacityFigures& f = ramps.full.trace.figures;
     const CapacityFigures& a = approx.trace.figures;
     ASSERT_TRUE(f.slipped);
     ASSERT_TRUE(a.slipped);
