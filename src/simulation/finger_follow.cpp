@@ -75,37 +75,35 @@ Eigen::Matrix3d calcFingerShare(const grasp::CompliantContact& c) {
 FollowedGrasp captureFollowedGrasp(const ApproximationContext& context, const SimTK::State& state,
                                    const std::vector<contact::ContactReport>& reports,
                                    const std::vector<grasp::CompliantContact>& contacts) {
-    const Eigen::MatrixXd K = makeFingerCompliance(context).calcJointStiffness(state, FingerComplianceSettings{}.ikFollowsNullSpace);
-    const Eigen::LLT<Eigen::MatrixXd> compliance(K.inverse());
-    if (compliance.info() != Eigen::Success || !K.allFinite()) {
-        throw InputError("finger follow: the finger joints' stiffness is not positive definite");
-    }
-    const SimTK::Transform& X_GO = context.object.getBodyTransform(state);
-    const SimTK::Transform& X_GH = context.palm.getBodyTransform(state);
-    std::vector<FollowedPad> pads;
-    for (const contact::ContactReport& report : reports) {
-        if (!(report.normalForce > 0) || !(report.depth > 0)) continue;
-        if (pads.size() == contacts.size()) break;
-        const grasp::CompliantContact& c = contacts[pads.size()];
-        const SimTK::MobilizedBody& segment = context.model.getMobilizedBody(report.bodyA);
-        const SimTK::Mat33 share_G = toMat33(calcFingerShare(c));
-        pads.push_back({segment.getMobilizedBodyIndex(), segment.findStationAtGroundPoint(state, report.p_G), ~X_GO * report.p_G,
-                        ~X_GH * report.p_G, ~X_GH.R() * share_G * X_GH.R()});
-    }
     const auto pressing = std::count_if(reports.begin(), reports.end(),
                                         [](const contact::ContactReport& r) { return r.normalForce > 0 && r.depth > 0; });
     if (std::size_t(pressing) != contacts.size()) {
         throw InputError("finger follow: " + std::to_string(pressing) + " pressing contacts but " +
                          std::to_string(contacts.size()) + " compliance-model contacts");
     }
-    return {pads, compliance.matrixL()};
+    const Eigen::MatrixXd K = makeFingerCompliance(context).calcJointStiffness(state, FingerComplianceSettings{}.ikFollowsNullSpace);
+    const Eigen::LLT<Eigen::MatrixXd> compliance(K.allFinite() ? Eigen::MatrixXd(K.inverse()) : K);
+    if (!K.allFinite() || compliance.info() != Eigen::Success) {
+        throw InputError("finger follow: the finger joints' stiffness is not positive definite");
+    }
+    const SimTK::Transform& X_GO = context.object.getBodyTransform(state);
+    const SimTK::Transform& X_GH = context.palm.getBodyTransform(state);
+    FollowedGrasp grasp{{}, compliance.matrixL()};
+    for (const contact::ContactReport& report : reports) {
+        if (!(report.normalForce > 0) || !(report.depth > 0)) continue;
+        const grasp::CompliantContact& c = contacts[grasp.pads.size()];
+        const SimTK::MobilizedBody& segment = context.model.getMobilizedBody(report.bodyA);
+        const SimTK::Mat33 share_G = toMat33(calcFingerShare(c));
+        grasp.pads.push_back({segment.getMobilizedBodyIndex(), segment.findStationAtGroundPoint(state, report.p_G), ~X_GO * report.p_G,
+                              ~X_GH * report.p_G, ~X_GH.R() * share_G * X_GH.R()});
+    }
+    return grasp;
 }
 
 // The move is judged by what the joints can do: where two pads share a finger the least-squares
 // fit leaves a residual, and a tolerance on the residual itself would re-lock the fingers at every
-// check without moving them.
-// With dq = L y (L L^T = K_q^-1) the energy dq^T K_q dq is |y|^2: the least-norm least-squares y of
-// (J L) y = e is the least-energy move.
+// check without moving them. With dq = L y (L L^T = K_q^-1) the energy dq^T K_q dq is |y|^2: the
+// least-norm least-squares y of (J L) y = e is the least-energy move.
 double followObjectGive(const ApproximationContext& context, SimTK::State& state, const FollowedGrasp& grasp, double tolerance) {
     if (grasp.pads.empty()) return 0;
     const FollowResidual r = calcFollowResidual(context, state, grasp.pads);

@@ -40,14 +40,7 @@ struct FollowedPad {
     SimTK::Vec3 p_SC;                   ///< the contact point as a station of the segment (m)
     SimTK::Vec3 p_OC;                   ///< the contact point as a material point of the object (m, in O)
     SimTK::Vec3 p_HC;                   ///< the contact point in the palm H at engagement (m, in H)
-    /// The pads of one engagement and the finger joints' compliance they move with.
-struct FollowedGrasp {
-    std::vector<FollowedPad> pads;
-    /// L with L L^T = K_q^-1 at engagement (rad/(N m)), over the context's finger mobilizers in order.
-    Eigen::MatrixXd jointComplianceRoot;
-};
-
-/// The finger's share C_f (C_f + C_c)^-1 of the object point's motion (file comment), in H's axes.
+    /// The finger's share C_f (C_f + C_c)^-1 of the object point's motion (file comment), in H's axes.
     SimTK::Mat33 share_H;
 };
 
@@ -70,8 +63,8 @@ Eigen::Matrix3d calcFingerShare(const grasp::CompliantContact& contact);
 /// @throws graspsim::InputError when the pressing reports and `contacts` differ in number, or the
 ///         joints' stiffness is not positive definite.
 FollowedGrasp captureFollowedGrasp(const ApproximationContext& context, const SimTK::State& state,
-                                             const std::vector<contact::ContactReport>& reports,
-                                             const std::vector<grasp::CompliantContact>& contacts);
+                                   const std::vector<contact::ContactReport>& reports,
+                                   const std::vector<grasp::CompliantContact>& contacts);
 
 /// Moves the locked finger joints so that the pads reach their targets (file comment) and locks
 /// them at the new angles, when the move would bring a pad more than `tolerance` (m) nearer its
