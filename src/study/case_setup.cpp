@@ -112,6 +112,7 @@ std::string checkRunOption(const std::string& name, const std::string& value, co
     if (name == "contact") simulation::parseContactModel(value, source);
     if (name == "constraint") simulation::parseApproxConstraint(value, source);
     if (name == "attach") simulation::parseApproxAttach(value, source);
+    if (name == "bushing_give") simulation::parseApproxBushingGive(value, source);
     if (name == "integrator") simulation::parseIntegratorChoice(value, source);
     if (name == "perturbation" && value != "none" && !scenario.findPerturbation(value)) {
         std::string known = "none";
@@ -120,6 +121,9 @@ std::string checkRunOption(const std::string& name, const std::string& value, co
     }
     return value;
 }
+
+// The grasp approximation's own run options, which simulate and capacity refuse without --mode approx.
+bool isApproxOnly(const std::string& option) { return option == "constraint" || option == "attach" || option == "bushing_give"; }
 
 // The command's flag for a study option: max_duration is --max-duration.
 std::string formatFlag(const std::string& option) {
@@ -137,10 +141,11 @@ std::vector<std::pair<std::string, std::string>> listRunOptions(const std::vecto
     bool approx = false;
     for (const Assignment& a : assignments) approx = approx || (a.isRunOption && a.name == "mode" && a.value == "approx");
     for (const std::string& option : getRunOptionNames(command)) {
-        const bool approxOnly = option == "constraint" || option == "attach";
+        const bool approxOnly = isApproxOnly(option);
         for (const Assignment& a : assignments) {
-            if (!a.isRunOption || a.name != option || (approxOnly && !approx)) continue;
-            const std::string value = checkRunOption(a.name, a.value, parsed);
+            if (!a.isRunOption || a.name != option) continue;
+            const std::string value = checkRunOption(a.name, a.value, parsed);  // checked even where not given
+            if (approxOnly && !approx) continue;
             if (option == "torque") {
                 if (value == "true") options.emplace_back("--torque", "");
                 continue;
@@ -193,7 +198,7 @@ void checkApproxOnlyRunOptions(const StudySpec& spec) {
     for (const StudyAxis& axis : spec.axes) modeGiven = modeGiven || axis.name == "mode";
     if (modeGiven) return;
     const auto refuse = [&](const std::string& name, int line) {
-        if (name != "constraint" && name != "attach") return;
+        if (!isApproxOnly(name)) return;
         throw InputError(place(spec, line) + "run option '" + name + "' is not accepted without mode approx (set or an axis); "
                          "it is an option of the grasp approximation");
     };

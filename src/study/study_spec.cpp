@@ -315,9 +315,9 @@ const std::vector<std::string>& getRunOptionNames() {
 }
 
 const std::vector<std::string>& getRunOptionNames(StudyCommand command) {
-    static const std::vector<std::string> simulate{"mode", "contact", "constraint", "attach", "integrator", "perturbation"};
-    static const std::vector<std::string> capacity{"mode", "contact", "constraint", "attach", "integrator", "direction", "torque",
-                                                   "rate", "method",  "load",       "hold",   "max_duration", "slip_threshold"};
+    static const std::vector<std::string> simulate{"mode", "contact", "constraint", "attach", "bushing_give", "integrator", "perturbation"};
+    static const std::vector<std::string> capacity{"mode", "contact", "constraint", "attach", "bushing_give", "integrator", "direction",
+                                                   "torque", "rate", "method", "load", "hold", "max_duration", "slip_threshold"};
     return command == StudyCommand::Capacity ? capacity : simulate;
 }
 

@@ -64,10 +64,28 @@ TEST(CaseSetup, ApproximationOptionsGoToApproxCasesOnly) {
               (Options{{"--mode", "approx"}, {"--constraint", "weld"}, {"--attach", "merged"}}));
 }
 
+// The bushing's give likewise, as simulate's and capacity's --bushing-give.
+TEST(CaseSetup, TheBushingsGiveGoesToApproxCasesOnly) {
+    const StudySpec spec = makeSpec("  mode: [full, approx]\n", "set: {bushing_give: model}\n");
+    const std::vector<scenario::ScenarioText> base = readBaseScenarios(spec);
+    checkStudyValues(spec, base);
+    using Options = std::vector<std::pair<std::string, std::string>>;
+    EXPECT_EQ(makeCaseSetup(spec, base, expandCases(spec).at(0)).options, (Options{{"--mode", "full"}}));
+    EXPECT_EQ(makeCaseSetup(spec, base, expandCases(spec).at(1)).options, (Options{{"--mode", "approx"}, {"--bushing-give", "model"}}));
+}
+
 TEST(CaseSetup, ApproximationOptionsWithoutModeAreRefused) {
     EXPECT_NE(checkError("  subject.stature: [1.741]\n", "set: {constraint: weld}\n")
                   .find("s.yaml:3: run option 'constraint' is not accepted without mode approx"),
               std::string::npos);
+    EXPECT_NE(checkError("  subject.stature: [1.741]\n", "set: {bushing_give: model}\n")
+                  .find("s.yaml:3: run option 'bushing_give' is not accepted without mode approx"),
+              std::string::npos);
+    // A bad value is refused before anything runs, also where an axis of modes would leave it to
+    // the approx cases.
+    EXPECT_NE(checkError("  mode: [full, approx]\n  bushing_give: [stiff, soft]\n").find("run option 'bushing_give': bushing give 'soft'"),
+              std::string::npos);
+    EXPECT_NE(checkError("  mode: [full, approx]\n  constraint: [bushing, wled]\n").find("run option 'constraint'"), std::string::npos);
 }
 
 TEST(CaseSetup, SectionsMissingFromTheBaseAreAdded) {
