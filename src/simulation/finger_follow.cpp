@@ -104,18 +104,17 @@ FollowedGrasp captureFollowedGrasp(const ApproximationContext& context, const Si
 // fit leaves a residual, and a tolerance on the residual itself would re-lock the fingers at every
 // check without moving them. With dq = L y (L L^T = K_q^-1) the energy dq^T K_q dq is |y|^2: the
 // least-norm least-squares y of (J L) y = e is the least-energy move.
-double followObjectGive(const ApproximationContext& context, SimTK::State& state, const FollowedGrasp& grasp, double tolerance) {
-    if (grasp.pads.empty()) return 0;
+void followObjectGive(const ApproximationContext& context, SimTK::State& state, const FollowedGrasp& grasp, double tolerance) {
+    if (grasp.pads.empty()) return;
     const FollowResidual r = calcFollowResidual(context, state, grasp.pads);
     const Eigen::MatrixXd& L = grasp.jointComplianceRoot;
     const Eigen::VectorXd dq = L * (r.jacobian * L).completeOrthogonalDecomposition().solve(r.error);
-    if (!(findLargestPadDistance(r.jacobian * dq) > tolerance)) return 0;
+    if (!(findLargestPadDistance(r.jacobian * dq) > tolerance)) return;
     const SimTK::SimbodyMatterSubsystem& matter = context.model.getMatter();
     for (std::size_t k = 0; k < context.fingerMobilizers.size(); ++k) {
         const SimTK::MobilizedBody& joint = matter.getMobilizedBody(context.fingerMobilizers[k]);
         joint.lockAt(state, joint.getOneQ(state, 0) + dq[Eigen::Index(k)], SimTK::Motion::Position);
     }
-    return findLargestPadDistance(r.error);
 }
 
 }  // namespace graspsim::simulation

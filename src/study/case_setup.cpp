@@ -144,7 +144,8 @@ std::vector<std::pair<std::string, std::string>> listRunOptions(const std::vecto
         const bool approxOnly = isApproxOnly(option);
         for (const Assignment& a : assignments) {
             if (!a.isRunOption || a.name != option) continue;
-            const std::string value = checkRunOption(a.name, a.value, parsed);  // checked even where not given
+            // Checked for every case, also one it is not given to: a bad value fails before anything runs.
+            const std::string value = checkRunOption(a.name, a.value, parsed);
             if (approxOnly && !approx) continue;
             if (option == "torque") {
                 if (value == "true") options.emplace_back("--torque", "");

@@ -68,8 +68,8 @@ FollowedGrasp captureFollowedGrasp(const ApproximationContext& context, const Si
 
 /// Moves the locked finger joints so that the pads reach their targets (file comment) and locks
 /// them at the new angles, when the move would bring a pad more than `tolerance` (m) nearer its
-/// target; returns the largest distance from a pad to its target before the move, 0 if nothing
-/// moved. The fingers must be locked (Motion::Position). Realizes `state` to Stage::Position.
-double followObjectGive(const ApproximationContext& context, SimTK::State& state, const FollowedGrasp& grasp, double tolerance);
+/// target; otherwise leaves them. The fingers must be locked (Motion::Position). Realizes `state`
+/// to Stage::Position.
+void followObjectGive(const ApproximationContext& context, SimTK::State& state, const FollowedGrasp& grasp, double tolerance);
 
 }  // namespace graspsim::simulation
