@@ -58,7 +58,7 @@ struct CapacityCommand::Options {
     std::string releaseAt = "auto";
     std::string releaseGive;
     std::string handBack = "engaged";
-    std::string bushingGive = "stiff";
+    std::string bushingGive = "auto";
     std::string accuracy;
     std::string integrator = "auto";
     std::string stepSize;
@@ -144,9 +144,10 @@ CapacityCommand::CapacityCommand(CLI::App& app) : options_(std::make_shared<Opti
                        "compliance: the model adds the contacts' rolling stiffness (their forces turning as the object rolls "
                        "on the pads; research option, docs/capacity.md); default: the contacts' geometry frozen");
     command_->add_option("--bushing-give", o.bushingGive,
-                         "approx: how the merged bushing gives under a load: stiff (default: stiffened for the penetration "
-                         "bound) or model (research: its rotational stiffness from the grasp's compliance model, preloaded "
-                         "with the contacts' wrench, the locked fingers following the object's turn; docs/capacity.md)");
+                         "approx: how the merged bushing gives under a load: auto (default: model on the merged bushing), model "
+                         "(its rotational stiffness from the grasp's compliance model, preloaded with the contacts' wrench, "
+                         "the locked fingers following the object's turn; docs/capacity.md) or stiff (stiffened for the "
+                         "penetration bound)");
     command_->add_option("--hand-back", o.handBack,
                          "approx: the state full contact takes the object back in at a compliance-trigger release: engaged "
                          "(default: as the constraint held it) or deflected (object and finger joints deflected as the "

@@ -46,7 +46,7 @@ struct SimulateCommand::Options {
     std::string releaseAt = "auto";
     std::string releaseGive;
     std::string handBack = "engaged";
-    std::string bushingGive = "stiff";
+    std::string bushingGive = "auto";
     std::string ramp, rampRate;
     bool rampTorque = false;
     std::string out = "out";
@@ -99,9 +99,10 @@ SimulateCommand::SimulateCommand(CLI::App& app) : options_(std::make_shared<Opti
                          "compliance model says full contact would have let it give this far at the grasp goals, m "
                          "(default 0.002, the model's slip onset)");
     command_->add_option("--bushing-give", o.bushingGive,
-                         "approx: how the merged bushing gives under a load: stiff (default: stiffened for the penetration "
-                         "bound) or model (research: its rotational stiffness from the grasp's compliance model, preloaded "
-                         "with the contacts' wrench, the locked fingers following the object's turn; docs/capacity.md)");
+                         "approx: how the merged bushing gives under a load: auto (default: model on the merged bushing), model "
+                         "(its rotational stiffness from the grasp's compliance model, preloaded with the contacts' wrench, "
+                         "the locked fingers following the object's turn; docs/capacity.md) or stiff (stiffened for the "
+                         "penetration bound)");
     command_->add_option("--hand-back", o.handBack,
                          "approx: the state full contact takes the object back in at a compliance-trigger release: engaged "
                          "(default: as the constraint held it) or deflected (object and finger joints deflected as the "
@@ -256,11 +257,10 @@ results::RunProvenance makeRunProvenance(const std::vector<std::string>& command
         run.run["q_threshold_n"] = formatOverride(options.approx.qThreshold);
         run.run["q_minimum_n"] = formatOverride(options.approx.qMinimum);
         run.run["limits"] = grasp::toString(options.approx.limitModel);
-        run.run["release_at"] = simulation::toString(simulation::resolveApproxOptions(options.approx, scenario.approximation).releaseTrigger);
+        const simulation::ApproxOptions approx = simulation::resolveApproxOptions(options.approx, scenario.approximation);
+        run.run["release_at"] = simulation::toString(approx.releaseTrigger);
         if (options.approx.handBack != simulation::ApproxHandBack::Engaged) run.run["hand_back"] = simulation::toString(options.approx.handBack);
-        if (options.approx.bushingGive != simulation::ApproxBushingGive::Stiff) {
-            run.run["bushing_give"] = simulation::toString(options.approx.bushingGive);
-        }
+        run.run["bushing_give"] = simulation::toString(approx.bushingGive);
     }
     return run;
 }

@@ -6,6 +6,7 @@
 #include "graspsim/system/simtk_conversion.h"
 
 #include <algorithm>
+#include <iterator>
 #include <numeric>
 
 namespace graspsim::simulation {
@@ -84,6 +85,12 @@ double EngagedGraspTracker::measurePenetration(const SimTK::State& state) {
     std::vector<int> replaced;
     for (int k = 0; k < pairs.getNumPairs(); ++k) {
         if (!pairs.isPairEnabled(state, k)) replaced.push_back(k);
+    }
+    std::vector<int>& seen = penetration_.replacedPairs;
+    if (!std::includes(seen.begin(), seen.end(), replaced.begin(), replaced.end())) {
+        std::vector<int> all;
+        std::set_union(seen.begin(), seen.end(), replaced.begin(), replaced.end(), std::back_inserter(all));
+        seen = std::move(all);
     }
     context_->model.getSystem().realize(state, SimTK::Stage::Position);
     double deepest = 0, growthNow = 0;

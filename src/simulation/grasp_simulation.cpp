@@ -233,6 +233,7 @@ void summarizeSwitch(const GraspSwitch* grasp, const PhaseTimer& timer, const Si
     summary.engagedPenetrationAtEngage = penetration.atEngage;
     summary.maxEngagedPenetration = penetration.maxWhileEngaged;
     summary.maxEngagedPenetrationGrowth = penetration.maxGrowth;
+    result.replacedPairs = penetration.replacedPairs;
     for (const GraspEvent& e : result.events) summary.maxReleaseVelocityJump = std::max(summary.maxReleaseVelocityJump, e.velocityJump);
     if (result.events.empty()) return;
     summary.engaged = true;

@@ -79,12 +79,20 @@ ApproxHandBack parseApproxHandBack(const std::string& text, const std::string& s
 std::string toString(ApproxHandBack handBack) { return handBack == ApproxHandBack::Engaged ? "engaged" : "deflected"; }
 
 ApproxBushingGive parseApproxBushingGive(const std::string& text, const std::string& source) {
+    if (text == "auto") return ApproxBushingGive::Automatic;
     if (text == "stiff") return ApproxBushingGive::Stiff;
     if (text == "model") return ApproxBushingGive::Model;
-    throw InputError(source + ": bushing give '" + text + "' is not accepted; use stiff or model");
+    throw InputError(source + ": bushing give '" + text + "' is not accepted; use auto, stiff or model");
 }
 
-std::string toString(ApproxBushingGive give) { return give == ApproxBushingGive::Stiff ? "stiff" : "model"; }
+std::string toString(ApproxBushingGive give) {
+    switch (give) {
+    case ApproxBushingGive::Automatic: return "auto";
+    case ApproxBushingGive::Stiff: return "stiff";
+    case ApproxBushingGive::Model: return "model";
+    }
+    return "?";
+}
 
 std::string toString(SimulationMode mode) { return mode == SimulationMode::Full ? "full" : "approx"; }
 
@@ -165,6 +173,9 @@ ApproxOptions resolveApproxOptions(const ApproxOptions& given, const scenario::A
     if (!options.relaxedAxes) options.relaxedAxes = scenario.relaxedAxes;
     if (options.releaseTrigger == ApproxReleaseTrigger::Automatic) {
         const bool mergedBushing = options.constraint == ApproxConstraint::Bushing && options.attach == ApproxAttach::Merged;
+    if (options.bushingGive == ApproxBushingGive::Automatic) {
+        options.bushingGive = mergedBushing ? ApproxBushingGive::Model : ApproxBushingGive::Stiff;
+    }
         options.releaseTrigger = mergedBushing ? ApproxReleaseTrigger::Compliance : ApproxReleaseTrigger::None;
     }
     if (!(options.qThreshold >= 0) || !(options.qMinimum >= 0)) {
@@ -185,6 +196,9 @@ ApproxOptions resolveApproxOptions(const ApproxOptions& given, const scenario::A
                          "on the merged bushing); this run's is " + toString(options.releaseTrigger));
     }
     const bool mergedBushing = options.constraint == ApproxConstraint::Bushing && options.attach == ApproxAttach::Merged;
+    if (options.bushingGive == ApproxBushingGive::Automatic) {
+        options.bushingGive = mergedBushing ? ApproxBushingGive::Model : ApproxBushingGive::Stiff;
+    }
     if (options.bushingGive == ApproxBushingGive::Model && !mergedBushing) {
         throw InputError("--bushing-give: 'model' needs the merged bushing (--constraint bushing --attach merged); this run's is " +
                          toString(options.constraint) + " " + toString(options.attach));

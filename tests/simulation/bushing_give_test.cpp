@@ -15,8 +15,8 @@ namespace graspsim {
 namespace {
 
 TEST(BushingGive, ModelIsParsedAndNeedsTheMergedBushing) {
-    EXPECT_EQ(simulation::ApproxOptions{}.bushingGive, simulation::ApproxBushingGive::Stiff);
     EXPECT_EQ(simulation::parseApproxBushingGive("model", "--bushing-give"), simulation::ApproxBushingGive::Model);
+    EXPECT_EQ(simulation::parseApproxBushingGive("auto", "--bushing-give"), simulation::ApproxBushingGive::Automatic);
     EXPECT_THROW(simulation::parseApproxBushingGive("soft", "--bushing-give"), InputError);
     simulation::ApproxOptions options;
     options.bushingGive = simulation::ApproxBushingGive::Model;
@@ -33,6 +33,18 @@ TEST(BushingGive, ModelIsParsedAndNeedsTheMergedBushing) {
 // pivots the phone in the pinch by about 2 mm, which the stiff bushing does not (2.23 mm apart).
 // With the model's rotational give the approximation stays engaged and follows full contact
 // within the 2 mm (measured 1.18 mm).
+// The default gives on the merged bushing only; the weld and the multi-bushing keep theirs.
+TEST(BushingGive, TheDefaultIsTheModelOnTheMergedBushingOnly) {
+    simulation::ApproxOptions options;
+    EXPECT_EQ(options.bushingGive, simulation::ApproxBushingGive::Automatic);
+    EXPECT_EQ(simulation::resolveApproxOptions(options, {}).bushingGive, simulation::ApproxBushingGive::Model);
+    options.constraint = simulation::ApproxConstraint::Weld;
+    EXPECT_EQ(simulation::resolveApproxOptions(options, {}).bushingGive, simulation::ApproxBushingGive::Stiff);
+    options.constraint = simulation::ApproxConstraint::Bushing;
+    options.attach = simulation::ApproxAttach::Multi;
+    EXPECT_EQ(simulation::resolveApproxOptions(options, {}).bushingGive, simulation::ApproxBushingGive::Stiff);
+}
+
 TEST(BushingGive, APhonePulledAtAQuarterOfItsCapacityFollowsFullContactEngaged) {
     scenario::Scenario s = scenario::findBuiltinScenario("phone-pinch");
     scenario::Perturbation pull;

@@ -67,9 +67,11 @@ void expectEngagedQualityContinuesTheContactQuality(const simulation::Simulation
 }
 
 // The tracked fingertips do not sink further into the object while engaged (not visibly: <= 0.1 mm,
-// ApproxOptions::maxEngagedPenetration). Bounded for the rigid weld; for the compliant bushing by
-// its stiffness at engagement, chosen from the friction limits so that its elastic displacement at
-// them stays within the bound (grasp_switch.cpp, calcEngagedStiffness).
+// ApproxOptions::maxEngagedPenetration) under gravity alone. Bounded for the rigid weld; for the
+// compliant bushing by its stiffness at engagement, chosen from the friction limits so that its
+// elastic displacement at them stays within the bound (grasp_switch.cpp, calcEngagedStiffness),
+// and, where it turns by the default's compliance model, by the locked fingers following the turn
+// (finger_follow.h).
 void expectNoPenetrationGrowth(const simulation::SimulationResult& r) {
     EXPECT_GT(r.summary.engagedPenetrationAtEngage, 0);  // the skin compression the grasp engages with
     EXPECT_LE(r.summary.maxEngagedPenetrationGrowth, simulation::ApproxOptions().maxEngagedPenetration);

@@ -62,6 +62,50 @@ TEST(ValidationChecks, PenetrationGrowthBoundIsATenthOfAMillimetreForBothAttachm
     }
 }
 
+TEST(ValidationChecks, PenetrationGrowthMayReachFullContactsOwnGrowthPlusATenth) {
+    validation::RunRecord r = makeApproxRecord(0);
+    r.referenceEngagedGrowth = 0.0003;
+    r.summary.maxEngagedPenetrationGrowth = 0.00039;
+    EXPECT_TRUE(findCheck(validation::checkRun(r), "fingertip penetration").pass);
+    r.summary.maxEngagedPenetrationGrowth = 0.00041;
+    EXPECT_FALSE(findCheck(validation::checkRun(r), "fingertip penetration").pass);
+}
+
+namespace {
+
+simulation::ContactSample makeSample(double time, std::vector<std::pair<int, double>> depths) {
+    simulation::ContactSample sample;
+    sample.time = time;
+    for (const auto& [pair, depth] : depths) {
+        contact::ContactReport c;
+        c.pairIndex = pair;
+        c.depth = depth;
+        sample.contacts.push_back(c);
+    }
+    return sample;
+}
+
+}  // namespace
+
+// Growth of one pair beyond its own depth at the span's start; other pairs, and samples outside the
+// span, do not count; a pair's deepest point counts.
+TEST(ValidationChecks, DepthGrowthIsEachPairsOwnOverTheSpan) {
+    const std::vector<simulation::ContactSample> contacts = {
+        makeSample(0.9, {{1, 0.0010}, {2, 0.0020}}),
+        makeSample(1.0, {{1, 0.0012}, {2, 0.0021}, {5, 0.0001}}),
+        makeSample(1.1, {{1, 0.0015}, {1, 0.0016}, {2, 0.0020}, {5, 0.0030}}),
+        makeSample(1.2, {{1, 0.0013}, {2, 0.0019}, {3, 0.0002}}),
+        makeSample(1.3, {{1, 0.0050}}),
+    };
+    // Pair 1: 1.6 - 1.2 mm at 1.1 s; pair 3 enters at 1.2 s from nothing (0.2 mm).
+    EXPECT_NEAR(validation::calcDepthGrowth(contacts, {1, 2, 3}, 1.0, 1.2), 0.0004, 1e-12);
+    EXPECT_NEAR(validation::calcDepthGrowth(contacts, {2, 3}, 1.0, 1.2), 0.0002, 1e-12);
+    // From 0.9 s, pair 2 grows by 0.1 mm before it shrinks.
+    EXPECT_NEAR(validation::calcDepthGrowth(contacts, {2}, 0.9, 1.2), 0.0001, 1e-12);
+    EXPECT_EQ(validation::calcDepthGrowth(contacts, {4}, 0.9, 1.3), 0.0);
+    EXPECT_EQ(validation::calcDepthGrowth(contacts, {1}, 1.3, 2.0), 0.0);
+}
+
 TEST(ValidationChecks, EngagingBeforeSettlingFails) {
     validation::RunRecord r = makeApproxRecord(0);
     r.summary.engageTime = 0.9;

@@ -52,6 +52,7 @@ struct PenetrationStats {
     double atEngage = 0;         ///< deepest contact at the (last) engagement
     double maxWhileEngaged = 0;  ///< deepest contact seen while engaged (all engagements)
     double maxGrowth = 0;        ///< largest growth of one contact's depth beyond its depth at engagement
+    std::vector<int> replacedPairs;  ///< contact pairs switched off while engaged (all engagements), ascending
 };
 
 /// The tracked contacts of the current engagement and the penetration seen so far.

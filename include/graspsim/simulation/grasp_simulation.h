@@ -101,6 +101,9 @@ struct SimulationResult {
     SimulationSummary summary;
     std::vector<GraspEvent> events;  ///< engage/release switches of the approximation, in time order
     std::vector<ConstraintSample> constraint;  ///< the merged approximation's constraint at each output time it is engaged
+    /// The contact pairs (CompliantContactForce indices) the approximation switched off while
+    /// engaged, ascending; empty in full mode. A full run of the same scene numbers its pairs alike.
+    std::vector<int> replacedPairs;
 };
 
 /// Called after each output sample with the simulated time reached (s).

@@ -77,7 +77,8 @@ enum class ApproxHandBack {
 
 /// How the merged bushing gives under a load while engaged.
 enum class ApproxBushingGive {
-    Stiff,  ///< stiffened so that its deflection at its limits sinks no fingertip past the bound (the default)
+    Automatic,  ///< the default: Model on the merged bushing, Stiff otherwise
+    Stiff,  ///< stiffened so that its deflection at its limits sinks no fingertip past the bound
     /// its rotational stiffness from the grasp's compliance model, rolling included (bushing_give.h),
     /// and preloaded with the contacts' wrench at engagement: the object turns in the palm under a
     /// load as the model says full contact's would, and the locked fingers follow it by their share
@@ -152,7 +153,7 @@ struct ApproxOptions {
     ApproxHandBack handBack = ApproxHandBack::Engaged;
     /// How the merged bushing gives under a load (Stiff, the default; Model: docs/capacity.md,
     /// "The bushing's rotational give").
-    ApproxBushingGive bushingGive = ApproxBushingGive::Stiff;
+    ApproxBushingGive bushingGive = ApproxBushingGive::Automatic;
 };
 
 /// ApproxOptions::releaseGive's default (m): the model's slip onset, the capacity protocol's 2 mm.
@@ -241,7 +242,8 @@ void checkIntegratorChoice(const scenario::Scenario& scenario, const SimulationO
 /// The approximation's options of a run: `given` over the scenario's `approximation:` section (a
 /// threshold or relaxed axes given to the run win; 0 / unset take the scenario's), checked, before
 /// anything is built (grasp_approximation.h takes only resolved options).
-/// An Automatic release trigger becomes Compliance on the merged bushing and None otherwise.
+/// An Automatic release trigger becomes Compliance on the merged bushing and None otherwise; an
+/// Automatic bushing give becomes Model on the merged bushing and Stiff otherwise.
 /// @throws graspsim::InputError for a negative threshold, Q_M not below a given Q_Th, or a slide
 ///         distance or penetration bound <= 0.
 ApproxOptions resolveApproxOptions(const ApproxOptions& given, const scenario::ApproximationSpec& scenario);

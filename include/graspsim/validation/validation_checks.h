@@ -24,8 +24,10 @@ constexpr double kApproxWindow = 2.0;           ///< s after engagement
 /// approximation check.
 constexpr double kIntegratorPositionError = 0.0005;  ///< m
 constexpr double kIntegratorAngleError = 0.5 * 3.14159265358979323846 / 180.0;  ///< rad (0.5 degree)
-/// Bound of the fingertips' penetration growth beyond their depth at engagement, while engaged
-/// (m): "no visible interpenetration" (the engagement depth itself is the compliant skin's).
+/// Bound of the fingertips' penetration growth beyond their depth at engagement, while engaged,
+/// over full contact's own growth of the same pairs in the same spans (m): "no visible
+/// interpenetration" beyond what the skin's compression under the load gives anyway (the
+/// engagement depth itself is the compliant skin's).
 constexpr double kEngagedPenetrationGrowth = 0.0001;
 /// Bound of the long hold: drift after settling (m).
 constexpr double kLongHoldDrift = 0.001;
@@ -43,6 +45,9 @@ struct RunRecord {
     double referenceSlipOnset = -1;  ///< the reference's slip onset (s)
     bool referenceHeld = false;
     double referenceDisplacement = 0;  ///< the reference's object displacement after settling (m)
+    /// The reference's counterpart of summary.maxEngagedPenetrationGrowth: calcDepthGrowth of the
+    /// pairs the candidate replaced, over the candidate's engaged spans (m).
+    double referenceEngagedGrowth = 0;
 };
 
 /// One bound checked on one run.
@@ -56,6 +61,13 @@ struct ValidationCheck {
     bool pass = false;
     std::string source;  ///< why the bound holds: thesis section, closed form, or physical meaning
 };
+
+/// The largest growth of one contact pair's depth over the samples of `contacts` in
+/// (from, to], beyond its depth in the last sample at or before `from` (0 for a pair not in
+/// contact there), over `pairs` (ascending) only (m, >= 0). A pair with several contact points counts its
+/// deepest. 0 if no sample falls in the span.
+double calcDepthGrowth(const std::vector<simulation::ContactSample>& contacts, const std::vector<int>& pairs, double from,
+                       double to);
 
 /// Fills the comparison fields of `record` from its own and its reference's results.
 void compareWithReference(const simulation::SimulationResult& reference, const simulation::SimulationResult& candidate,
