@@ -21,36 +21,38 @@ SimTK::Mat33 toMat33(const Eigen::Matrix3d& m) {
     return result;
 }
 
-// Each pad's target minus its point now (m, in G), stacked, and the pads' points' Jacobian over
-// the finger joints (one column per finger mobilizer, in G).
-struct FollowResidual {
-    Eigen::VectorXd error;
-    Eigen::MatrixXd jacobian;
-};
-
-FollowResidual calcFollowResidual(const ApproximationContext& context, const SimTK::State& state,
-                                  const std::vector<FollowedPad>& pads) {
+// Each pad's target minus its point now (m, in G), stacked.
+Eigen::VectorXd calcFollowError(const ApproximationContext& context, const SimTK::State& state, const std::vector<FollowedPad>& pads) {
     const SimTK::SimbodyMatterSubsystem& matter = context.model.getMatter();
     context.model.getSystem().realize(state, SimTK::Stage::Position);
     const SimTK::Transform& X_GO = context.object.getBodyTransform(state);
     const SimTK::Transform& X_GH = context.palm.getBodyTransform(state);
-    const Eigen::Index joints = Eigen::Index(context.fingerMobilizers.size());
-    FollowResidual r{Eigen::VectorXd(3 * Eigen::Index(pads.size())), Eigen::MatrixXd::Zero(3 * Eigen::Index(pads.size()), joints)};
+    Eigen::VectorXd error(3 * Eigen::Index(pads.size()));
     for (std::size_t i = 0; i < pads.size(); ++i) {
         const FollowedPad& pad = pads[i];
         const SimTK::Vec3 delta_H = ~X_GH * (X_GO * pad.p_OC) - pad.p_HC;
         const SimTK::Vec3 target_G = X_GH * (pad.p_HC + pad.share_H * delta_H);
         const SimTK::Vec3 e = target_G - matter.getMobilizedBody(pad.segment).findStationLocationInGround(state, pad.p_SC);
+        for (int a = 0; a < 3; ++a) error[3 * Eigen::Index(i) + a] = e[a];
+    }
+    return error;
+}
+
+// The pads' points' Jacobian over the finger joints (one column per finger mobilizer, in G), stacked
+// as calcFollowError's rows. Needs Stage::Position.
+Eigen::MatrixXd calcPadJacobian(const ApproximationContext& context, const SimTK::State& state, const std::vector<FollowedPad>& pads) {
+    const SimTK::SimbodyMatterSubsystem& matter = context.model.getMatter();
+    const Eigen::Index joints = Eigen::Index(context.fingerMobilizers.size());
+    Eigen::MatrixXd jacobian = Eigen::MatrixXd::Zero(3 * Eigen::Index(pads.size()), joints);
+    for (std::size_t i = 0; i < pads.size(); ++i) {
         SimTK::Matrix J;
-        matter.calcStationJacobian(state, pad.segment, pad.p_SC, J);
-        const Eigen::Index row = 3 * Eigen::Index(i);
+        matter.calcStationJacobian(state, pads[i].segment, pads[i].p_SC, J);
         for (Eigen::Index k = 0; k < joints; ++k) {
             const int u = int(matter.getMobilizedBody(context.fingerMobilizers[std::size_t(k)]).getFirstUIndex(state));
-            for (int a = 0; a < 3; ++a) r.jacobian(row + a, k) = J(a, u);
+            for (int a = 0; a < 3; ++a) jacobian(3 * Eigen::Index(i) + a, k) = J(a, u);
         }
-        for (int a = 0; a < 3; ++a) r.error[row + a] = e[a];
     }
-    return r;
+    return jacobian;
 }
 
 double findLargestPadDistance(const Eigen::VectorXd& stacked) {
@@ -106,10 +108,14 @@ FollowedGrasp captureFollowedGrasp(const ApproximationContext& context, const Si
 // least-norm least-squares y of (J L) y = e is the least-energy move.
 void followObjectGive(const ApproximationContext& context, SimTK::State& state, const FollowedGrasp& grasp, double tolerance) {
     if (grasp.pads.empty()) return;
-    const FollowResidual r = calcFollowResidual(context, state, grasp.pads);
+    // J dq is e projected orthogonally onto what the joints can reach, so no pad moves farther
+    // than |e|: below the tolerance the least-squares solve is skipped (most checks of a hold).
+    const Eigen::VectorXd error = calcFollowError(context, state, grasp.pads);
+    if (!(error.norm() > tolerance)) return;
+    const Eigen::MatrixXd jacobian = calcPadJacobian(context, state, grasp.pads);
     const Eigen::MatrixXd& L = grasp.jointComplianceRoot;
-    const Eigen::VectorXd dq = L * (r.jacobian * L).completeOrthogonalDecomposition().solve(r.error);
-    if (!(findLargestPadDistance(r.jacobian * dq) > tolerance)) return;
+    const Eigen::VectorXd dq = L * (jacobian * L).completeOrthogonalDecomposition().solve(error);
+    if (!(findLargestPadDistance(jacobian * dq) > tolerance)) return;
     const SimTK::SimbodyMatterSubsystem& matter = context.model.getMatter();
     for (std::size_t k = 0; k < context.fingerMobilizers.size(); ++k) {
         const SimTK::MobilizedBody& joint = matter.getMobilizedBody(context.fingerMobilizers[k]);
