@@ -173,9 +173,6 @@ ApproxOptions resolveApproxOptions(const ApproxOptions& given, const scenario::A
     if (!options.relaxedAxes) options.relaxedAxes = scenario.relaxedAxes;
     if (options.releaseTrigger == ApproxReleaseTrigger::Automatic) {
         const bool mergedBushing = options.constraint == ApproxConstraint::Bushing && options.attach == ApproxAttach::Merged;
-    if (options.bushingGive == ApproxBushingGive::Automatic) {
-        options.bushingGive = mergedBushing ? ApproxBushingGive::Model : ApproxBushingGive::Stiff;
-    }
         options.releaseTrigger = mergedBushing ? ApproxReleaseTrigger::Compliance : ApproxReleaseTrigger::None;
     }
     if (!(options.qThreshold >= 0) || !(options.qMinimum >= 0)) {

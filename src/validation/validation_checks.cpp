@@ -97,8 +97,7 @@ std::map<int, double> findPairDepths(const simulation::ContactSample& sample, co
 
 // The candidate's engaged spans, each from an engagement to the release after it (or the end).
 double calcEngagedGrowth(const simulation::SimulationResult& reference, const simulation::SimulationResult& candidate) {
-    std::vector<int> pairs = candidate.replacedPairs;
-    std::sort(pairs.begin(), pairs.end());
+    const std::vector<int>& pairs = candidate.replacedPairs;
     double growth = 0, engagedAt = -1;
     for (const simulation::GraspEvent& e : candidate.events) {
         if (e.kind == simulation::GraspEventKind::Engage && engagedAt < 0) engagedAt = e.time;

@@ -28,11 +28,6 @@ TEST(BushingGive, ModelIsParsedAndNeedsTheMergedBushing) {
     EXPECT_THROW(simulation::resolveApproxOptions(options, {}), InputError);
 }
 
-// The phone pulled along x by a quarter of full contact's ramp slip onset (0.789 N; docs/capacity.md,
-// "Below capacity, every force direction"), from just after the engagement, for 1 s. Full contact
-// pivots the phone in the pinch by about 2 mm, which the stiff bushing does not (2.23 mm apart).
-// With the model's rotational give the approximation stays engaged and follows full contact
-// within the 2 mm (measured 1.18 mm).
 // The default gives on the merged bushing only; the weld and the multi-bushing keep theirs.
 TEST(BushingGive, TheDefaultIsTheModelOnTheMergedBushingOnly) {
     simulation::ApproxOptions options;
@@ -45,6 +40,11 @@ TEST(BushingGive, TheDefaultIsTheModelOnTheMergedBushingOnly) {
     EXPECT_EQ(simulation::resolveApproxOptions(options, {}).bushingGive, simulation::ApproxBushingGive::Stiff);
 }
 
+// The phone pulled along x by a quarter of full contact's ramp slip onset (0.789 N; docs/capacity.md,
+// "Below capacity, every force direction"), from just after the engagement, for 1 s. Full contact
+// pivots the phone in the pinch by about 2 mm, which the stiff bushing does not (2.23 mm apart).
+// With the model's rotational give the approximation stays engaged and follows full contact
+// within the 2 mm (measured 1.18 mm).
 TEST(BushingGive, APhonePulledAtAQuarterOfItsCapacityFollowsFullContactEngaged) {
     scenario::Scenario s = scenario::findBuiltinScenario("phone-pinch");
     scenario::Perturbation pull;

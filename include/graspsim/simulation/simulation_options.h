@@ -151,8 +151,8 @@ struct ApproxOptions {
     /// The state full contact starts from at a compliance-trigger release (Engaged, the default;
     /// Deflected needs the compliance trigger).
     ApproxHandBack handBack = ApproxHandBack::Engaged;
-    /// How the merged bushing gives under a load (Stiff, the default; Model: docs/capacity.md,
-    /// "The bushing's rotational give").
+    /// How the merged bushing gives under a load (Automatic, the default: Model on the merged
+    /// bushing; docs/capacity.md, "The bushing's rotational give").
     ApproxBushingGive bushingGive = ApproxBushingGive::Automatic;
 };
 
