@@ -48,7 +48,9 @@ CapacityFigures findCapacityFigures(const std::vector<CapacitySample>& samples, 
     if (!samples.empty()) figures.gripForceAtStart = samples.front().gripForce;
     for (std::size_t k = 0; k < samples.size(); ++k) {
         const CapacitySample& s = samples[k];
-        if (!figures.released && k > 0 && samples[k - 1].engaged == 1 && s.engaged == 0) {
+        // A first sample already released: handed back at the load's start (the run was engaged up
+        // to it, or it would not have been sampled).
+        if (!figures.released && s.engaged == 0 && (k == 0 || samples[k - 1].engaged == 1)) {
             figures.released = true;
             figures.releaseLoad = s.load;
             figures.releaseTime = s.time;

@@ -49,7 +49,7 @@ public:
     void captureReference() override {
         checkHeldAtLoadStart();
         const simulation::GraspSwitch* grasp = findSwitch();
-        if (grasp && !grasp->isEngaged(getState())) {
+        if (grasp && !isEngagedUpToNow(*grasp)) {
             // At fixed steps a grasp that never settles is the likelier cause: a step too long to
             // hold it, below what the stepper refuses (docs/performance.md).
             const bool fixed = options_.integrator == simulation::IntegratorChoice::LinearlyImplicitFixed;
@@ -85,6 +85,15 @@ public:
 
 private:
     const simulation::GraspSwitch* findSwitch() const { return experiment_.findSwitch(); }
+
+    // A step load the grasp cannot carry is handed back at its start (the compliance trigger sees
+    // the load itself): the grasp was engaged up to the load.
+    bool isEngagedUpToNow(const simulation::GraspSwitch& grasp) const {
+        if (grasp.isEngaged(getState())) return true;
+        const std::vector<simulation::GraspEvent>& events = grasp.getEvents(getState());
+        return !events.empty() && events.back().kind == simulation::GraspEventKind::Release &&
+               events.back().time >= getState().getTime();
+    }
 
     // A grasp that has lost its object before the load has no capacity to measure: its slip and
     // drop would both read 0 at the first sample, a figure of the fall, not of the grasp.

@@ -44,14 +44,14 @@ ComplianceReleaseLimits calcComplianceLimits(const ApproximationContext& context
     return result;
 }
 
-std::string findAxisAtLimit(const SimTK::Vec6& wrench, const ComplianceReleaseLimits& limits) {
+std::string findAxisAtLimit(const SimTK::Vec6& wrench, const ComplianceReleaseLimits& limits, const char* name) {
     for (int k = 0; k < 6; ++k) {
         const double limit = wrench[k] >= 0 ? limits.upper[k] : -limits.lower[k];
         if (std::abs(wrench[k]) < std::abs(limit)) continue;
         const bool atSlipOnset = wrench[k] >= 0 ? limits.upperAtSlipOnset[k] : limits.lowerAtSlipOnset[k];
         const char* unit = k < 3 ? "N m" : "N";
         char text[200];
-        std::snprintf(text, sizeof text, "constraint reaction on %s %.6g %s reached the %s %.6g %s", kAxisNames[k], wrench[k],
+        std::snprintf(text, sizeof text, "%s on %s %.6g %s reached the %s %.6g %s", name, kAxisNames[k], wrench[k],
                       unit, atSlipOnset ? "constraint's slip onset" : "compliance limit", limit, unit);
         return text;
     }

@@ -18,6 +18,7 @@ GraspExperiment::GraspExperiment(const scenario::Scenario& scenario, const Simul
     scene_ = std::make_unique<GraspScene>(scenario, options);
     if (approx) approximation_ = std::make_unique<GraspApproximation>(*scene_, *approx);
     loads_ = std::make_unique<ObjectLoads>(scene_->updModel(), scene_->getObject(), scenario, options);
+    if (approximation_) approximation_->setObjectLoads(*loads_);
     scene_->updModel().realizeTopology();
 }
 

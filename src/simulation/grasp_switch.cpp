@@ -202,7 +202,8 @@ public:
     SimTK::Real getValue(const SimTK::State& state) const override {
         const std::optional<ComplianceReleaseLimits>& limits = grasp_.getRecord(state).releaseLimits;
         if (!limits || !grasp_.isEngaged(state)) return 1.0;
-        return findLimitMargin(grasp_.findReactionInO(state), *limits);
+        const double margin = findLimitMargin(grasp_.findReactionInO(state), *limits);
+        return grasp_.loads_ ? std::min(margin, findLimitMargin(grasp_.findCarriedLoadInO(state), *limits)) : margin;
     }
 
     void handleEvent(SimTK::State& state, SimTK::Real, bool& shouldTerminate) const override {
@@ -463,7 +464,14 @@ std::string GraspSwitch::describeRelease(const SimTK::State& state, double quali
 // the frame of the limits) has reached the compliance model's limit; empty if none has.
 std::string GraspSwitch::describeComplianceRelease(const SimTK::State& state, const ComplianceReleaseLimits& limits) const {
     context_.model.getSystem().realize(state, context_.attachment.getReactionStage());
-    return findComplianceLimitReached(findReactionInO(state), limits);
+    std::string reason = findComplianceLimitReached(findReactionInO(state), limits);
+    if (!reason.empty() || !loads_) return reason;
+    const char* const carried = "carried load (gravity and external loads)";
+    const SimTK::Vec6 load = findCarriedLoadInO(state);
+    reason = findAxisAtLimit(load, limits, carried);
+    if (!reason.empty()) return reason;
+    reason = findDirectionAtLimit(load, limits);
+    return reason.empty() ? reason : std::string(carried) + ": " + reason;
 }
 
 SimTK::Vec6 GraspSwitch::findReactionInO(const SimTK::State& state) const {
@@ -475,8 +483,21 @@ SimTK::Vec6 GraspSwitch::findReactionInO(const SimTK::State& state) const {
     return reaction;
 }
 
-// A deflected hand-back only where the compliance limits are what was reached: at the other
-// rules' releases the constraint may have slid, and its reaction is not the load the model meant.
+// What the constraint would carry with the object at rest, as its reaction is expressed: the
+// moment about O's origin, the centre of mass, where gravity and the loads' forces act.
+SimTK::Vec6 GraspSwitch::findCarriedLoadInO(const SimTK::State& state) const {
+    const SimTK::SpatialVec external_G = loads_->findWrenchAt(state.getTime());
+    const SimTK::Vec3 weight_G = context_.object.getBodyMass(state) * context_.model.getGravity().getGravityVector(state);
+    const SimTK::Rotation R_OG = ~context_.object.getBodyTransform(state).R();
+    const SimTK::Vec3 moment_O = -(R_OG * external_G[0]), force_O = -(R_OG * (external_G[1] + weight_G));
+    SimTK::Vec6 carried;
+    for (int k = 0; k < 3; ++k) carried[k] = moment_O[k], carried[k + 3] = force_O[k];
+    return carried;
+}
+
+// A deflected hand-back only where the compliance limits are what was reached (by the reaction or
+// else the carried load, deflected by whichever reached them): at the other rules' releases the
+// constraint may have slid, and its reaction is not the load the model meant.
 void GraspSwitch::release(SimTK::State& state, double quality, const std::string& reason) const {
     const SimTK::MultibodySystem& system = context_.model.getSystem();
     system.realize(state, SimTK::Stage::Velocity);
@@ -484,8 +505,9 @@ void GraspSwitch::release(SimTK::State& state, double quality, const std::string
     const std::optional<ComplianceReleaseLimits>& limits = getRecord(state).releaseLimits;
     std::optional<HandBackDeflection> deflection;
     if (options_.handBack == ApproxHandBack::Deflected && limits) {
-        const SimTK::Vec6 reaction = findReactionInO(state);
-        if (!findComplianceLimitReached(reaction, *limits).empty()) deflection = calcHandBackDeflection(context_, state, *limits, reaction);
+        SimTK::Vec6 load = findReactionInO(state);
+        if (loads_ && findComplianceLimitReached(load, *limits).empty()) load = findCarriedLoadInO(state);
+        if (!findComplianceLimitReached(load, *limits).empty()) deflection = calcHandBackDeflection(context_, state, *limits, load);
     }
     context_.attachment.release(state);
     if (!multi_) setFingersMerged(state, false);  // multi never merges them

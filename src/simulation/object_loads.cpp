@@ -18,4 +18,14 @@ ObjectLoads::ObjectLoads(system::MultibodyModel& model, const SimTK::MobilizedBo
     if (options.loadRamp) loadRamp_ = std::make_unique<RampLoad>(model.updForces(), object, *options.loadRamp);
 }
 
+SimTK::SpatialVec ObjectLoads::findWrenchAt(double t) const {
+    SimTK::SpatialVec wrench(SimTK::Vec3(0), SimTK::Vec3(0));
+    if (perturbation_) wrench[1] += perturbation_->findForceAt(t);
+    if (loadRamp_) {
+        const LoadRampSpec& spec = loadRamp_->getSpec();
+        wrench[spec.torque ? 0 : 1] += loadRamp_->findMagnitudeAt(t) * SimTK::Vec3(spec.direction);
+    }
+    return wrench;
+}
+
 }  // namespace graspsim::simulation

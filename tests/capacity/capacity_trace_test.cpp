@@ -76,6 +76,16 @@ TEST(CapacityTrace, TheReleaseIsTheFirstSampleNoLongerEngaged) {
     EXPECT_FALSE(findCapacityFigures(samples, SlipCriteria{}).released);
 }
 
+// A step handed back at once: the first sample (the load's start) is already released.
+TEST(CapacityTrace, AFirstSampleNoLongerEngagedIsAReleaseAtTheStart) {
+    std::vector<CapacitySample> samples{makeSample(1, 8, 0), makeSample(1.001, 8, 0.0005)};
+    samples[0].engaged = samples[1].engaged = 0;
+    const auto f = findCapacityFigures(samples, SlipCriteria{});
+    ASSERT_TRUE(f.released);
+    EXPECT_EQ(f.releaseTime, 1);
+    EXPECT_EQ(f.releaseLoad, 8);
+}
+
 // The grip force is read at the load's start and, at the slip onset, interpolated as the load is:
 // linear in time here (20 + 5 t N), so at the onset it is 20 + 5 t_onset to rounding. A grip not measured on
 // either side of the crossing (NaN: the approximation engaged there) stays unmeasured.

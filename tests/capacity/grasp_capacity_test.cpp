@@ -204,6 +204,36 @@ TEST(GraspCapacity, TheGivesFollowingFingersHandTheBallsTurnBackWithoutAJump) {
     EXPECT_NEAR(a.slipOnsetLoad, f.slipOnsetLoad, 0.1 * f.slipOnsetLoad);
 }
 
+// A step of 1.25 x full contact's ramp onset about the ball's x. The bushing that gives turns under
+// a step before its reaction reaches the compliance limits: the reaction alone handed back 4 ms
+// into the load and the ball slipped at 18.8 ms against full contact's 21.8 ms (-14 %). The
+// trigger also sees the load the grasp carries (gravity and the external loads), which has reached
+// the limits at the step itself. Oracle: full contact under the same step (the second method), same
+// stepper and accuracy: handed back at the load's start (the first 1 ms sample), and the onset time
+// within 10 %, the criterion (measured 22.05 ms against 21.8, +1.1 %).
+TEST(GraspCapacity, AStepBeyondTheLimitsIsHandedBackAtItsStartAboutBallX) {
+    const scenario::Scenario ball = scenario::findBuiltinScenario("ball-clutch");
+    GraspCapacityRequest request = makeTorque(SimTK::Vec3(1, 0, 0));
+    request.maxRampDuration = 1.5;
+    simulation::SimulationOptions options;
+    options.integrator = simulation::IntegratorChoice::LinearlyImplicit;
+    options.accuracy = 3e-4;
+    const GraspCapacity ramp = measureGraspCapacityRamp(ball, options, request);
+    ASSERT_TRUE(ramp.trace.figures.slipped);
+    const double load = 1.25 * ramp.trace.figures.slipOnsetLoad;
+    const GraspCapacity fullHeld = measureGraspCapacityConstant(ball, options, request, load, 0.1);
+    options.mode = simulation::SimulationMode::Approx;
+    const GraspCapacity approxHeld = measureGraspCapacityConstant(ball, options, request, load, 0.1);
+    const OverloadFigures f = findOverloadFigures(fullHeld.trace.figures, fullHeld.start);
+    const OverloadFigures a = findOverloadFigures(approxHeld.trace.figures, approxHeld.start);
+    ASSERT_TRUE(f.slipped);
+    ASSERT_TRUE(a.slipped);
+    ASSERT_TRUE(a.released);
+    EXPECT_LE(a.releaseTime, kOverloadSampleInterval + 1e-9);
+    EXPECT_NE(approxHeld.trace.releaseReason.find("carried load"), std::string::npos) << approxHeld.trace.releaseReason;
+    EXPECT_NEAR(a.slipOnsetTime, f.slipOnsetTime, 0.1 * f.slipOnsetTime);
+}
+
 // The deflected hand-back on the ball tripod's -y, where full contact's ball has given 1.9 mm and
 // rolled 0.33 rad by the load of the release (0.72 N). Oracle: full contact's own ramp (the second
 // method) at the first sample after the release: handed back engaged, the object is where the

@@ -60,7 +60,9 @@ struct CapacityFigures {
     bool dropped = false;
     double dropLoad = 0;       ///< N or N m (valid if dropped)
     double dropTime = 0;       ///< s
-    bool released = false;     ///< the approximation released during the load (engaged 1 -> 0)
+    /// the approximation released during the load (engaged 1 -> 0, or 0 at the load's start: a
+    /// step it handed back at once)
+    bool released = false;
     double releaseLoad = 0;    ///< N or N m, at the first sample after the release
     double releaseTime = 0;    ///< s, that sample's time
     /// Grip force (N) at the first sample (the load's start), NaN where not measured there.

@@ -89,8 +89,10 @@ std::string findDirectionAtLimit(const SimTK::Vec6& wrench, const ComplianceRele
 std::string findComplianceLimitReached(const SimTK::Vec6& wrench, const ComplianceReleaseLimits& limits);
 
 /// The first axis side on which `wrench` (on the object about O's origin, along O's axes, moment
-/// first: N m, N) has reached `limits`, described with both numbers; empty if it is inside on every axis.
-std::string findAxisAtLimit(const SimTK::Vec6& wrench, const ComplianceReleaseLimits& limits);
+/// first: N m, N) has reached `limits`, described with both numbers and `name` (what the wrench is);
+/// empty if it is inside on every axis.
+std::string findAxisAtLimit(const SimTK::Vec6& wrench, const ComplianceReleaseLimits& limits,
+                            const char* name = "constraint reaction");
 
 /// The smallest distance (N m or N, mixed) of `wrench` from the side of `limits` it points to:
 /// zero or negative once a side is reached (findAxisAtLimit).

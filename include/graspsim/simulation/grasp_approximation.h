@@ -52,6 +52,8 @@ public:
     /// The grasp switch (owned by the scene's System, as Simbody owns event handlers).
     const GraspSwitch& getSwitch() const { return *switch_; }
     const ApproximationContext& getContext() const { return *context_; }
+    /// Lets the switch's compliance trigger see the run's external loads (GraspSwitch::setObjectLoads).
+    void setObjectLoads(const ObjectLoads& loads) { switch_->setObjectLoads(loads); }
 
 private:
     grasp::LimitedBushing bushing_;

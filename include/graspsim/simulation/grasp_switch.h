@@ -85,6 +85,7 @@
 #include "graspsim/simulation/compliance_release.h"
 #include "graspsim/simulation/engaged_grasp_tracker.h"
 #include "graspsim/simulation/finger_follow.h"
+#include "graspsim/simulation/object_loads.h"
 #include "graspsim/simulation/simulation_options.h"
 
 #include "graspsim/simbody.h"
@@ -185,6 +186,12 @@ public:
     double calcEngagedQuality(const SimTK::State& state) const;
     /// The contacts tracked while engaged and the penetration measured up to `state`.
     const EngagedGraspTracker& getTracker(const SimTK::State& state) const { return getRecord(state).tracker; }
+    /// The run's external loads on the object (they are added after the switch). With them, the
+    /// compliance trigger also releases once the load the grasp carries, gravity and `loads` on the
+    /// object at rest, reaches the compliance limits: the reaction of a bushing that gives lags that
+    /// load under a step (docs/capacity.md, "The carried load"). Set before the topology is realized;
+    /// `loads` must outlive the switch.
+    void setObjectLoads(const ObjectLoads& loads) { loads_ = &loads; }
 
 private:
     class DetachWitness;
@@ -205,6 +212,7 @@ private:
     std::string describeRelease(const SimTK::State& state, double quality) const;
     std::string describeComplianceRelease(const SimTK::State& state, const ComplianceReleaseLimits& limits) const;
     SimTK::Vec6 findReactionInO(const SimTK::State& state) const;
+    SimTK::Vec6 findCarriedLoadInO(const SimTK::State& state) const;
     std::string describeEngagement(double qThreshold, const grasp::AttachmentEngagement& engagement) const;
     double findVelocityJump(SimTK::State& state, const SimTK::Vec3& v_before) const;
 
@@ -214,6 +222,7 @@ private:
     std::vector<std::string> goalBodies_;  // body of each goal end-effector
 
     const RecordKeeper* keeper_ = nullptr;  // owned by the force subsystem
+    const ObjectLoads* loads_ = nullptr;
 };
 
 }  // namespace graspsim::simulation

@@ -61,9 +61,11 @@ enum class ApproxReleaseTrigger {
     /// (resolveApproxOptions decides).
     Automatic,
     None,  ///< only the switch's own rules (slide, penetration, goal distance, Q < Q_M): the thesis's
-    /// also release once the constraint's reaction reaches, on any axis side, the two-sided limit
-    /// the grasp's compliance model predicts at engagement (grasp/compliance_limits.h, computed as
-    /// for --limits compliance); the constraint keeps its own limits. Bushing and merged only.
+    /// also release once the constraint's reaction, or the load the grasp carries (gravity and the
+    /// run's external loads on the object, GraspSwitch::setObjectLoads), reaches, on any axis side,
+    /// the two-sided limit the grasp's compliance model predicts at engagement
+    /// (grasp/compliance_limits.h, computed as for --limits compliance); the constraint keeps its
+    /// own limits. Bushing and merged only.
     Compliance
 };
 
