@@ -1,6 +1,6 @@
 #include "capacity_command.h"
 
-#include "approx_only_options.h"
+#include "approx_flags.h"
 #include "capsule_contact_option.h"
 #include "friction_option.h"
 #include "number_option.h"
@@ -48,17 +48,10 @@ struct CapacityCommand::Options {
     std::string friction;
     std::string capsuleContact;
     std::string mode = "full";
-    std::string constraint = "bushing";
-    std::string attach = "merged";
+    ApproxFlags approx;
     std::string releaseSlide;
     std::string releasePenetration;
-    std::string qMinimum;
     std::string limitsFriction;
-    std::string limits = "thesis";
-    std::string releaseAt = "auto";
-    std::string releaseGive;
-    std::string handBack = "engaged";
-    std::string bushingGive = "auto";
     std::string accuracy;
     std::string integrator = "auto";
     std::string stepSize;
@@ -123,40 +116,17 @@ CapacityCommand::CapacityCommand(CLI::App& app) : options_(std::make_shared<Opti
                          "default: the scenario's contact.capsule_contact) or ends (each end of its core: continuous as it "
                          "tilts through lying flat; docs/contact.md)");
     command_->add_option("--mode", o.mode, "full (default) or approx");
-    command_->add_option("--constraint", o.constraint, "approx: bushing (default) or weld");
-    command_->add_option("--attach", o.attach, "approx: merged (default) or multi");
+    addApproxFlags(*command_, o.approx);
     command_->add_option("--release-slide", o.releaseSlide,
                          "approx: release when the object slid this far in the hand, m (default 0.005)");
     command_->add_option("--release-penetration", o.releasePenetration,
                          "approx: release when a fingertip sank this much deeper into the object, m (default 0.0005)");
-    command_->add_option("--q-minimum", o.qMinimum, "approx: grasp quality Q_M (N) below which to release (default: 0.5 x Q_Th)");
     command_->add_option("--limits-friction", o.limitsFriction,
                          "approx: the friction coefficient of the constraint's limits, dynamic or static (default: dynamic, "
                          "static for --limits compliance)");
-    command_->add_option("--limits", o.limits,
-                         "approx: the constraint's friction limits, thesis (default: one box), contact (per axis) or "
-                         "compliance (two-sided per axis, from the grasp's compliance model; bushing, merged)");
-    command_->add_option("--release-give", o.releaseGive,
-                         "approx: the compliance release trigger's onset: hand the object back once the grasp's "
-                         "compliance model says full contact would have let it give this far at the grasp goals, m "
-                         "(default 0.002, the model's slip onset)");
     command_->add_flag("--rolling", o.rolling,
                        "compliance: the model adds the contacts' rolling stiffness (their forces turning as the object rolls "
                        "on the pads; research option, docs/capacity.md); default: the contacts' geometry frozen");
-    command_->add_option("--bushing-give", o.bushingGive,
-                         "approx: how the merged bushing gives under a load: auto (default: model on the merged bushing), model "
-                         "(its rotational stiffness from the grasp's compliance model, preloaded with the contacts' wrench, "
-                         "the locked fingers following the object's turn; docs/capacity.md) or stiff (stiffened for the "
-                         "penetration bound)");
-    command_->add_option("--hand-back", o.handBack,
-                         "approx: the state full contact takes the object back in at a compliance-trigger release: engaged "
-                         "(default: as the constraint held it) or deflected (object and finger joints deflected as the "
-                         "grasp's compliance model says full contact would be under the carried load)");
-    command_->add_option("--release-at", o.releaseAt,
-                         "approx: an extra release rule: compliance (release once the constraint's reaction reaches the "
-                         "grasp's compliance-model limit on any axis side, or the model's onset along the load's own "
-                         "direction; bushing, merged), none (the thesis's rules only) or auto (default: compliance on the "
-                         "merged bushing, none otherwise)");
     command_->add_option("--jobs", o.jobs,
                          "directions measured at once, each on its own thread (default 1; the figures do not depend on it)");
     command_->add_option("--out", o.out, "output folder; receives capacity.json and capacity.csv (default: none written)");
@@ -252,27 +222,21 @@ CapacityCommand::Plan CapacityCommand::makePlan() const {
     plan.friction = parseFrictionOption(o.friction, plan.simulation.contact);
     plan.capsuleContact = parseCapsuleContactOption(o.capsuleContact, plan.simulation.contact);
     plan.simulation.mode = simulation::parseSimulationMode(o.mode, "--mode");
-    checkApproxOnlyOptions(*command_, o.mode, {"--constraint", "--attach", "--release-slide", "--release-penetration", "--q-minimum",
-                                               "--limits-friction", "--limits", "--release-at", "--release-give", "--hand-back", "--bushing-give"});
+    std::vector<std::string> approxOnly = getApproxFlagNames();
+    approxOnly.insert(approxOnly.end(), {"--release-slide", "--release-penetration", "--limits-friction"});
+    checkApproxOnlyOptions(*command_, o.mode, approxOnly);
     plan.simulation.accuracy = parseAccuracy(o.accuracy);
     plan.simulation.integrator = simulation::parseIntegratorChoice(o.integrator, "--integrator");
     plan.simulation.stepSize = parseStepSize(o.stepSize);
-    plan.simulation.approx.constraint = simulation::parseApproxConstraint(o.constraint, "--constraint");
-    plan.simulation.approx.attach = simulation::parseApproxAttach(o.attach, "--attach");
+    parseApproxFlags(o.approx, plan.simulation.approx);
     plan.simulation.approx.releaseSlideDistance =
         parsePositiveNumber(o.releaseSlide, "--release-slide", "m").value_or(simulation::ApproxOptions{}.releaseSlideDistance);
     plan.simulation.approx.releasePenetration =
         parsePositiveNumber(o.releasePenetration, "--release-penetration", "m").value_or(simulation::ApproxOptions{}.releasePenetration);
-    plan.simulation.approx.qMinimum = parsePositiveNumber(o.qMinimum, "--q-minimum", "N").value_or(0);
     if (!o.limitsFriction.empty() && o.limitsFriction != "dynamic" && o.limitsFriction != "static") {
         throw InputError("--limits-friction: value '" + o.limitsFriction + "' is not accepted; use dynamic or static");
     }
     if (!o.limitsFriction.empty()) plan.simulation.approx.staticFrictionLimits = o.limitsFriction == "static";
-    plan.simulation.approx.limitModel = grasp::parseFrictionLimitModel(o.limits, "--limits");
-    plan.simulation.approx.releaseTrigger = simulation::parseApproxReleaseTrigger(o.releaseAt, "--release-at");
-    plan.simulation.approx.releaseGive = parseReleaseGive(o.releaseGive);
-    plan.simulation.approx.handBack = simulation::parseApproxHandBack(o.handBack, "--hand-back");
-    plan.simulation.approx.bushingGive = simulation::parseApproxBushingGive(o.bushingGive, "--bushing-give");
     if (o.method != "ramp" && o.method != "bisection" && o.method != "constant" && o.method != "compliance") {
         throw InputError("--method: value '" + o.method + "' is not accepted; use ramp, bisection, constant or compliance");
     }

@@ -1,6 +1,6 @@
 #include "simulate_command.h"
 
-#include "approx_only_options.h"
+#include "approx_flags.h"
 #include "capsule_contact_option.h"
 #include "friction_option.h"
 #include "number_option.h"
@@ -34,19 +34,13 @@ struct SimulateCommand::Options {
     std::string friction;
     std::string capsuleContact;
     std::string mode = "full";
-    std::string constraint = "bushing";
-    std::string attach = "merged";
+    ApproxFlags approx;
     std::string perturbation = "none";
     std::string duration;
     std::string integrator = "auto";
     std::string accuracy;
     std::string stepSize;
-    std::string qThreshold, qMinimum;
-    std::string limits = "thesis";
-    std::string releaseAt = "auto";
-    std::string releaseGive;
-    std::string handBack = "engaged";
-    std::string bushingGive = "auto";
+    std::string qThreshold;
     std::string ramp, rampRate;
     bool rampTorque = false;
     std::string out = "out";
@@ -67,11 +61,7 @@ SimulateCommand::SimulateCommand(CLI::App& app) : options_(std::make_shared<Opti
                          "default: the scenario's contact.capsule_contact) or ends (each end of its core: continuous as it "
                          "tilts through lying flat; docs/contact.md)");
     command_->add_option("--mode", o.mode, "full (default) or approx");
-    command_->add_option("--constraint", o.constraint,
-                         "approx: the friction-limited palm-object constraint, bushing (compliant, default) or weld (rigid)");
-    command_->add_option("--attach", o.attach,
-                         "approx: merged (default: fingers locked to the palm, one palm-object element) or multi "
-                         "(one element spanning the object and every fingertip, fingers free)");
+    addApproxFlags(*command_, o.approx);
     command_->add_option("--perturbation", o.perturbation, "none (default) or a perturbation of the scenario (f1, f2)");
     command_->add_option("--ramp", o.ramp,
                          "also a load on the object growing from zero at the load start of graspsim capacity (settle_time + 0.1 s): "
@@ -89,29 +79,6 @@ SimulateCommand::SimulateCommand(CLI::App& app) : options_(std::make_shared<Opti
                          "implicit: longest step, implicit-fixed: the step, in s, > 0 (default: the scenario's simulation.step_size, 0.005)");
     command_->add_option("--accuracy", o.accuracy, "integrator relative accuracy in (0, 1) (default: the scenario's)");
     command_->add_option("--q-threshold", o.qThreshold, "approx: grasp quality Q_Th (N) to engage (default: 0.8 x the settled grasp's)");
-    command_->add_option("--q-minimum", o.qMinimum, "approx: grasp quality Q_M (N) below which to release (default: 0.5 x Q_Th)");
-    command_->add_option("--limits", o.limits,
-                         "approx: the constraint's friction limits, thesis (default: one box, eq. 4.1-4.3), contact "
-                         "(per axis, from each contact's normal and position) or compliance (two-sided per axis, "
-                         "from the grasp's compliance model; bushing, merged)");
-    command_->add_option("--release-give", o.releaseGive,
-                         "approx: the compliance release trigger's onset: hand the object back once the grasp's "
-                         "compliance model says full contact would have let it give this far at the grasp goals, m "
-                         "(default 0.002, the model's slip onset)");
-    command_->add_option("--bushing-give", o.bushingGive,
-                         "approx: how the merged bushing gives under a load: auto (default: model on the merged bushing), model "
-                         "(its rotational stiffness from the grasp's compliance model, preloaded with the contacts' wrench, "
-                         "the locked fingers following the object's turn; docs/capacity.md) or stiff (stiffened for the "
-                         "penetration bound)");
-    command_->add_option("--hand-back", o.handBack,
-                         "approx: the state full contact takes the object back in at a compliance-trigger release: engaged "
-                         "(default: as the constraint held it) or deflected (object and finger joints deflected as the "
-                         "grasp's compliance model says full contact would be under the carried load)");
-    command_->add_option("--release-at", o.releaseAt,
-                         "approx: an extra release rule: compliance (release once the constraint's reaction reaches the "
-                         "grasp's compliance-model limit on any axis side, or the model's onset along the load's own "
-                         "direction; bushing, merged), none (the thesis's rules only) or auto (default: compliance on the "
-                         "merged bushing, none otherwise)");
     command_->add_option("--out", o.out,
                          "output folder (default out); receives trajectory.csv, contacts.csv, summary.json, scenario.yaml, "
                          "model.urdf, provenance.json (and events.csv, constraint.csv in approx mode), and for OpenSim "
@@ -152,23 +119,17 @@ simulation::SimulationOptions SimulateCommand::parseOptions() const {
     parseFrictionOption(o.friction, options.contact);  // refused before any work
     parseCapsuleContactOption(o.capsuleContact, options.contact);
     options.mode = simulation::parseSimulationMode(o.mode, "--mode");
-    checkApproxOnlyOptions(*command_, o.mode,
-                           {"--constraint", "--attach", "--q-threshold", "--q-minimum", "--limits", "--release-at", "--release-give", "--hand-back", "--bushing-give"});
+    std::vector<std::string> approxOnly = getApproxFlagNames();
+    approxOnly.push_back("--q-threshold");
+    checkApproxOnlyOptions(*command_, o.mode, approxOnly);
     options.duration = parsePositiveNumber(o.duration, "--duration", "s").value_or(0);  // 0: the scenario's
     options.integrator = simulation::parseIntegratorChoice(o.integrator, "--integrator");
     options.accuracy = parseAccuracy(o.accuracy);
     options.stepSize = parseStepSize(o.stepSize);
-    options.approx.constraint = simulation::parseApproxConstraint(o.constraint, "--constraint");
-    options.approx.attach = simulation::parseApproxAttach(o.attach, "--attach");
+    parseApproxFlags(o.approx, options.approx);
     options.approx.qThreshold = parsePositiveNumber(o.qThreshold, "--q-threshold", "N").value_or(0);  // 0: automatic
-    options.approx.qMinimum = parsePositiveNumber(o.qMinimum, "--q-minimum", "N").value_or(0);
-    options.approx.limitModel = grasp::parseFrictionLimitModel(o.limits, "--limits");
-    options.approx.releaseTrigger = simulation::parseApproxReleaseTrigger(o.releaseAt, "--release-at");
-    options.approx.releaseGive = parseReleaseGive(o.releaseGive);
-    options.approx.handBack = simulation::parseApproxHandBack(o.handBack, "--hand-back");
-    options.approx.bushingGive = simulation::parseApproxBushingGive(o.bushingGive, "--bushing-give");
     if (options.approx.qThreshold > 0 && options.approx.qMinimum >= options.approx.qThreshold) {
-        throw InputError("--q-minimum: value " + o.qMinimum + " is not accepted; Q_M must be below --q-threshold " + o.qThreshold);
+        throw InputError("--q-minimum: value " + o.approx.qMinimum + " is not accepted; Q_M must be below --q-threshold " + o.qThreshold);
     }
     return options;
 }

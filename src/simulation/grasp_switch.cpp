@@ -203,7 +203,8 @@ public:
         const std::optional<ComplianceReleaseLimits>& limits = grasp_.getRecord(state).releaseLimits;
         if (!limits || !grasp_.isEngaged(state)) return 1.0;
         const double margin = findLimitMargin(grasp_.findReactionInO(state), *limits);
-        return grasp_.loads_ ? std::min(margin, findLimitMargin(grasp_.findCarriedLoadInO(state), *limits)) : margin;
+        const std::optional<SimTK::Vec6> carried = grasp_.findCarriedLoadInO(state);
+        return carried ? std::min(margin, findLimitMargin(*carried, *limits)) : margin;
     }
 
     void handleEvent(SimTK::State& state, SimTK::Real, bool& shouldTerminate) const override {
@@ -465,12 +466,12 @@ std::string GraspSwitch::describeRelease(const SimTK::State& state, double quali
 std::string GraspSwitch::describeComplianceRelease(const SimTK::State& state, const ComplianceReleaseLimits& limits) const {
     context_.model.getSystem().realize(state, context_.attachment.getReactionStage());
     std::string reason = findComplianceLimitReached(findReactionInO(state), limits);
-    if (!reason.empty() || !loads_) return reason;
+    const std::optional<SimTK::Vec6> load = findCarriedLoadInO(state);
+    if (!reason.empty() || !load) return reason;
     const char* const carried = "carried load (gravity and external loads)";
-    const SimTK::Vec6 load = findCarriedLoadInO(state);
-    reason = findAxisAtLimit(load, limits, carried);
+    reason = findAxisAtLimit(*load, limits, carried);
     if (!reason.empty()) return reason;
-    reason = findDirectionAtLimit(load, limits);
+    reason = findDirectionAtLimit(*load, limits);
     return reason.empty() ? reason : std::string(carried) + ": " + reason;
 }
 
@@ -484,9 +485,13 @@ SimTK::Vec6 GraspSwitch::findReactionInO(const SimTK::State& state) const {
 }
 
 // What the constraint would carry with the object at rest, as its reaction is expressed: the
-// moment about O's origin, the centre of mass, where gravity and the loads' forces act.
-SimTK::Vec6 GraspSwitch::findCarriedLoadInO(const SimTK::State& state) const {
+// moment about O's origin, the centre of mass, where gravity and the loads' forces act. None while
+// no external load acts: the reaction carries gravity itself, the switch engages only inside the
+// limits, and the direction model's margin is the witness's dearest part (graspsim bench's hold).
+std::optional<SimTK::Vec6> GraspSwitch::findCarriedLoadInO(const SimTK::State& state) const {
+    if (!loads_) return std::nullopt;
     const SimTK::SpatialVec external_G = loads_->findWrenchAt(state.getTime());
+    if (external_G[0] == SimTK::Vec3(0) && external_G[1] == SimTK::Vec3(0)) return std::nullopt;
     const SimTK::Vec3 weight_G = context_.object.getBodyMass(state) * context_.model.getGravity().getGravityVector(state);
     const SimTK::Rotation R_OG = ~context_.object.getBodyTransform(state).R();
     const SimTK::Vec3 moment_O = -(R_OG * external_G[0]), force_O = -(R_OG * (external_G[1] + weight_G));
@@ -506,7 +511,8 @@ void GraspSwitch::release(SimTK::State& state, double quality, const std::string
     std::optional<HandBackDeflection> deflection;
     if (options_.handBack == ApproxHandBack::Deflected && limits) {
         SimTK::Vec6 load = findReactionInO(state);
-        if (loads_ && findComplianceLimitReached(load, *limits).empty()) load = findCarriedLoadInO(state);
+        const std::optional<SimTK::Vec6> carried = findCarriedLoadInO(state);
+        if (carried && findComplianceLimitReached(load, *limits).empty()) load = *carried;
         if (!findComplianceLimitReached(load, *limits).empty()) deflection = calcHandBackDeflection(context_, state, *limits, load);
     }
     context_.attachment.release(state);

@@ -212,7 +212,7 @@ private:
     std::string describeRelease(const SimTK::State& state, double quality) const;
     std::string describeComplianceRelease(const SimTK::State& state, const ComplianceReleaseLimits& limits) const;
     SimTK::Vec6 findReactionInO(const SimTK::State& state) const;
-    SimTK::Vec6 findCarriedLoadInO(const SimTK::State& state) const;
+    std::optional<SimTK::Vec6> findCarriedLoadInO(const SimTK::State& state) const;
     std::string describeEngagement(double qThreshold, const grasp::AttachmentEngagement& engagement) const;
     double findVelocityJump(SimTK::State& state, const SimTK::Vec3& v_before) const;
 
