@@ -462,7 +462,8 @@ std::string GraspSwitch::describeRelease(const SimTK::State& state, double quali
 }
 
 // The first axis side on which the constraint's reaction on the object (about O's origin, in O:
-// the frame of the limits) has reached the compliance model's limit; empty if none has.
+// the frame of the limits), or else the carried load, has reached the compliance model's limit;
+// empty if neither has.
 std::string GraspSwitch::describeComplianceRelease(const SimTK::State& state, const ComplianceReleaseLimits& limits) const {
     context_.model.getSystem().realize(state, context_.attachment.getReactionStage());
     std::string reason = findComplianceLimitReached(findReactionInO(state), limits);

@@ -222,7 +222,7 @@ private:
     std::vector<std::string> goalBodies_;  // body of each goal end-effector
 
     const RecordKeeper* keeper_ = nullptr;  // owned by the force subsystem
-    const ObjectLoads* loads_ = nullptr;
+    const ObjectLoads* loads_ = nullptr;  // the run's external loads (setObjectLoads), or none
 };
 
 }  // namespace graspsim::simulation
