@@ -6,39 +6,53 @@
 
 namespace graspsim::cli {
 
+namespace {
+
+// Each shared flag once: its name, where its value goes, and its help.
+struct FlagDefinition {
+    const char* name;
+    std::string ApproxFlags::*value;
+    const char* help;
+};
+
+const FlagDefinition kFlags[] = {
+    {"--constraint", &ApproxFlags::constraint,
+     "approx: the friction-limited palm-object constraint, bushing (compliant, default) or weld (rigid)"},
+    {"--attach", &ApproxFlags::attach,
+     "approx: merged (default: fingers locked to the palm, one palm-object element) or multi (one element spanning the "
+     "object and every fingertip, fingers free)"},
+    {"--q-minimum", &ApproxFlags::qMinimum, "approx: grasp quality Q_M (N) below which to release (default: 0.5 x Q_Th)"},
+    {"--limits", &ApproxFlags::limits,
+     "approx: the constraint's friction limits, thesis (default: one box, eq. 4.1-4.3), contact (per axis, from each "
+     "contact's normal and position) or compliance (two-sided per axis, from the grasp's compliance model; bushing, merged)"},
+    {"--release-give", &ApproxFlags::releaseGive,
+     "approx: the compliance release trigger's onset: hand the object back once the grasp's compliance model says full "
+     "contact would have let it give this far at the grasp goals, m (default 0.002, the model's slip onset)"},
+    {"--bushing-give", &ApproxFlags::bushingGive,
+     "approx: how the merged bushing gives under a load: auto (default: model on the merged bushing), model (its "
+     "rotational stiffness from the grasp's compliance model, preloaded with the contacts' wrench, the locked fingers "
+     "following the object's turn; docs/capacity.md) or stiff (stiffened for the penetration bound)"},
+    {"--hand-back", &ApproxFlags::handBack,
+     "approx: the state full contact takes the object back in at a compliance-trigger release: engaged (default: as the "
+     "constraint held it) or deflected (object and finger joints deflected as the grasp's compliance model says full "
+     "contact would be under the carried load)"},
+    {"--release-at", &ApproxFlags::releaseAt,
+     "approx: an extra release rule: compliance (release once the constraint's reaction, or the load the grasp carries "
+     "(gravity and the external loads), reaches the grasp's compliance-model limit on any axis side, or the model's "
+     "onset along the load's own direction; bushing, merged), none (the thesis's rules only) or auto (default: "
+     "compliance on the merged bushing, none otherwise)"},
+};
+
+}  // namespace
+
 void addApproxFlags(CLI::App& command, ApproxFlags& flags) {
-    command.add_option("--constraint", flags.constraint,
-                       "approx: the friction-limited palm-object constraint, bushing (compliant, default) or weld (rigid)");
-    command.add_option("--attach", flags.attach,
-                       "approx: merged (default: fingers locked to the palm, one palm-object element) or multi "
-                       "(one element spanning the object and every fingertip, fingers free)");
-    command.add_option("--q-minimum", flags.qMinimum, "approx: grasp quality Q_M (N) below which to release (default: 0.5 x Q_Th)");
-    command.add_option("--limits", flags.limits,
-                       "approx: the constraint's friction limits, thesis (default: one box, eq. 4.1-4.3), contact "
-                       "(per axis, from each contact's normal and position) or compliance (two-sided per axis, "
-                       "from the grasp's compliance model; bushing, merged)");
-    command.add_option("--release-give", flags.releaseGive,
-                       "approx: the compliance release trigger's onset: hand the object back once the grasp's "
-                       "compliance model says full contact would have let it give this far at the grasp goals, m "
-                       "(default 0.002, the model's slip onset)");
-    command.add_option("--bushing-give", flags.bushingGive,
-                       "approx: how the merged bushing gives under a load: auto (default: model on the merged bushing), model "
-                       "(its rotational stiffness from the grasp's compliance model, preloaded with the contacts' wrench, "
-                       "the locked fingers following the object's turn; docs/capacity.md) or stiff (stiffened for the "
-                       "penetration bound)");
-    command.add_option("--hand-back", flags.handBack,
-                       "approx: the state full contact takes the object back in at a compliance-trigger release: engaged "
-                       "(default: as the constraint held it) or deflected (object and finger joints deflected as the "
-                       "grasp's compliance model says full contact would be under the carried load)");
-    command.add_option("--release-at", flags.releaseAt,
-                       "approx: an extra release rule: compliance (release once the constraint's reaction, or the load "
-                       "the grasp carries (gravity and the external loads), reaches the grasp's compliance-model limit on "
-                       "any axis side, or the model's onset along the load's own direction; bushing, merged), none (the "
-                       "thesis's rules only) or auto (default: compliance on the merged bushing, none otherwise)");
+    for (const FlagDefinition& flag : kFlags) command.add_option(flag.name, flags.*flag.value, flag.help);
 }
 
 std::vector<std::string> getApproxFlagNames() {
-    return {"--constraint", "--attach", "--q-minimum", "--limits", "--release-at", "--release-give", "--hand-back", "--bushing-give"};
+    std::vector<std::string> names;
+    for (const FlagDefinition& flag : kFlags) names.emplace_back(flag.name);
+    return names;
 }
 
 void parseApproxFlags(const ApproxFlags& flags, simulation::ApproxOptions& options) {
