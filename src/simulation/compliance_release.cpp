@@ -149,9 +149,11 @@ double findDirectionMargin(const SimTK::Vec6& wrench, const ComplianceReleaseLim
     return (std::min(onset, 2.0) - 1) * load.norm();
 }
 
-std::string findComplianceLimitReached(const SimTK::Vec6& wrench, const ComplianceReleaseLimits& limits) {
-    const std::string axis = findAxisAtLimit(wrench, limits);
-    return axis.empty() ? findDirectionAtLimit(wrench, limits) : axis;
+std::string findComplianceLimitReached(const SimTK::Vec6& wrench, const ComplianceReleaseLimits& limits, const char* name) {
+    const std::string axis = name ? findAxisAtLimit(wrench, limits, name) : findAxisAtLimit(wrench, limits);
+    if (!axis.empty()) return axis;
+    const std::string direction = findDirectionAtLimit(wrench, limits);
+    return name && !direction.empty() ? std::string(name) + ": " + direction : direction;
 }
 
 double findAxisMargin(const SimTK::Vec6& wrench, const ComplianceReleaseLimits& limits) {

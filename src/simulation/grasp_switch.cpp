@@ -466,14 +466,10 @@ std::string GraspSwitch::describeRelease(const SimTK::State& state, double quali
 // empty if neither has.
 std::string GraspSwitch::describeComplianceRelease(const SimTK::State& state, const ComplianceReleaseLimits& limits) const {
     context_.model.getSystem().realize(state, context_.attachment.getReactionStage());
-    std::string reason = findComplianceLimitReached(findReactionInO(state), limits);
+    const std::string reason = findComplianceLimitReached(findReactionInO(state), limits);
     const std::optional<SimTK::Vec6> load = findCarriedLoadInO(state);
     if (!reason.empty() || !load) return reason;
-    const char* const carried = "carried load (gravity and external loads)";
-    reason = findAxisAtLimit(*load, limits, carried);
-    if (!reason.empty()) return reason;
-    reason = findDirectionAtLimit(*load, limits);
-    return reason.empty() ? reason : std::string(carried) + ": " + reason;
+    return findComplianceLimitReached(*load, limits, "carried load (gravity and external loads)");
 }
 
 SimTK::Vec6 GraspSwitch::findReactionInO(const SimTK::State& state) const {

@@ -85,8 +85,11 @@ grasp::CompliantCapacity followDirectionModel(const ComplianceReleaseLimits& lim
 /// load and the onset; empty if it has not, or without a direction model.
 std::string findDirectionAtLimit(const SimTK::Vec6& wrench, const ComplianceReleaseLimits& limits);
 
-/// findAxisAtLimit, then findDirectionAtLimit: the first reason `wrench` is at the limits.
-std::string findComplianceLimitReached(const SimTK::Vec6& wrench, const ComplianceReleaseLimits& limits);
+/// findAxisAtLimit, then findDirectionAtLimit: the first reason `wrench` is at the limits. With a
+/// `name` (what the wrench is, when it is not the constraint's reaction) the axis text names it
+/// and the direction text is prefixed by it.
+std::string findComplianceLimitReached(const SimTK::Vec6& wrench, const ComplianceReleaseLimits& limits,
+                                       const char* name = nullptr);
 
 /// The first axis side on which `wrench` (on the object about O's origin, along O's axes, moment
 /// first: N m, N) has reached `limits`, described with both numbers and `name` (what the wrench is);
