@@ -15,6 +15,7 @@
 #include "graspsim/capacity/method_options.h"
 #include "graspsim/error.h"
 #include "graspsim/io/atomic_file.h"
+#include "graspsim/capacity/settled_grasps.h"
 #include "graspsim/io/parallel_runs.h"
 #include "graspsim/scenario/scenario_file.h"
 #include "graspsim/simulation/multi_attachment_switch.h"
@@ -271,17 +272,18 @@ std::vector<capacity::GraspCapacity> CapacityCommand::measureAll(const scenario:
     std::vector<std::optional<capacity::GraspCapacity>> measured(plan.requests.size());
     std::mutex printing;
     std::size_t printed = 0;  // lines are printed in the requests' order, each once it and those before it are done
+    capacity::SettledGrasps grasps(scenario, plan.simulation);  // the directions share the settled grasp
     io::runInParallel(plan.requests.size(), plan.jobs, [&](std::size_t k) {
         capacity::GraspCapacityRequest r = plan.requests[k];
         r.rate = findRate(scenario, plan.torqueRateFromForceRate, r);
         capacity::GraspCapacity c;
         if (plan.constant) {
-            c = capacity::measureGraspCapacityConstant(scenario, plan.simulation, r, plan.load, plan.hold);
+            c = capacity::measureGraspCapacityConstant(grasps, r, plan.load, plan.hold);
         } else if (plan.bisection) {
             const double rate = r.rate > 0 ? r.rate : capacity::findDefaultRate(scenario, r.torque);
-            c = capacity::measureGraspCapacityBisection(scenario, plan.simulation, r, plan.guess > 0 ? plan.guess : rate, plan.hold);
+            c = capacity::measureGraspCapacityBisection(grasps, r, plan.guess > 0 ? plan.guess : rate, plan.hold);
         } else {
-            c = capacity::measureGraspCapacityRamp(scenario, plan.simulation, r);
+            c = capacity::measureGraspCapacityRamp(grasps, r);
         }
         const std::lock_guard<std::mutex> lock(printing);
         measured[k] = std::move(c);

@@ -34,8 +34,8 @@ MultiAttachment::MultiAttachment(SimTK::GeneralForceSubsystem& forces, const Sim
         X_OS_.push_back(makeSiteTransform(site));
         fingers_.push_back(site.finger);
         parts_.emplace_back(forces, site.finger, SimTK::Transform(), object, X_OS_.back(), stiffness, damping);
+        p_FA_attached_.emplace_back(forces, SimTK::Stage::Position, SimTK::Vec3(0));
     }
-    p_FA_attached_.assign(sites.size(), SimTK::Vec3(0));
     object_ = object;
 }
 
@@ -87,7 +87,7 @@ void MultiAttachment::attach(SimTK::State& state, int i, const FingerLoad& load,
     const double linear = mu * load.normalForce, angular = mu * load.armRadius * load.normalForce;
     part.setLimits(state, SimTK::Vec6(angular, angular, angular, linear, linear, linear));
     for (int k = 0; k < 6; ++k) part.setAxisLocked(state, static_cast<BushingAxis>(k), k == kNormal);
-    p_FA_attached_[static_cast<std::size_t>(i)] = part.findAnchorTransform(state).p();
+    p_FA_attached_[static_cast<std::size_t>(i)].setValue(state, part.findAnchorTransform(state).p());
 }
 
 void MultiAttachment::detach(SimTK::State& state, int i) const { getPart(i).setEnabled(state, false); }
@@ -107,7 +107,7 @@ double MultiAttachment::findPressingForce(const SimTK::State& state, int i) cons
 }
 
 double MultiAttachment::findSlide(const SimTK::State& state, int i) const {
-    return (getPart(i).findAnchorTransform(state).p() - p_FA_attached_[static_cast<std::size_t>(i)]).norm();
+    return (getPart(i).findAnchorTransform(state).p() - p_FA_attached_[static_cast<std::size_t>(i)].getValue(state)).norm();
 }
 
 void MultiAttachment::engage(SimTK::State& state, const AttachmentEngagement& engagement) const {

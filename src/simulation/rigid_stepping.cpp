@@ -28,11 +28,11 @@ RigidStepper::RigidStepper(const GraspScene& scene, double stepSize)
     stepper_.setConstraintTolerance(kRigidContactTolerance);
 }
 
-void RigidStepper::initialize(const SimTK::State& initial) {
+void RigidStepper::initialize(const SimTK::State& initial, std::optional<double> nextIk) {
     SimTK::State state = initial;
     scene_.getImpedance().setStepSize(state, stepSize_);
     stepper_.initialize(state);
-    nextIk_ = initial.getTime() + scene_.getScenario().controller.ikInterval;
+    nextIk_ = nextIk.value_or(initial.getTime() + scene_.getScenario().controller.ikInterval);
 }
 
 void RigidStepper::stepTo(double t) {

@@ -5,6 +5,7 @@
 #include "graspsim/capacity/capacity_plot.h"
 #include "graspsim/capacity/load_direction.h"
 #include "graspsim/capacity/overload.h"
+#include "graspsim/capacity/settled_grasps.h"
 #include "graspsim/io/parallel_runs.h"
 #include "graspsim/scenario/scenario_file.h"
 #include "graspsim/validation/validation_plan.h"
@@ -14,6 +15,7 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <sstream>
@@ -82,12 +84,10 @@ capacity::OverloadFigures findOverloadTimes(const capacity::GraspCapacity& c) {
 
 // `row`'s constant load: kOverloadFactor x full contact's ramp onset (`full`'s; none if that ramp
 // did not slip), on `row`'s variant.
-void runOverload(const scenario::Scenario& scenario, const Load& load, const CapacityPlan& plan, const CapacityRow& full,
-                 CapacityRow& row) {
+void runOverload(capacity::SettledGrasps& grasps, const Load& load, const CapacityRow& full, CapacityRow& row) {
     const capacity::CapacityFigures& ramp = full.measured.trace.figures;
     if (!ramp.slipped) return;
-    row.overload = capacity::measureGraspCapacityConstant(scenario, makeOptions(row.variant, plan), makeRequest(load),
-                                                          kOverloadFactor * ramp.slipOnsetLoad, kOverloadHold);
+    row.overload = capacity::measureGraspCapacityConstant(grasps, makeRequest(load), kOverloadFactor * ramp.slipOnsetLoad, kOverloadHold);
 }
 
 // `row`'s constant load's slip-onset time set against full contact's (`full`'s), both run.
@@ -185,11 +185,14 @@ void runExperiment(const std::string& experiment, const std::vector<std::string>
         for (const std::string& variant : variants) rows.push_back(CapacityRow{experiment, load.name, variant, {}, false, 0, {}, false, 0});
     }
     const std::size_t count = rows.size() - first;
+    // Each variant's loads, ramps and constant, start from its settled grasp (settled_grasps.h).
+    std::vector<std::unique_ptr<capacity::SettledGrasps>> settled;
+    for (const std::string& variant : variants) settled.push_back(std::make_unique<capacity::SettledGrasps>(scenario, makeOptions(variant, plan)));
     const auto fullOf = [&](std::size_t k) -> const CapacityRow& { return rows[first + k / perLoad * perLoad]; };
     io::runInParallel(count, plan.jobs, [&](std::size_t k) {
         CapacityRow& row = rows[first + k];
         announce(experiment + " " + row.load + " " + row.variant);
-        row.measured = capacity::measureGraspCapacityRamp(scenario, makeOptions(row.variant, plan), makeRequest(loads[k / perLoad]));
+        row.measured = capacity::measureGraspCapacityRamp(*settled[k % perLoad], makeRequest(loads[k / perLoad]));
     });
     for (std::size_t k = 0; k < count; ++k) {
         CapacityRow& row = rows[first + k];
@@ -201,7 +204,7 @@ void runExperiment(const std::string& experiment, const std::vector<std::string>
     }
     io::runInParallel(count, plan.jobs, [&](std::size_t k) {
         announce(experiment + " " + rows[first + k].load + " " + rows[first + k].variant + " constant");
-        runOverload(scenario, loads[k / perLoad], plan, fullOf(k), rows[first + k]);
+        runOverload(*settled[k % perLoad], loads[k / perLoad], fullOf(k), rows[first + k]);
     });
     for (std::size_t k = 0; k < count; ++k) compareOverload(fullOf(k), rows[first + k]);
 }

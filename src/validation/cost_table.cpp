@@ -425,6 +425,7 @@ std::string formatCostTableJson(const CostTable& t) {
                                  {"ramp_wall_s", c.rampWall},
                                  {"ramp_sim_s", c.rampSimTime},
                                  {"simulation_3s_wall_s", c.simulationWall},
+                                 {"all_directions_wall_s", c.allWall},
                                  {"ramp_failure", c.failure}});
     }
     j["wall_time_s"] = t.wallTime;

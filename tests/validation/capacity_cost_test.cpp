@@ -25,6 +25,7 @@ TEST(CapacityCost, TimesTheRampToItsDropAndTheThreeSecondRun) {
     EXPECT_GE(row.rampSimTime, again.trace.figures.dropTime - 1e-12);
     EXPECT_GT(row.rampWall, 0);
     EXPECT_GT(row.simulationWall, 0);
+    EXPECT_GT(row.allWall, 0);
 }
 
 TEST(CapacityCost, TableStatesTheRatio) {
@@ -35,12 +36,15 @@ TEST(CapacityCost, TableStatesTheRatio) {
     row.rampWall = 0.5;
     row.rampSimTime = 5.1;
     row.simulationWall = 0.25;
+    row.allWall = 1.8;
     const std::string text = formatCapacityCostTable({row});
     const std::string line = text.substr(text.find("ball-clutch"));
     EXPECT_NE(line.find("approx"), std::string::npos) << text;
     EXPECT_NE(line.find("implicit"), std::string::npos) << text;
     EXPECT_NE(line.find("(5.10)"), std::string::npos) << text;
     EXPECT_NE(line.find("2.00"), std::string::npos) << text;  // ramp / simulation
+    EXPECT_NE(line.find("0.200"), std::string::npos) << text;  // per direction: 1.8 / 9
+    EXPECT_NE(line.find("0.80"), std::string::npos) << text;   // per direction / simulation
 }
 
 }  // namespace

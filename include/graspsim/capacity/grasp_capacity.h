@@ -57,8 +57,8 @@ void checkLoadResistible(const scenario::Scenario& scenario, const GraspCapacity
 /// When the load starts (s): settle_time + kLoadStartDelay.
 double findLoadStart(const scenario::Scenario& scenario);
 
-/// A factory of loaded grasp runs (GraspScene + its stepper) for runRamp / runBisection. It refers
-/// to `scenario`, which must outlive it.
+/// A factory of loaded grasp runs (GraspScene + its stepper) for runRamp / runBisection, sharing one
+/// settled scene per thread (settled_grasps.h). It refers to `scenario`, which must outlive it.
 /// In approx mode a run throws graspsim::NumericalError if the approximation is not engaged when the
 /// load starts.
 LoadedRunFactory makeGraspRuns(const scenario::Scenario& scenario, const simulation::SimulationOptions& options);
@@ -90,18 +90,27 @@ struct GraspCapacity {
     double wallTime = 0;      ///< s, for all the runs of this measurement
 };
 
-/// Measures along one direction with the ramp.
+class SettledGrasps;
+
+/// Measures along one direction with the ramp, on `grasps`' settled scenes (settled_grasps.h:
+/// measurements of one scenario and options share them).
+GraspCapacity measureGraspCapacityRamp(SettledGrasps& grasps, const GraspCapacityRequest& request);
+/// As above, on scenes of its own.
 GraspCapacity measureGraspCapacityRamp(const scenario::Scenario& scenario, const simulation::SimulationOptions& options,
                                        const GraspCapacityRequest& request);
 
 /// Measures along one direction by bisection over constant loads held `hold` s, bracketed from
-/// [0, `guess`].
+/// [0, `guess`]. Its runs share one settled scene.
+GraspCapacity measureGraspCapacityBisection(SettledGrasps& grasps, const GraspCapacityRequest& request, double guess, double hold);
+/// As above, on a scene of its own.
 GraspCapacity measureGraspCapacityBisection(const scenario::Scenario& scenario, const simulation::SimulationOptions& options,
                                             const GraspCapacityRequest& request, double guess, double hold);
 
 /// Measures along one direction with a constant load of `load` (N or N m, > 0) from the load's start,
 /// held `hold` s (overload.h), sampled every kOverloadSampleInterval (1 ms); request.rate,
 /// maxRampDuration and sampleInterval (the ramp's) are not used.
+GraspCapacity measureGraspCapacityConstant(SettledGrasps& grasps, const GraspCapacityRequest& request, double load, double hold);
+/// As above, on a scene of its own.
 GraspCapacity measureGraspCapacityConstant(const scenario::Scenario& scenario, const simulation::SimulationOptions& options,
                                            const GraspCapacityRequest& request, double load, double hold);
 

@@ -114,9 +114,9 @@ private:
     std::vector<LimitedBushing> parts_;
     std::vector<SimTK::MobilizedBody> fingers_;
     std::vector<SimTK::Transform> X_OS_;
-    // Anchor position in F_i at attach(): an element property outside the State, like the switch's
-    // engagement pose (one forward run).
-    mutable std::vector<SimTK::Vec3> p_FA_attached_;
+    // Anchor position in F_i at attach(), in the State: runs continued from one settled State
+    // (capacity/settled_grasps.h) must not see each other's re-attachments.
+    std::vector<SimTK::Measure_<SimTK::Vec3>::Variable> p_FA_attached_;
 };
 
 }  // namespace graspsim::grasp

@@ -34,6 +34,7 @@ public:
     /// Its grasp switch, nullptr in full mode.
     const GraspSwitch* findSwitch() const { return approximation_ ? &approximation_->getSwitch() : nullptr; }
     const ObjectLoads& getLoads() const { return *loads_; }
+    ObjectLoads& updLoads() { return *loads_; }
 
     /// The scene's state at t = 0 (GraspScene::makeInitialState, which checks it) with the
     /// approximation's attachment released: contact holds the object until the switch engages.

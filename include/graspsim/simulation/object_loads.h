@@ -32,6 +32,7 @@ public:
     const PerturbationForce* getPerturbation() const { return perturbation_.get(); }
     /// The load of SimulationOptions::loadRamp, or nullptr.
     const RampLoad* getLoadRamp() const { return loadRamp_.get(); }
+    RampLoad* updLoadRamp() { return loadRamp_.get(); }
     /// The loads' wrench on the object at time t (s), moment about its centre of mass first
     /// (N m, N; in G): both depend on time only. Zero without loads.
     SimTK::SpatialVec findWrenchAt(double t) const;

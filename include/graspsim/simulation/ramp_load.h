@@ -28,6 +28,10 @@ public:
     /// The load's magnitude at time t (N or N m).
     double findMagnitudeAt(double t) const;
     const LoadRampSpec& getSpec() const { return spec_; }
+    /// Sets the load anew (its start too): between runs of one system that share the stretch before
+    /// the load (capacity/settled_grasps.h). A State realized past Stage::Time under the old load
+    /// must have its Dynamics-stage cache invalidated.
+    void setSpec(const LoadRampSpec& spec) { spec_ = spec; }
 
 private:
     LoadRampSpec spec_;

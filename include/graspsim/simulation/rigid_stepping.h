@@ -22,6 +22,8 @@
 
 #include "graspsim/simbody.h"
 
+#include <optional>
+
 namespace graspsim::simulation {
 
 /// The rigid model's fixed step (s). With the joint impedance implicit, the step is limited by
@@ -45,14 +47,17 @@ public:
     RigidStepper(const GraspScene& scene, double stepSize = kRigidStepSize);
 
     /// Starts at `initial` (GraspScene::makeInitialState()); the next IK update is one
-    /// ik_interval later (makeInitialState() ran the first).
-    void initialize(const SimTK::State& initial);
+    /// ik_interval later (makeInitialState() ran the first), or at `nextIk` (s) when given: a
+    /// run resumed from a state another stepper reached (getNextIkTime()).
+    void initialize(const SimTK::State& initial, std::optional<double> nextIk = std::nullopt);
     /// Steps to time t (s) >= the current time, landing on it exactly.
     void stepTo(double t);
     /// Releases the object now (GraspScene::releaseObject()) and restarts the stepper.
     void releaseObject();
 
     const SimTK::State& getState() const { return stepper_.getState(); }
+    /// When the next IK update is due (s).
+    double getNextIkTime() const { return nextIk_; }
     /// Steps taken since construction (s).
     long getNumSteps() const { return steps_; }
 

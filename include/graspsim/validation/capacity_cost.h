@@ -3,7 +3,8 @@
 /// `graspsim bench`'s capacity table: what one holding-capacity ramp (`graspsim capacity`, the
 /// default −y force at the default rate) costs against one 3 s simulation of the same scene in the
 /// same mode and on the same integrator, timed back to back in one process (issue 17's target:
-/// a ramp costs at most one 3 s simulation).
+/// a ramp costs at most one 3 s simulation), and what a ramp costs as one direction of
+/// `capacity --direction all`, whose nine ramps share the settled grasp (capacity/settled_grasps.h).
 
 #include "graspsim/scenario/scenario.h"
 #include "graspsim/simulation/simulation_options.h"
@@ -13,6 +14,9 @@
 
 namespace graspsim::validation {
 
+/// The loads of `capacity --direction all`.
+constexpr int kAllDirections = 9;
+
 /// One row: a scenario, a mode and an integrator.
 struct CapacityCost {
     std::string scenario;
@@ -21,10 +25,14 @@ struct CapacityCost {
     double rampWall = 0;         ///< s, the whole ramp (scene built, settled, loaded to its drop or end)
     double rampSimTime = 0;      ///< simulated s of the ramp (to its drop or its end)
     double simulationWall = 0;   ///< s, the whole 3 s simulation (scene built, run)
+    /// s, the nine ramps of `capacity --direction all` (six forces, three torques) on one thread,
+    /// sharing one settled grasp; allWall / kAllDirections is a direction's share
+    double allWall = 0;
     std::string failure;         ///< why the ramp stopped early, or empty
 };
 
-/// Times the ramp and the 3 s simulation of `scenario` in `mode` on `integrator`, back to back.
+/// Times the ramp, the 3 s simulation and the nine ramps of `scenario` in `mode` on `integrator`,
+/// back to back.
 CapacityCost measureCapacityCost(const scenario::Scenario& scenario, simulation::SimulationMode mode,
                                  simulation::IntegratorChoice integrator);
 
