@@ -18,12 +18,18 @@ namespace graspsim::capacity {
 struct SettledGrasps::Scene {
     Scene(const scenario::Scenario& scenario, const simulation::SimulationOptions& options) : experiment(scenario, options) {}
     simulation::GraspExperiment experiment;
-    std::optional<SimTK::State> settled;  // at `start`, once settled
-    std::optional<double> nextIk;         // rigid contact: the next IK update after `start` (s)
+    std::optional<SimTK::State> settled;  // just before `start` (kSettledLead), once settled
+    std::optional<double> nextIk;         // rigid contact: the next IK update after it (s)
     double start = 0;
 };
 
 namespace {
+
+// A shared scene stops this long (s) before the load's start: the run's own stepper then takes the
+// step in which the load begins, and the switch's witnesses see a step load cross their limits
+// there, at its start, as in a run of its own. Started at the load's start itself, a stepper would
+// begin with the witnesses already past their limits and see no crossing.
+constexpr double kSettledLead = 1e-3;
 
 // The experiment's stepper, from a given State: the options' integrator for compliant contact
 // (scene_stepper.h), the rigid stepper for rigid.
@@ -161,7 +167,8 @@ public:
 
 private:
     // Shared: the scene settled once (now, if no run has settled it yet), then the run's load is set
-    // and its stepper starts from a copy of the settled State. Own: from the scene's start.
+    // and its stepper starts from a copy of the settled State, kSettledLead before the load's start.
+    // Own: from the scene's start.
     void start() {
         simulation::GraspExperiment& experiment = scene_->experiment;
         if (grasps_.start_ == SettledGrasps::Start::Own) {
@@ -171,7 +178,7 @@ private:
         if (!scene_->settled) settle();
         experiment.updLoads().updLoadRamp()->setSpec(load_);
         SimTK::State from = *scene_->settled;
-        from.invalidateAllCacheAtOrAbove(SimTK::Stage::Dynamics);  // the load is a Dynamics-stage force
+        from.invalidateAllCacheAtOrAbove(SimTK::Stage::Dynamics);  // nothing computed under another load may stay
         advance_.emplace(experiment, grasps_.getOptions(), from, scene_->nextIk);
     }
 
@@ -181,7 +188,7 @@ private:
         none.start = scene_->start;
         experiment.updLoads().updLoadRamp()->setSpec(none);
         SceneAdvance settling(experiment, grasps_.getOptions(), experiment.makeInitialState(), std::nullopt);
-        settling.advanceTo(scene_->start);
+        settling.advanceTo(scene_->start - kSettledLead);
         scene_->settled = settling.getState();
         scene_->nextIk = settling.findNextIkTime();
         grasps_.countSettle();

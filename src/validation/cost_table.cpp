@@ -245,7 +245,7 @@ CostTable measureCostTable(double duration, int realizations, const CostProgress
         const scenario::Scenario s = scenario::findBuiltinScenario(name);
         for (const auto mode : {simulation::SimulationMode::Full, simulation::SimulationMode::Approx}) {
             for (const auto integrator : {simulation::IntegratorChoice::SimbodyCpodes, simulation::IntegratorChoice::LinearlyImplicit}) {
-                table.capacity.push_back(measureCapacityCost(s, mode, integrator));
+                table.capacity.push_back(measureCapacityCost(s, mode, integrator, integrator == simulation::IntegratorChoice::LinearlyImplicit));
             }
         }
     }

@@ -14,7 +14,7 @@ namespace {
 
 TEST(CapacityCost, TimesTheRampToItsDropAndTheThreeSecondRun) {
     const scenario::Scenario s = scenario::findBuiltinScenario("phone-pinch");
-    const CapacityCost row = measureCapacityCost(s, simulation::SimulationMode::Full, simulation::IntegratorChoice::LinearlyImplicit);
+    const CapacityCost row = measureCapacityCost(s, simulation::SimulationMode::Full, simulation::IntegratorChoice::LinearlyImplicit, true);
     simulation::SimulationOptions options;
     options.integrator = simulation::IntegratorChoice::LinearlyImplicit;
     const capacity::GraspCapacity again = capacity::measureGraspCapacityRamp(s, options, capacity::GraspCapacityRequest{});
@@ -45,6 +45,9 @@ TEST(CapacityCost, TableStatesTheRatio) {
     EXPECT_NE(line.find("2.00"), std::string::npos) << text;  // ramp / simulation
     EXPECT_NE(line.find("0.200"), std::string::npos) << text;  // per direction: 1.8 / 9
     EXPECT_NE(line.find("0.80"), std::string::npos) << text;   // per direction / simulation
+    row.allWall = 0;
+    const std::string untimed = formatCapacityCostTable({row});
+    EXPECT_EQ(untimed.find("0.200"), std::string::npos) << untimed;
 }
 
 }  // namespace

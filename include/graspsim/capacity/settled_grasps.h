@@ -5,16 +5,18 @@
 /// Every load of a capacity measurement starts from the same settled grasp: up to the load's start
 /// (findLoadStart) the scene is the same whatever the load's direction or size, since the load is
 /// zero before it. SettledGrasps simulates that stretch (the approach, the closing and the settle,
-/// about 1.1 s of a scene) once per scene and hands each run a copy of the settled State, with the
-/// run's load set on the scene's simulation::RampLoad and a fresh stepper started from it. The
+/// about 1.1 s of a scene) once per scene, to 1 ms before the load's start, and hands each run a
+/// copy of the settled State, with the run's load set on the scene's simulation::RampLoad and a
+/// fresh stepper started from it (which then steps into the load, so a step load is seen to begin,
+/// as in a run of its own). The
 /// directions of `capacity --direction all`, the loads of a bisection and the constant loads of
 /// `validate` then pay the settle once per thread instead of once per run.
 ///
 /// Sharing is exact: every quantity a run changes lives in its SimTK::State (the switch's record,
 /// the attachment's settings, the controller's targets), and the only thing set outside it, the
 /// load, is set again for each run. A run started from a shared scene gives the same figures bit
-/// for bit whichever runs used the scene before it. It differs from a run that steps through the
-/// load's start without stopping only by the stepper's restart there (the measured difference is in
+/// for bit whichever runs used the scene before it. It differs from a run that steps through to the
+/// load without stopping only by the stepper's restart 1 ms before it (the measured difference is in
 /// docs/capacity.md, "Sharing the settled grasp").
 
 #include "graspsim/capacity/capacity_protocol.h"

@@ -26,15 +26,15 @@ struct CapacityCost {
     double rampSimTime = 0;      ///< simulated s of the ramp (to its drop or its end)
     double simulationWall = 0;   ///< s, the whole 3 s simulation (scene built, run)
     /// s, the nine ramps of `capacity --direction all` (six forces, three torques) on one thread,
-    /// sharing one settled grasp; allWall / kAllDirections is a direction's share
+    /// sharing one settled grasp; allWall / kAllDirections is a direction's share. 0: not timed.
     double allWall = 0;
     std::string failure;         ///< why the ramp stopped early, or empty
 };
 
-/// Times the ramp, the 3 s simulation and the nine ramps of `scenario` in `mode` on `integrator`,
-/// back to back.
+/// Times the ramp and the 3 s simulation of `scenario` in `mode` on `integrator`, back to back,
+/// and with `allDirections` the nine ramps too.
 CapacityCost measureCapacityCost(const scenario::Scenario& scenario, simulation::SimulationMode mode,
-                                 simulation::IntegratorChoice integrator);
+                                 simulation::IntegratorChoice integrator, bool allDirections = false);
 
 /// The rows as a text table (ramp / simulation: the ratio the target bounds by 1).
 std::string formatCapacityCostTable(const std::vector<CapacityCost>& rows);
