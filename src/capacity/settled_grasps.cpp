@@ -111,7 +111,7 @@ simulation::SimulationOptions makeSceneOptions(simulation::SimulationOptions opt
 class GraspRun : public LoadedRun {
 public:
     GraspRun(SettledGrasps& grasps, const simulation::LoadRampSpec& load) : grasps_(grasps), load_(load) {
-        if (grasps.start_ == SettledGrasps::Start::Own) {
+        if (grasps.startKind_ == SettledGrasps::Start::Own) {
             scene_ = std::make_unique<SettledGrasps::Scene>(grasps.getScenario(), makeSceneOptions(grasps.getOptions(), load));
         } else {
             scene_ = grasps.leaseScene(load.start);
@@ -120,7 +120,7 @@ public:
 
     ~GraspRun() override {
         advance_.reset();  // its stepper refers to the scene's System
-        if (grasps_.start_ == SettledGrasps::Start::Shared) grasps_.returnScene(std::move(scene_));
+        if (grasps_.startKind_ == SettledGrasps::Start::Shared) grasps_.returnScene(std::move(scene_));
     }
 
     void advanceTo(double t) override {
@@ -171,7 +171,7 @@ private:
     // Own: from the scene's start.
     void start() {
         simulation::GraspExperiment& experiment = scene_->experiment;
-        if (grasps_.start_ == SettledGrasps::Start::Own) {
+        if (grasps_.startKind_ == SettledGrasps::Start::Own) {
             advance_.emplace(experiment, grasps_.getOptions(), experiment.makeInitialState(), std::nullopt);
             return;
         }
@@ -250,7 +250,7 @@ private:
 };
 
 SettledGrasps::SettledGrasps(const scenario::Scenario& scenario, const simulation::SimulationOptions& options, Start start)
-    : scenario_(scenario), options_(options), start_(start) {}
+    : scenario_(scenario), options_(options), startKind_(start) {}
 
 SettledGrasps::~SettledGrasps() = default;
 

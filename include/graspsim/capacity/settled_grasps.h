@@ -57,18 +57,16 @@ public:
     /// How many scenes were settled so far: one per run running at once, with Start::Shared.
     int countSettled() const;
 
-    /// A settled scene (defined in the source): a GraspExperiment and its State at the load's start.
-    struct Scene;
-
 private:
     friend class GraspRun;
+    struct Scene;  // a GraspExperiment and its settled State (defined in the source)
     std::unique_ptr<Scene> leaseScene(double start);
     void returnScene(std::unique_ptr<Scene> scene);
     void countSettle();
 
     const scenario::Scenario& scenario_;
     simulation::SimulationOptions options_;
-    Start start_;
+    Start startKind_;
     mutable std::mutex mutex_;
     std::vector<std::unique_ptr<Scene>> idle_;
     int settled_ = 0;
