@@ -1,5 +1,6 @@
 #include "graspsim/capacity/grasp_capacity.h"
 
+#include "graspsim/capacity/load_direction.h"
 #include "graspsim/capacity/overload.h"
 
 #include "graspsim/capacity/settled_grasps.h"
@@ -55,6 +56,22 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 }
 
 }  // namespace
+
+std::vector<GraspCapacityRequest> makeAllDirectionRequests() {
+    std::vector<GraspCapacityRequest> requests;
+    const std::vector<LoadDirection> axes = findAxisDirections();
+    for (const bool torque : {false, true}) {
+        for (const LoadDirection& d : axes) {
+            if (torque && d.name[0] == '-') continue;
+            GraspCapacityRequest r;
+            r.direction = d.direction;
+            r.directionName = d.name;
+            r.torque = torque;
+            requests.push_back(r);
+        }
+    }
+    return requests;
+}
 
 double findDefaultRate(const scenario::Scenario& scenario, bool torque) {
     const double force = 2 * scenario.object.mass * kGravity;

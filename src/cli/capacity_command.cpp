@@ -149,24 +149,17 @@ capacity::SlipCriteria parseSlipCriteria(const std::string& slipText, const std:
 }
 
 std::vector<capacity::GraspCapacityRequest> makeRequests(const std::string& direction, bool torque) {
-    std::vector<capacity::GraspCapacityRequest> requests;
-    const auto add = [&](const capacity::LoadDirection& d, bool isTorque) {
+    if (direction != "all") {
+        const capacity::LoadDirection d = capacity::parseLoadDirection(direction, "--direction");
         capacity::GraspCapacityRequest r;
         r.direction = d.direction;
         r.directionName = d.name;
-        r.torque = isTorque;
-        requests.push_back(r);
-    };
-    if (direction != "all") {
-        add(capacity::parseLoadDirection(direction, "--direction"), torque);
-        return requests;
+        r.torque = torque;
+        return {r};
     }
     // all is the six forces and the three torques: --torque would read as "the torques only".
     if (torque) throw InputError("--torque: is not accepted with --direction all, which measures the six axis forces and the three torques");
-    const std::vector<capacity::LoadDirection> axes = capacity::findAxisDirections();
-    for (const capacity::LoadDirection& d : axes) add(d, false);
-    for (const capacity::LoadDirection& d : axes) if (d.name[0] != '-') add(d, true);
-    return requests;
+    return capacity::makeAllDirectionRequests();
 }
 
 // The request's rate as given, except a torque's with --direction all: scaled from the forces'.

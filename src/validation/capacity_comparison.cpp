@@ -35,13 +35,9 @@ struct Load {
 
 std::vector<Load> listLoads(bool quick) {
     std::vector<Load> loads;
-    for (const capacity::LoadDirection& d : capacity::findAxisDirections()) {
-        if (quick && d.name != "-y") continue;
-        loads.push_back({d.name, d, false});
-    }
-    if (quick) return loads;
-    for (const char* axis : {"x", "y", "z"}) {
-        loads.push_back({std::string("torque ") + axis, capacity::parseLoadDirection(axis, "capacity comparison"), true});
+    for (const capacity::GraspCapacityRequest& r : capacity::makeAllDirectionRequests()) {
+        if (quick && (r.torque || r.directionName != "-y")) continue;
+        loads.push_back({(r.torque ? "torque " : "") + r.directionName, capacity::LoadDirection{r.directionName, r.direction}, r.torque});
     }
     return loads;
 }

@@ -1,7 +1,6 @@
 #include "graspsim/validation/capacity_cost.h"
 
 #include "graspsim/capacity/grasp_capacity.h"
-#include "graspsim/capacity/load_direction.h"
 #include "graspsim/capacity/settled_grasps.h"
 #include "graspsim/simulation/grasp_simulation.h"
 
@@ -17,15 +16,8 @@ namespace {
 double timeAllDirections(const scenario::Scenario& scenario, const simulation::SimulationOptions& options) {
     const double start = readWallClock();
     capacity::SettledGrasps grasps(scenario, options);
-    for (const capacity::LoadDirection& d : capacity::findAxisDirections()) {
-        for (const bool torque : {false, true}) {
-            if (torque && d.name[0] == '-') continue;
-            capacity::GraspCapacityRequest request;
-            request.direction = d.direction;
-            request.directionName = d.name;
-            request.torque = torque;
-            capacity::measureGraspCapacityRamp(grasps, request);
-        }
+    for (const capacity::GraspCapacityRequest& request : capacity::makeAllDirectionRequests()) {
+        capacity::measureGraspCapacityRamp(grasps, request);
     }
     return readWallClock() - start;
 }

@@ -19,6 +19,7 @@
 #include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace graspsim::capacity {
 
@@ -36,6 +37,10 @@ struct GraspCapacityRequest {
     double sampleInterval = 0.005;        ///< s
     SlipCriteria criteria;
 };
+
+/// The nine loads of `capacity --direction all`: the six axis forces (x, -x, y, -y, z, -z), then
+/// the torques about x, y and z; default rates, criteria and durations.
+std::vector<GraspCapacityRequest> makeAllDirectionRequests();
 
 /// The default ramp rate: twice the object's weight per second for a force (the thesis objects'
 /// capacities, 1 to 8 weights, are then reached within 0.5-4 s), and for a torque that times the

@@ -8,9 +8,8 @@
 /// about 1.1 s of a scene) once per scene, to 1 ms before the load's start, and hands each run a
 /// copy of the settled State, with the run's load set on the scene's simulation::RampLoad and a
 /// fresh stepper started from it (which then steps into the load, so a step load is seen to begin,
-/// as in a run of its own). The
-/// directions of `capacity --direction all`, the loads of a bisection and the constant loads of
-/// `validate` then pay the settle once per thread instead of once per run.
+/// as in a run of its own). The directions of `capacity --direction all`, the loads of a bisection
+/// and the constant loads of `validate` then pay the settle once per thread instead of once per run.
 ///
 /// Sharing is exact: every quantity a run changes lives in its SimTK::State (the switch's record,
 /// the attachment's settings, the controller's targets), and the only thing set outside it, the
