@@ -105,6 +105,13 @@ simulation::SimulationOptions makeSceneOptions(simulation::SimulationOptions opt
     return options;
 }
 
+// No load yet, from `start` (s): how a shared scene is built and settled, whatever ran on it.
+simulation::LoadRampSpec makeNoLoad(double start) {
+    simulation::LoadRampSpec none;
+    none.start = start;
+    return none;
+}
+
 }  // namespace
 
 // One run of a load on a scene: leased settled (Start::Shared) or its own (Start::Own).
@@ -184,9 +191,7 @@ private:
 
     void settle() {
         simulation::GraspExperiment& experiment = scene_->experiment;
-        simulation::LoadRampSpec none;  // an earlier run's load is still set
-        none.start = scene_->start;
-        experiment.updLoads().updLoadRamp()->setSpec(none);
+        experiment.updLoads().updLoadRamp()->setSpec(makeNoLoad(scene_->start));  // an earlier run's load is still set
         SceneAdvance settling(experiment, grasps_.getOptions(), experiment.makeInitialState(), std::nullopt);
         settling.advanceTo(scene_->start - kSettledLead);
         scene_->settled = settling.getState();
@@ -261,7 +266,7 @@ int SettledGrasps::countSettled() const {
     return settled_;
 }
 
-// A scene's load before its run sets it: none, from the same start (the stepper lands there).
+// A new scene's load is none until its run sets one, from the same start (the run's stepper lands there).
 std::unique_ptr<SettledGrasps::Scene> SettledGrasps::leaseScene(double start) {
     {
         const std::lock_guard<std::mutex> lock(mutex_);
@@ -272,9 +277,7 @@ std::unique_ptr<SettledGrasps::Scene> SettledGrasps::leaseScene(double start) {
             return scene;
         }
     }
-    simulation::LoadRampSpec none;
-    none.start = start;
-    auto scene = std::make_unique<Scene>(scenario_, makeSceneOptions(options_, none));
+    auto scene = std::make_unique<Scene>(scenario_, makeSceneOptions(options_, makeNoLoad(start)));
     scene->start = start;
     return scene;
 }

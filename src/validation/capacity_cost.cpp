@@ -54,8 +54,9 @@ std::string formatCapacityCostTable(const std::vector<CapacityCost>& rows) {
         "per direction: the nine ramps of --direction all on one thread, which share the settled grasp, over nine;\n"
         "on the implicit stepper, capacity's default, only: on CPodes a ramp that stalls takes half a minute)\n"
         "experiment   mode    integrator   ramp (sim s)   3 s simulation   ramp / simulation   per direction   / simulation\n";
+    const double directions = static_cast<double>(capacity::makeAllDirectionRequests().size());
     for (const CapacityCost& r : rows) {
-        const double perDirection = r.allWall / kAllDirections;
+        const double perDirection = r.allWall / directions;
         char all[64] = "              -              -";
         if (r.allWall > 0) std::snprintf(all, sizeof all, "%15.3f   %12.2f", perDirection, r.simulationWall > 0 ? perDirection / r.simulationWall : 0.0);
         char line[240];

@@ -14,9 +14,6 @@
 
 namespace graspsim::validation {
 
-/// The loads of `capacity --direction all`.
-constexpr int kAllDirections = 9;
-
 /// One row: a scenario, a mode and an integrator.
 struct CapacityCost {
     std::string scenario;
@@ -26,7 +23,7 @@ struct CapacityCost {
     double rampSimTime = 0;      ///< simulated s of the ramp (to its drop or its end)
     double simulationWall = 0;   ///< s, the whole 3 s simulation (scene built, run)
     /// s, the nine ramps of `capacity --direction all` (six forces, three torques) on one thread,
-    /// sharing one settled grasp; allWall / kAllDirections is a direction's share. 0: not timed.
+    /// sharing one settled grasp; over their count it is a direction's share. 0: not timed.
     double allWall = 0;
     std::string failure;         ///< why the ramp stopped early, or empty
 };
