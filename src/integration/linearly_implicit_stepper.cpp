@@ -312,8 +312,7 @@ bool LinearlyImplicitStepper::takeStep(double h, double& error) {
     ++evaluations_;
     if (options_.accuracy > 0 && error > 1 && h > StepSizeControl::kMinStepSize) return false;
     if (options_.accuracy > 0) {
-        endSet_.clear();
-        for (const ForceJacobianContributor* c : contributors_) c->appendActiveSet(state_, endSet_);
+        findActiveSet(endSet_);
         switchCrossed_ = SwitchLocalization::losesTerm(activeSet_, endSet_) && switches_->crossed(t0, h);
         if (switchCrossed_) return false;
     }
@@ -403,8 +402,7 @@ double LinearlyImplicitStepper::takeRosenbrockStep(double h) {
 // error estimate watches a stale matrix, so each step builds its own.
 const StepMatrix& LinearlyImplicitStepper::findStepMatrix(double g) {
     const ScopeClock clock(linearSolveSeconds_);
-    activeSet_.clear();
-    for (const ForceJacobianContributor* c : contributors_) c->appendActiveSet(state_, activeSet_);
+    findActiveSet(activeSet_);
     const double t = state_.getTime();
     const bool keep = options_.accuracy > 0 && matrix_ && !matrixStale_ && activeSet_ == matrixActiveSet_ &&
                       t - matrixTime_ < kMatrixAge && g < kMatrixStepRatio * matrix_->getFactor() &&
@@ -422,6 +420,17 @@ const StepMatrix& LinearlyImplicitStepper::findStepMatrix(double g) {
     matrixStale_ = false;
     ++matrixBuilds_;
     return *matrix_;
+}
+
+void LinearlyImplicitStepper::findActiveSet(std::vector<std::int64_t>& set) const {
+    set.clear();
+    for (std::size_t k = 0; k < contributors_.size(); ++k) {
+        contributorTerms_.clear();
+        contributors_[k]->appendActiveSet(state_, contributorTerms_);
+        for (int id : contributorTerms_) {
+            set.push_back(static_cast<std::int64_t>(k) << 32 | static_cast<std::int64_t>(static_cast<std::uint32_t>(id)));
+        }
+    }
 }
 
 void LinearlyImplicitStepper::solve(const StepMatrix& A, std::vector<double>& b) const {

@@ -8,8 +8,8 @@ double SwitchLocalization::findWindow(const SimTK::System& system, double accura
     return accuracy * system.getDefaultTimeScale() * SimTK::EventTriggerInfo().getRequiredLocalizationTimeWindow();
 }
 
-bool SwitchLocalization::losesTerm(const std::vector<int>& start, const std::vector<int>& end) {
-    std::vector<int> a(start), b(end);
+bool SwitchLocalization::losesTerm(const std::vector<std::int64_t>& start, const std::vector<std::int64_t>& end) {
+    std::vector<std::int64_t> a(start), b(end);
     std::sort(a.begin(), a.end());
     std::sort(b.begin(), b.end());
     return !std::includes(b.begin(), b.end(), a.begin(), a.end());

@@ -17,6 +17,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <utility>
+#include <vector>
 
 namespace graspsim::integration {
 namespace {
@@ -190,6 +193,57 @@ TEST(LinearlyImplicitStepper, ErrorControlledStepsKeepTheirMatrixForAWhile) {
     EXPECT_LT(stats.linearSolverSetups, stats.steps / 2);  // kept
     EXPECT_GE(stats.linearSolverSetups, static_cast<long>(T / 0.01));  // but no longer than 10 ms
     EXPECT_NEAR(damper.scene.body.getOneQ(stepper.getState(), 0), StiffDamper::calcExact(T), 1e-4 * StiffDamper::kStart);
+}
+
+// A term reported by one contributor while the damper's x is above a level, and by another below
+// it: each loses or gains its term at the crossing, which the stepper localizes. Oracle: the
+// same run with the two terms' identifiers made different; equal identifiers of two contributors
+// must not hide the switch (they did when the active set was one list of plain identifiers).
+class LevelTerm : public ForceJacobianContributor {
+public:
+    LevelTerm(const SimTK::MobilizedBody& body, double level, bool above, int id) : body_(body), level_(level), above_(above), id_(id) {}
+    void addForceJacobians(const SimTK::State&, SimTK::Matrix&, SimTK::Matrix&) const override {}
+    void appendActiveSet(const SimTK::State& state, std::vector<int>& active) const override {
+        if ((body_.getOneQ(state, 0) > level_) == above_) active.push_back(id_);
+    }
+
+private:
+    const SimTK::MobilizedBody& body_;
+    double level_;
+    bool above_;
+    int id_;
+};
+
+// The damper from kStart over 0.3 s at accuracy 1e-4, with the level terms when the ids are given;
+// `x` receives the end's position (m).
+IntegrationStatistics runDamper(std::optional<std::pair<int, int>> ids, double& x) {
+    StiffDamper damper;
+    const double level = 0.5 * StiffDamper::kStart;
+    const LevelTerm above(damper.scene.body, level, true, ids ? ids->first : 0);
+    const LevelTerm below(damper.scene.body, level, false, ids ? ids->second : 0);
+    std::vector<const ForceJacobianContributor*> contributors{&damper.jacobian};
+    if (ids) contributors.insert(contributors.end(), {&above, &below});
+    SimTK::State state = damper.scene.system.realizeTopology();
+    damper.scene.body.setOneQ(state, 0, StiffDamper::kStart);
+    LinearlyImplicitOptions options;
+    options.stepSize = 2e-3;
+    options.accuracy = 1e-4;
+    LinearlyImplicitStepper stepper(damper.scene.system, contributors, options);
+    stepper.initialize(state);
+    stepper.stepTo(0.3);
+    x = damper.scene.body.getOneQ(stepper.getState(), 0);
+    return stepper.getStatistics();
+}
+
+TEST(LinearlyImplicitStepper, EqualTermIdentifiersOfTwoContributorsStayTwoTerms) {
+    double xApart = 0, xEqual = 0, xNone = 0;
+    const IntegrationStatistics apart = runDamper(std::pair{1, 2}, xApart);
+    const IntegrationStatistics equal = runDamper(std::pair{1, 1}, xEqual);
+    const IntegrationStatistics none = runDamper(std::nullopt, xNone);
+    EXPECT_GT(apart.errorTestFailures, none.errorTestFailures);  // the crossing was localized
+    EXPECT_EQ(equal.steps, apart.steps);
+    EXPECT_EQ(equal.errorTestFailures, apart.errorTestFailures);
+    EXPECT_EQ(xEqual, xApart);
 }
 
 TEST(LinearlyImplicitStepper, ReportsLandOnTheirTimesBetweenSteps) {

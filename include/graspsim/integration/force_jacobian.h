@@ -31,8 +31,9 @@ public:
     /// with equal lists this element's D and K change smoothly, so a stepper may keep them for a
     /// while; a change in the list is a jump in structure and calls for new ones. A term that is
     /// gone at a step's end (a contact starts sliding or lets go) is a switch the stepper localizes
-    /// (its matrix carried the term's stiffness past it); one that appears is not. The default: no
-    /// such terms.
+    /// (its matrix carried the term's stiffness past it); one that appears is not. Identifiers need
+    /// only be distinct within this element: a stepper tells elements apart. The default: no such
+    /// terms.
     virtual void appendActiveSet(const SimTK::State& state, std::vector<int>& active) const {
         static_cast<void>(state);
         static_cast<void>(active);

@@ -59,6 +59,7 @@
 
 #include "graspsim/simbody.h"
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <utility>
@@ -175,7 +176,12 @@ private:
     std::unique_ptr<StepSizeControl> stepSizes_;  // error control only
     // Error control only: where a step lost an active term, bisected down to a window.
     std::unique_ptr<SwitchLocalization> switches_;
-    std::vector<int> endSet_;  // the active set at the last step's end
+    // Active sets: each term its contributor's place in contributors_ (high 32 bits) and the
+    // contributor's own identifier (low 32 bits), so that two contributors' equal identifiers (a
+    // joint stop's mobilized body index and a contact pair's 2 i + 1) stay two terms.
+    void findActiveSet(std::vector<std::int64_t>& set) const;
+    mutable std::vector<int> contributorTerms_;  // scratch for findActiveSet
+    std::vector<std::int64_t> endSet_;  // the active set at the last step's end
     bool switchCrossed_ = false;
     bool outputInterpolated_ = false;
     double eventHorizon_ = SimTK::Infinity;
@@ -189,7 +195,7 @@ private:
     // Report-stage change on or restarts from the interpolated state, and the next one lands.
     bool landOnEvents_ = true;
     double matrixTime_ = -SimTK::Infinity;
-    std::vector<int> matrixActiveSet_, activeSet_;
+    std::vector<std::int64_t> matrixActiveSet_, activeSet_;
     bool matrixStale_ = true;
     long matrixBuilds_ = 0;
     mutable double linearSolveSeconds_ = 0;  // building, factoring, solving (s)
