@@ -3,6 +3,7 @@
 #include "graspsim/integration/point_jacobian.h"
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace graspsim::contact {
@@ -126,6 +127,21 @@ void CompliantContactJacobian::appendActiveSet(const SimTK::State& state, std::v
         active.push_back(2 * report.pairIndex);
         if (sticking) active.push_back(2 * report.pairIndex + 1);
     }
+}
+
+// The fastest point, so that the margin is positive only while every pushing point of the pair
+// sticks: a pair whose points disagree at a step's start gives no estimate (the stepper bisects).
+// A point letting go has no smooth margin here (its force is clamped at zero), hence NaN.
+double CompliantContactJacobian::findTermMargin(const SimTK::State& state, int id) const {
+    if (id % 2 != 1) return SimTK::NaN;
+    const int pair = id / 2;
+    double margin = SimTK::NaN;
+    for (const ContactReport& report : contacts_.getEvaluatedContacts(state)) {
+        if (report.pairIndex != pair || report.normalForce <= 0) continue;
+        const double m = parameters_[pair].transitionVelocity - report.slipVelocity_G.norm();
+        margin = std::isnan(margin) ? m : std::min(margin, m);
+    }
+    return margin;
 }
 
 }  // namespace graspsim::contact

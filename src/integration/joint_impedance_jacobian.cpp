@@ -48,4 +48,13 @@ void JointImpedanceJacobian::appendActiveSet(const SimTK::State& s, std::vector<
     }
 }
 
+double JointImpedanceJacobian::findTermMargin(const SimTK::State& s, int id) const {
+    for (const system::JointImpedance& j : joints_) {
+        if (int(j.mobod) != id) continue;
+        if (j.stop.isEmptyHandle() || forces_.isForceDisabled(s, j.stop.getForceIndex())) return SimTK::NaN;
+        return findStopViolation(s, matter_.getMobilizedBody(j.mobod), j);
+    }
+    return SimTK::NaN;
+}
+
 }  // namespace graspsim::integration

@@ -15,6 +15,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <limits>
 #include <string>
 #include <utility>
@@ -227,9 +228,11 @@ bool LinearlyImplicitStepper::takeControlledStep(double tStop) {
         if (takeStep(h, error)) return true;
         if (redo_ || switchCrossed_) {
             if (redo_) tStop = eventHorizon_;
-            rejectedSteps_ += switchCrossed_ ? 1 : 0;
+            const bool crossed = switchCrossed_;
+            rejectedSteps_ += crossed ? 1 : 0;
             redo_ = switchCrossed_ = false;
             restoreStepStart(t, q, u, z);
+            if (crossed) switches_->setEstimate(estimateSwitchTime(t, h));
             continue;
         }
         if (stepSizes_->acceptStep(h, error)) {
@@ -314,7 +317,10 @@ bool LinearlyImplicitStepper::takeStep(double h, double& error) {
     if (options_.accuracy > 0) {
         findActiveSet(endSet_);
         switchCrossed_ = SwitchLocalization::losesTerm(activeSet_, endSet_) && switches_->crossed(t0, h);
-        if (switchCrossed_) return false;
+        if (switchCrossed_) {
+            findLostMargins();
+            return false;
+        }
     }
     const SimTK::Array_<SimTK::EventId> triggered = findTriggeredEvents(triggerInfo_, triggers_, state_.getEventTriggers());
     if (!triggered.empty() && state_.getTime() > eventHorizon_) {
@@ -420,6 +426,34 @@ const StepMatrix& LinearlyImplicitStepper::findStepMatrix(double g) {
     matrixStale_ = false;
     ++matrixBuilds_;
     return *matrix_;
+}
+
+// The terms of the step start's set missing from its end's, with their margins at the end (state_).
+void LinearlyImplicitStepper::findLostMargins() {
+    std::vector<std::int64_t> start(activeSet_), end(endSet_), lost;
+    std::sort(start.begin(), start.end());
+    std::sort(end.begin(), end.end());
+    std::set_difference(start.begin(), start.end(), end.begin(), end.end(), std::back_inserter(lost));
+    lostMargins_.clear();
+    for (std::int64_t term : lost) lostMargins_.emplace_back(term, findTermMargin(term));
+}
+
+double LinearlyImplicitStepper::findTermMargin(std::int64_t term) const {
+    const ForceJacobianContributor& c = *contributors_[static_cast<std::size_t>(term >> 32)];
+    return c.findTermMargin(state_, static_cast<int>(static_cast<std::uint32_t>(term & 0xffffffff)));
+}
+
+// With state_ back at the step's start t (h long): where the first lost term's margin, linear
+// between the two ends, reached zero; NaN if a lost term has no margin, or one that does not go
+// from positive to at most zero (then the bracket is bisected).
+double LinearlyImplicitStepper::estimateSwitchTime(double t, double h) const {
+    double first = 1;
+    for (const auto& [term, atEnd] : lostMargins_) {
+        const double atStart = findTermMargin(term);
+        if (!(atStart > 0 && atEnd <= 0)) return SimTK::NaN;
+        first = std::min(first, atStart / (atStart - atEnd));
+    }
+    return lostMargins_.empty() ? SimTK::NaN : t + first * h;
 }
 
 void LinearlyImplicitStepper::findActiveSet(std::vector<std::int64_t>& set) const {

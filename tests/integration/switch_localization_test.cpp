@@ -1,5 +1,6 @@
 // Localizing a force's switch of regime (src/integration/switch_localization.h): the oracle is the
-// documented rule itself (bisection to a window) and Simbody's event localization window.
+// documented rule itself (bisection to a window, or an estimate's two steps) and Simbody's event
+// localization window.
 #include "switch_localization.h"
 
 #include <gtest/gtest.h>
@@ -46,6 +47,52 @@ TEST(SwitchLocalization, BisectsTowardTheSwitchDownToTheWindow) {
     EXPECT_GE(t + h, kSwitch);
     EXPECT_LE(attempts, 10);  // log2(5 ms / 10 us) = 9
     EXPECT_EQ(switches.limitStep(t + h, kCap), kCap);  // the bracket passed: free again
+}
+
+// The same switch with a margin that is linear in time (m = 3.3 ms - t): the estimate from the
+// first step's two ends is the switch, and two attempts localize it.
+TEST(SwitchLocalization, AnEstimateFromLinearMarginsLocalizesInTwoAttempts) {
+    constexpr double kSwitch = 3.3e-3, kWindow = 1e-5, kCap = 5e-3;
+    const auto margin = [&](double t) { return kSwitch - t; };
+    SwitchLocalization switches(kWindow);
+    double t = 0, h = kCap;
+    int attempts = 0;
+    for (;; ++attempts) {
+        ASSERT_LT(attempts, 20);
+        if (t + h >= kSwitch) {
+            if (!switches.crossed(t, h)) break;
+            switches.setEstimate(t + h * margin(t) / (margin(t) - margin(t + h)));
+        } else {
+            t += h;
+        }
+        h = switches.limitStep(t, kCap);
+    }
+    EXPECT_LE(h, kWindow);
+    EXPECT_LE(t, kSwitch);
+    EXPECT_GE(t + h, kSwitch);
+    EXPECT_EQ(attempts, 2);  // short of it by half a window, then one window across it
+}
+
+// An estimate is used up to kMaxEstimates times per switch, never past the bracket, and NaN
+// means bisection; past the estimate without the switch, the rest of the bracket in one step.
+TEST(SwitchLocalization, EstimatesFallBackToBisection) {
+    SwitchLocalization switches(1e-5);
+    ASSERT_TRUE(switches.crossed(0, 4e-3));
+    switches.setEstimate(SimTK::NaN);
+    EXPECT_EQ(switches.limitStep(0, 5e-3), 2e-3);
+    switches.setEstimate(5e-3);  // beyond the bracket's end
+    EXPECT_EQ(switches.limitStep(0, 5e-3), 2e-3);
+    switches.setEstimate(1e-3);
+    EXPECT_DOUBLE_EQ(switches.limitStep(0, 5e-3), 1e-3 - 5e-6);
+    EXPECT_EQ(switches.limitStep(1e-3 - 5e-6, 5e-3), 1e-5);
+    EXPECT_DOUBLE_EQ(switches.limitStep(1e-3 + 5e-6, 5e-3), 4e-3 - (1e-3 + 5e-6));
+    for (int k = 1; k < SwitchLocalization::kMaxEstimates; ++k) {
+        ASSERT_TRUE(switches.crossed(0, 3e-3));  // the same switch, a shorter bracket
+        switches.setEstimate(1e-3);
+    }
+    ASSERT_TRUE(switches.crossed(0, 2e-3));
+    switches.setEstimate(1e-3);  // one too many
+    EXPECT_EQ(switches.limitStep(0, 5e-3), 1e-3);  // bisection: half of (0, 2 ms]
 }
 
 TEST(SwitchLocalization, AShorterProposalStandsAndClearForgetsTheBracket) {

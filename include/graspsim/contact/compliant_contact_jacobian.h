@@ -37,6 +37,9 @@ public:
     /// force's stiffness), then 2 pairIndex + 1 if it sticks (slip speed below the pair's transition
     /// velocity: the friction's steep slope), so starting to slide drops a term.
     void appendActiveSet(const SimTK::State& state, std::vector<int>& active) const override;
+    /// A sticking term (odd id): the pair's transition velocity less its fastest pushing point's
+    /// slip speed (m/s); NaN for a normal-force term and for a pair with no pushing point.
+    double findTermMargin(const SimTK::State& state, int id) const override;
 
 private:
     // J = J_b(P) - J_a(P) (3 x nu, column-major) for the pair's two bodies at P (in Ground, m).

@@ -38,6 +38,17 @@ public:
         static_cast<void>(state);
         static_cast<void>(active);
     }
+    /// How far term `id` (as appendActiveSet() lists it) is from being gone at `state` (same
+    /// realization): positive while it is active, at most zero once it is gone, and continuous
+    /// along a step, in any unit the element likes (a sticking contact: the transition velocity
+    /// less the slip speed, m/s; a stop: its violation, rad or m). A stepper interpolates it
+    /// between a step's two ends to estimate where the term was lost. NaN where the element cannot
+    /// say (the default): the stepper then bisects.
+    virtual double findTermMargin(const SimTK::State& state, int id) const {
+        static_cast<void>(state);
+        static_cast<void>(id);
+        return SimTK::NaN;
+    }
 };
 
 }  // namespace graspsim::integration

@@ -23,6 +23,9 @@ public:
     void addForceJacobians(const SimTK::State& state, SimTK::Matrix& D, SimTK::Matrix& K) const override;
     /// The mobilized body index of every joint whose limit stop is engaged (violated).
     void appendActiveSet(const SimTK::State& state, std::vector<int>& active) const override;
+    /// The stop's violation of the joint on mobilized body `id` (rad or m; NaN for a joint without
+    /// an enabled stop).
+    double findTermMargin(const SimTK::State& state, int id) const override;
 
 private:
     const SimTK::SimbodyMatterSubsystem& matter_;

@@ -181,6 +181,12 @@ private:
     // joint stop's mobilized body index and a contact pair's 2 i + 1) stay two terms.
     void findActiveSet(std::vector<std::int64_t>& set) const;
     mutable std::vector<int> contributorTerms_;  // scratch for findActiveSet
+    // A step that lost terms: their margins at its end (ForceJacobianContributor::findTermMargin),
+    // from which, with those at its start, the switch's time is estimated.
+    void findLostMargins();
+    double findTermMargin(std::int64_t term) const;
+    double estimateSwitchTime(double t, double h) const;
+    std::vector<std::pair<std::int64_t, double>> lostMargins_;
     std::vector<std::int64_t> endSet_;  // the active set at the last step's end
     bool switchCrossed_ = false;
     bool outputInterpolated_ = false;
