@@ -25,23 +25,36 @@ TEST(SwitchLocalization, TheWindowIsSimbodysEventWindow) {
     EXPECT_NEAR(SwitchLocalization::findWindow(system, 1e-3), 5e-5, 1e-18);
 }
 
-// A 5 ms step from t = 0 crosses a switch at 3.3 ms: the steps halve the bracket (0, 5 ms] until
-// it is no longer than the window, keeping the steps that fall short of the switch.
-TEST(SwitchLocalization, BisectsTowardTheSwitchDownToTheWindow) {
-    constexpr double kSwitch = 3.3e-3, kWindow = 1e-5, kCap = 5e-3;
-    SwitchLocalization switches(kWindow);
-    double t = 0, h = switches.limitStep(t, kCap);
-    EXPECT_EQ(h, kCap);  // nothing bracketed
+constexpr double kSwitch = 3.3e-3, kWindow = 1e-5, kCap = 5e-3;
+
+// Steps from t = 0 toward a switch at kSwitch, capped at kCap, until the step that crosses it
+// stands; with `estimated`, each crossing step sets the estimate from a margin linear in time
+// (m = kSwitch - t) at its two ends. Returns the attempts that crossed; t and h the last step.
+int localize(SwitchLocalization& switches, bool estimated, double& t, double& h) {
+    const auto margin = [](double time) { return kSwitch - time; };
+    t = 0;
+    h = switches.limitStep(t, kCap);
     int attempts = 0;
     for (;; ++attempts) {
-        ASSERT_LT(attempts, 20);
+        if (attempts >= 20) return attempts;
         if (t + h >= kSwitch) {
             if (!switches.crossed(t, h)) break;
+            if (estimated) switches.setEstimate(t + h * margin(t) / (margin(t) - margin(t + h)));
         } else {
             t += h;
         }
         h = switches.limitStep(t, kCap);
     }
+    return attempts;
+}
+
+// A 5 ms step from t = 0 crosses a switch at 3.3 ms: the steps halve the bracket (0, 5 ms] until
+// it is no longer than the window, keeping the steps that fall short of the switch.
+TEST(SwitchLocalization, BisectsTowardTheSwitchDownToTheWindow) {
+    SwitchLocalization switches(kWindow);
+    EXPECT_EQ(switches.limitStep(0, kCap), kCap);  // nothing bracketed
+    double t = 0, h = 0;
+    const int attempts = localize(switches, false, t, h);
     EXPECT_LE(h, kWindow);
     EXPECT_LE(t, kSwitch);
     EXPECT_GE(t + h, kSwitch);
@@ -49,28 +62,15 @@ TEST(SwitchLocalization, BisectsTowardTheSwitchDownToTheWindow) {
     EXPECT_EQ(switches.limitStep(t + h, kCap), kCap);  // the bracket passed: free again
 }
 
-// The same switch with a margin that is linear in time (m = 3.3 ms - t): the estimate from the
-// first step's two ends is the switch, and two attempts localize it.
+// The same switch with a margin that is linear in time: the estimate from the first step's two
+// ends is the switch, and two attempts localize it.
 TEST(SwitchLocalization, AnEstimateFromLinearMarginsLocalizesInTwoAttempts) {
-    constexpr double kSwitch = 3.3e-3, kWindow = 1e-5, kCap = 5e-3;
-    const auto margin = [&](double t) { return kSwitch - t; };
     SwitchLocalization switches(kWindow);
-    double t = 0, h = kCap;
-    int attempts = 0;
-    for (;; ++attempts) {
-        ASSERT_LT(attempts, 20);
-        if (t + h >= kSwitch) {
-            if (!switches.crossed(t, h)) break;
-            switches.setEstimate(t + h * margin(t) / (margin(t) - margin(t + h)));
-        } else {
-            t += h;
-        }
-        h = switches.limitStep(t, kCap);
-    }
+    double t = 0, h = 0;
+    EXPECT_EQ(localize(switches, true, t, h), 2);  // short of it by half a window, then one window across it
     EXPECT_LE(h, kWindow);
     EXPECT_LE(t, kSwitch);
     EXPECT_GE(t + h, kSwitch);
-    EXPECT_EQ(attempts, 2);  // short of it by half a window, then one window across it
 }
 
 // An estimate is used up to kMaxEstimates times per switch, never past the bracket, and NaN
