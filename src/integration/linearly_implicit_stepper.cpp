@@ -15,7 +15,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <iterator>
 #include <limits>
 #include <string>
 #include <utility>
@@ -316,9 +315,10 @@ bool LinearlyImplicitStepper::takeStep(double h, double& error) {
     if (options_.accuracy > 0 && error > 1 && h > StepSizeControl::kMinStepSize) return false;
     if (options_.accuracy > 0) {
         findActiveSet(endSet_);
-        switchCrossed_ = SwitchLocalization::losesTerm(activeSet_, endSet_) && switches_->crossed(t0, h);
+        const std::vector<std::int64_t> lost = SwitchLocalization::findLostTerms(activeSet_, endSet_);
+        switchCrossed_ = !lost.empty() && switches_->crossed(t0, h);
         if (switchCrossed_) {
-            findLostMargins();
+            findLostMargins(lost);
             return false;
         }
     }
@@ -422,18 +422,14 @@ const StepMatrix& LinearlyImplicitStepper::findStepMatrix(double g) {
         massMatrixTime_ = t;
     }
     matrixTime_ = t;
-    matrixActiveSet_ = activeSet_;  // activeSet_ stays the step start's, for losesTerm
+    matrixActiveSet_ = activeSet_;  // activeSet_ stays the step start's, for findLostTerms
     matrixStale_ = false;
     ++matrixBuilds_;
     return *matrix_;
 }
 
-// The terms of the step start's set missing from its end's, with their margins at the end (state_).
-void LinearlyImplicitStepper::findLostMargins() {
-    std::vector<std::int64_t> start(activeSet_), end(endSet_), lost;
-    std::sort(start.begin(), start.end());
-    std::sort(end.begin(), end.end());
-    std::set_difference(start.begin(), start.end(), end.begin(), end.end(), std::back_inserter(lost));
+// The margins of the lost terms at the step's end (state_).
+void LinearlyImplicitStepper::findLostMargins(const std::vector<std::int64_t>& lost) {
     lostMargins_.clear();
     for (std::int64_t term : lost) lostMargins_.emplace_back(term, findTermMargin(term));
 }

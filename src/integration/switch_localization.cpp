@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 namespace graspsim::integration {
 
@@ -9,11 +10,12 @@ double SwitchLocalization::findWindow(const SimTK::System& system, double accura
     return accuracy * system.getDefaultTimeScale() * SimTK::EventTriggerInfo().getRequiredLocalizationTimeWindow();
 }
 
-bool SwitchLocalization::losesTerm(const std::vector<std::int64_t>& start, const std::vector<std::int64_t>& end) {
-    std::vector<std::int64_t> a(start), b(end);
-    std::sort(a.begin(), a.end());
-    std::sort(b.begin(), b.end());
-    return !std::includes(b.begin(), b.end(), a.begin(), a.end());
+std::vector<std::int64_t> SwitchLocalization::findLostTerms(std::vector<std::int64_t> start, std::vector<std::int64_t> end) {
+    std::sort(start.begin(), start.end());
+    std::sort(end.begin(), end.end());
+    std::vector<std::int64_t> lost;
+    std::set_difference(start.begin(), start.end(), end.begin(), end.end(), std::back_inserter(lost));
+    return lost;
 }
 
 // A step that does not reach the switch is kept (progress), one that does shortens the bracket,

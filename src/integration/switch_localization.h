@@ -26,9 +26,9 @@ public:
     // System's time scale x an event trigger's default window (0.1 of the time scale); 10 us at
     // accuracy 1e-3 and the default time scale 0.1 s.
     static double findWindow(const SimTK::System& system, double accuracy);
-    // Whether a term of `start` is missing from `end` (both as the stepper collects them, each
-    // term tagged with its contributor).
-    static bool losesTerm(const std::vector<std::int64_t>& start, const std::vector<std::int64_t>& end);
+    // The terms of `start` missing from `end` (both as the stepper collects them, each term tagged
+    // with its contributor; counted with multiplicity), sorted; empty when no term is lost.
+    static std::vector<std::int64_t> findLostTerms(std::vector<std::int64_t> start, std::vector<std::int64_t> end);
 
     double getWindow() const { return window_; }
     // The step from t (s), at most h (s), with a switch bracketed ahead: with an estimate of the

@@ -5,16 +5,21 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <vector>
+
 namespace graspsim::integration {
 namespace {
 
 TEST(SwitchLocalization, ATermLostIsASwitchATermGainedIsNot) {
-    EXPECT_FALSE(SwitchLocalization::losesTerm({4, 5}, {4, 5}));
-    EXPECT_FALSE(SwitchLocalization::losesTerm({4}, {4, 5}));     // starts sticking
-    EXPECT_FALSE(SwitchLocalization::losesTerm({}, {2}));         // touches
-    EXPECT_TRUE(SwitchLocalization::losesTerm({4, 5}, {4}));      // starts sliding
-    EXPECT_TRUE(SwitchLocalization::losesTerm({2, 4, 5}, {4, 5}));  // lets go
-    EXPECT_FALSE(SwitchLocalization::losesTerm({5, 4, 2}, {2, 4, 5, 7}));  // order does not matter
+    using Terms = std::vector<std::int64_t>;
+    EXPECT_EQ(SwitchLocalization::findLostTerms({4, 5}, {4, 5}), Terms{});
+    EXPECT_EQ(SwitchLocalization::findLostTerms({4}, {4, 5}), Terms{});                // starts sticking
+    EXPECT_EQ(SwitchLocalization::findLostTerms({}, {2}), Terms{});                    // touches
+    EXPECT_EQ(SwitchLocalization::findLostTerms({4, 5}, {4}), Terms{5});               // starts sliding
+    EXPECT_EQ(SwitchLocalization::findLostTerms({2, 4, 5}, {4, 5}), Terms{2});         // lets go
+    EXPECT_EQ(SwitchLocalization::findLostTerms({5, 4, 2}, {2, 4, 5, 7}), Terms{});    // order does not matter
+    EXPECT_EQ(SwitchLocalization::findLostTerms({3, 3}, {3}), Terms{3});               // counted with multiplicity
 }
 
 TEST(SwitchLocalization, TheWindowIsSimbodysEventWindow) {

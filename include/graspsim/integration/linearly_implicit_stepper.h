@@ -183,7 +183,7 @@ private:
     mutable std::vector<int> contributorTerms_;  // scratch for findActiveSet
     // A step that lost terms: their margins at its end (ForceJacobianContributor::findTermMargin),
     // from which, with those at its start, the switch's time is estimated.
-    void findLostMargins();
+    void findLostMargins(const std::vector<std::int64_t>& lost);
     double findTermMargin(std::int64_t term) const;
     double estimateSwitchTime(double t, double h) const;
     std::vector<std::pair<std::int64_t, double>> lostMargins_;
