@@ -10,8 +10,11 @@ namespace graspsim::integration {
 
 namespace {
 
-// How far joint j's coordinate is beyond its stop's range (rad or m), <= 0 inside it.
-double findStopViolation(const SimTK::State& s, const SimTK::MobilizedBody& mobod, const system::JointImpedance& j) {
+// How far joint j's coordinate is beyond its stop's range (rad or m), <= 0 inside it; NaN for a
+// joint without a stop or with its stop disabled.
+double findStopViolation(const SimTK::State& s, const SimTK::GeneralForceSubsystem& forces, const SimTK::MobilizedBody& mobod,
+                         const system::JointImpedance& j) {
+    if (j.stop.isEmptyHandle() || forces.isForceDisabled(s, j.stop.getForceIndex())) return SimTK::NaN;
     const double q = mobod.getOneQ(s, 0);
     return std::max(q - j.stop.getUpperBound(s), j.stop.getLowerBound(s) - q);
 }
@@ -33,9 +36,8 @@ void JointImpedanceJacobian::addForceJacobians(const SimTK::State& s, SimTK::Mat
         const int i = mobod.getFirstUIndex(s);
         K(i, i) -= j.stiffness;
         D(i, i) -= j.damping;
-        if (j.stop.isEmptyHandle() || forces_.isForceDisabled(s, j.stop.getForceIndex())) continue;
-        const double x = findStopViolation(s, mobod, j);
-        if (x <= 0) continue;
+        const double x = findStopViolation(s, forces_, mobod, j);
+        if (!(x > 0)) continue;
         K(i, i) -= j.stop.getStiffness(s);
         D(i, i) -= j.stop.getStiffness(s) * j.stop.getDissipation(s) * x;
     }
@@ -43,16 +45,13 @@ void JointImpedanceJacobian::addForceJacobians(const SimTK::State& s, SimTK::Mat
 
 void JointImpedanceJacobian::appendActiveSet(const SimTK::State& s, std::vector<int>& active) const {
     for (const system::JointImpedance& j : joints_) {
-        if (j.stop.isEmptyHandle() || forces_.isForceDisabled(s, j.stop.getForceIndex())) continue;
-        if (findStopViolation(s, matter_.getMobilizedBody(j.mobod), j) > 0) active.push_back(int(j.mobod));
+        if (findStopViolation(s, forces_, matter_.getMobilizedBody(j.mobod), j) > 0) active.push_back(int(j.mobod));
     }
 }
 
 double JointImpedanceJacobian::findTermMargin(const SimTK::State& s, int id) const {
     for (const system::JointImpedance& j : joints_) {
-        if (int(j.mobod) != id) continue;
-        if (j.stop.isEmptyHandle() || forces_.isForceDisabled(s, j.stop.getForceIndex())) return SimTK::NaN;
-        return findStopViolation(s, matter_.getMobilizedBody(j.mobod), j);
+        if (int(j.mobod) == id) return findStopViolation(s, forces_, matter_.getMobilizedBody(j.mobod), j);
     }
     return SimTK::NaN;
 }

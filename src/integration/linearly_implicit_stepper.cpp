@@ -253,6 +253,14 @@ void LinearlyImplicitStepper::restoreStepStart(double t, const SimTK::Vector& q,
 
 namespace {
 
+// An active-set term: its contributor's place in the list (high 32 bits) and the contributor's own
+// identifier (low 32 bits).
+std::int64_t tagTerm(std::size_t contributor, int id) {
+    return static_cast<std::int64_t>(contributor) << 32 | static_cast<std::int64_t>(static_cast<std::uint32_t>(id));
+}
+std::size_t findTermContributor(std::int64_t term) { return static_cast<std::size_t>(term >> 32); }
+int findTermId(std::int64_t term) { return static_cast<int>(static_cast<std::uint32_t>(term & 0xffffffff)); }
+
 // Adds the wall time of its scope to `seconds` (the linear algebra's share, in the statistics).
 class ScopeClock {
 public:
@@ -435,8 +443,7 @@ void LinearlyImplicitStepper::findLostMargins(const std::vector<std::int64_t>& l
 }
 
 double LinearlyImplicitStepper::findTermMargin(std::int64_t term) const {
-    const ForceJacobianContributor& c = *contributors_[static_cast<std::size_t>(term >> 32)];
-    return c.findTermMargin(state_, static_cast<int>(static_cast<std::uint32_t>(term & 0xffffffff)));
+    return contributors_[findTermContributor(term)]->findTermMargin(state_, findTermId(term));
 }
 
 // With state_ back at the step's start t (h long): where the first lost term's margin, linear
@@ -457,9 +464,7 @@ void LinearlyImplicitStepper::findActiveSet(std::vector<std::int64_t>& set) cons
     for (std::size_t k = 0; k < contributors_.size(); ++k) {
         contributorTerms_.clear();
         contributors_[k]->appendActiveSet(state_, contributorTerms_);
-        for (int id : contributorTerms_) {
-            set.push_back(static_cast<std::int64_t>(k) << 32 | static_cast<std::int64_t>(static_cast<std::uint32_t>(id)));
-        }
+        for (int id : contributorTerms_) set.push_back(tagTerm(k, id));
     }
 }
 
