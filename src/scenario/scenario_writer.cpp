@@ -122,8 +122,10 @@ void writeSettings(std::ostringstream& out, const Scenario& s) {
         << "\n\n";
     const SimulationSpec& m = s.simulation;
     out << "simulation:\n  duration: " << formatNumber(m.duration) << "\n  output_interval: " << formatNumber(m.outputInterval)
-        << "\n  accuracy: " << formatNumber(m.accuracy) << "\n  step_size: " << formatNumber(m.stepSize) << "\n  settle_time: " << formatNumber(m.settleTime)
-        << "\n  held_tolerance: " << formatNumber(m.heldTolerance) << "\n\n";
+        << "\n  accuracy: " << formatNumber(m.accuracy);
+    // Left out when unset, so that the file keeps the integrator's own default (findStepSize).
+    if (m.stepSize > 0) out << "\n  step_size: " << formatNumber(m.stepSize);
+    out << "\n  settle_time: " << formatNumber(m.settleTime) << "\n  held_tolerance: " << formatNumber(m.heldTolerance) << "\n\n";
     const ApproximationSpec& a = s.approximation;
     out << "approximation:\n  relaxed_axes: [";
     bool first = true;

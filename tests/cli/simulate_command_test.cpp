@@ -226,21 +226,39 @@ TEST_F(SimulateCommand, NumericalFailureExitsWithThreeAndMarksTheSummaryIncomple
     EXPECT_GE(std::count(trajectory.begin(), trajectory.end(), '\n'), 1 + 55) << trajectory.substr(0, 200);
 }
 
-// Fixed steps of 5 ms (the scenario's step_size) blow the ball tripod up as its fingers close,
-// where the error-controlled run and fixed 1 ms steps hold it (docs/performance.md). The stepper
-// stops at the step whose error estimate exceeds the state's own scale (from 0.5 s): one line
-// naming where the step came from, its value and what to use, exit 2, no folder. At the 1 ms it
-// suggests, the ball clutch runs and writes its results.
+// Fixed steps of 5 ms blow the ball tripod up as its fingers close, where the error-controlled run
+// and fixed 1 ms steps hold it (docs/performance.md). The stepper stops at the step whose error
+// estimate exceeds the state's own scale (from 0.5 s): one line naming where the step came from
+// (the scenario's simulation.step_size, or --step-size), its value and what to use, exit 2, no
+// folder. At the 1 ms it suggests, the ball clutch runs and writes its results.
 TEST_F(SimulateCommand, AFixedStepTheStepperCannotTrustIsRefusedWithoutOutput) {
     const std::string out = " --out " + (dir_ / "out").string();
+    std::string tripod = slurp(fs::path(GRASPSIM_SOURCE_DIR) / "models/scenarios/ball-tripod.yaml");
+    const std::size_t at = tripod.find("  settle_time:");
+    ASSERT_NE(at, std::string::npos);
+    tripod.insert(at, "  step_size: 0.005\n");
+    const fs::path file = dir_ / "tripod-5ms.yaml";
+    std::ofstream(file) << tripod;
+    extraFiles_ = 1;
     // 664 times the scale: far from the threshold, where the ball clutch's 1.02 is refused by a hair.
-    expectBadInput("simulate ball-tripod --integrator implicit-fixed --duration 1" + out,
+    expectBadInput("simulate " + file.string() + " --integrator implicit-fixed --duration 1" + out,
                    {"simulation.step_size: 0.005 s", "implicit-fixed", "t = 0.5000 s", "--step-size", "--integrator implicit"});
     expectBadInput("simulate ball-tripod --mode approx --integrator implicit-fixed --step-size 0.005 --duration 1" + out,
                    {"--step-size: 0.005 s", "t = 0.5000 s"});
     const RunResult r = run("simulate ball-clutch --integrator implicit-fixed --step-size 0.001 --duration 1" + out);
     EXPECT_EQ(r.exitCode, 0) << r.err;
     EXPECT_TRUE(fs::exists(dir_ / "out" / "summary.json"));
+}
+
+// Where neither the run nor the scenario gives a step, implicit-fixed takes 1 ms
+// (simulation::kDefaultFixedStepSize), at which the tripod that 5 ms throws holds: 1.2 s in
+// exactly 1200 steps (the fixed step's count), held after settling (its goals within the held
+// tolerance, the run's own check).
+TEST_F(SimulateCommand, ImplicitFixedWithoutAStepTakesTheDefaultMillisecondAndHoldsTheTripod) {
+    const std::string out = (dir_ / "fixed").string();
+    const RunResult r = run("simulate ball-tripod --integrator implicit-fixed --duration 1.2 --out " + out);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("1200 steps, held yes"), std::string::npos) << r.out;
 }
 
 TEST_F(SimulateCommand, ApproxModeWritesTheSwitchEvents) {

@@ -105,6 +105,18 @@ TEST(ScenarioWriter, DefaultsAndEditedFieldsAreWrittenOut) {
     expectSameScenario(edited, parseScenario(text, "written.yaml"));
 }
 
+// A step left unset stays unset (the integrator's own default, simulation::findStepSize): no
+// step_size key, and 0 read back; a step set is written and read back.
+TEST(ScenarioWriter, StepSizeIsWrittenOnlyWhenSet) {
+    Scenario s = findBuiltinScenario("ball-clutch");
+    ASSERT_EQ(s.simulation.stepSize, 0);
+    EXPECT_EQ(formatScenarioYaml(s).find("step_size:"), std::string::npos);
+    EXPECT_EQ(parseScenario(formatScenarioYaml(s), "written.yaml").simulation.stepSize, 0);
+    s.simulation.stepSize = 0.002;
+    EXPECT_NE(formatScenarioYaml(s).find("step_size: 0.002"), std::string::npos);
+    EXPECT_EQ(parseScenario(formatScenarioYaml(s), "written.yaml").simulation.stepSize, 0.002);
+}
+
 // Numbers are written as the shortest text that reads back to the same double: the step a user
 // typed as 0.005 reads 0.005 (not 0.0050000000000000001), and awkward doubles still read back bit
 // for bit. Oracle: the text itself, and the reader.

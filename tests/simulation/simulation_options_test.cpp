@@ -74,6 +74,27 @@ TEST(ResolveApproxOptions, RejectsWhatTheSwitchCannotUse) {
     EXPECT_EQ(findMessage({}), "");
 }
 
+// The stepper's step: the run's, else the scenario's, else the integrator's own (the IK interval
+// with error control, 1 ms at fixed steps); the messages name the same source.
+TEST(FindStepSize, TheRunsStepThenTheScenariosThenTheIntegratorsOwn) {
+    scenario::Scenario s;
+    s.source = "grasp.yaml";
+    s.controller.ikInterval = 0.02;
+    simulation::SimulationOptions o;
+    EXPECT_EQ(simulation::findStepSize(s, o, false), 0.02);
+    EXPECT_EQ(simulation::findStepSize(s, o, true), simulation::kDefaultFixedStepSize);
+    EXPECT_NE(simulation::describeStepSizeSource(s, o, true).find("default fixed step"), std::string::npos);
+    EXPECT_NE(simulation::describeStepSizeSource(s, o, false).find("controller.ik_interval"), std::string::npos);
+    s.simulation.stepSize = 0.004;
+    EXPECT_EQ(simulation::findStepSize(s, o, false), 0.004);
+    EXPECT_EQ(simulation::findStepSize(s, o, true), 0.004);
+    EXPECT_EQ(simulation::describeStepSizeSource(s, o, true), "grasp.yaml: simulation.step_size");
+    o.stepSize = 0.003;
+    EXPECT_EQ(simulation::findStepSize(s, o, false), 0.003);
+    EXPECT_EQ(simulation::findStepSize(s, o, true), 0.003);
+    EXPECT_EQ(simulation::describeStepSizeSource(s, o, false), "--step-size");
+}
+
 // The default integrator: the linearly implicit stepper where it has every stiff element's
 // Jacobian (full compliant contact, the merged bushing), CPodes elsewhere; a choice given wins.
 TEST(ResolveIntegrator, AutomaticTakesTheImplicitStepperWhereItHasEveryJacobian) {

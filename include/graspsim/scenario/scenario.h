@@ -142,8 +142,9 @@ struct SimulationSpec {
     /// Relative accuracy of the integrator, in (0, 1); default 1e-3.
     double accuracy = 1e-3;
     /// Longest step of the linearly implicit integrator (s; its fixed step with implicit-fixed),
-    /// > 0; default 0.005.
-    double stepSize = 5e-3;
+    /// > 0; 0 (the default, the key left out) takes the integrator's own: the controller's
+    /// ik_interval for error control, 1 ms at fixed steps (simulation::findStepSize).
+    double stepSize = 0;
     /// Time from which the grasp counts as settled, and the object's drift is measured (s), in
     /// [ControllerSpec::approachTime, duration]; default 1.
     double settleTime = 1.0;

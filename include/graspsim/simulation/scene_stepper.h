@@ -26,12 +26,12 @@ struct SceneStepper {
 };
 
 /// The stepper of `options.integrator` for `experiment`'s System, at `options.accuracy` (the
-/// scenario's if 0) and, for the linearly implicit one, steps up to `options.stepSize` (the
-/// scenario's simulation.step_size if 0). Not initialized. The experiment must outlive it.
+/// scenario's if 0) and, for the linearly implicit one, steps up to findStepSize's (or at it, with
+/// implicit-fixed). Not initialized. The experiment must outlive it.
 SceneStepper makeSceneStepper(const GraspExperiment& experiment, const SimulationOptions& options);
 
 /// The stepper's refusal of a fixed step (`--integrator implicit-fixed`) in the run's own terms:
-/// the field the step came from (--step-size, or the scenario's simulation.step_size), its value,
+/// where the step came from (describeStepSizeSource), its value,
 /// the time, and what to use instead (a shorter step or error control). For the caller to throw;
 /// a run that cannot be trusted gives no result.
 InputError describeFixedStepTooLong(const scenario::Scenario& scenario, const SimulationOptions& options,

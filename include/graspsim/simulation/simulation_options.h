@@ -175,7 +175,7 @@ struct SimulationOptions {
     /// tolerance follow it); 0 takes the scenario's simulation.accuracy.
     double accuracy = 0;
     /// Longest (LinearlyImplicit) or fixed (LinearlyImplicitFixed) step (s); 0 takes the scenario's
-    /// simulation.step_size.
+    /// (findStepSize).
     double stepSize = 0;
     /// A load on the object growing in time (the holding-capacity protocol, ramp_load.h); unset: none.
     std::optional<LoadRampSpec> loadRamp;
@@ -218,6 +218,21 @@ void checkApproxAttach(const scenario::Scenario& scenario, const SimulationOptio
 /// explicit part, whose stability interval on the negative real axis ends at -2.
 constexpr double kAnchorStabilityLimit = 2.0;
 
+/// The fixed step (s) of IntegratorChoice::LinearlyImplicitFixed where neither the run nor the
+/// scenario gives one: every shipped scene holds at it, where 2 ms and longer blow some up
+/// (docs/performance.md, "Fixed steps that cannot be trusted").
+constexpr double kDefaultFixedStepSize = 1e-3;
+
+/// The linearly implicit stepper's step (s): its longest with error control (`fixed` false), its
+/// step at fixed steps. `options.stepSize` if > 0, else the scenario's simulation.step_size if > 0,
+/// else with error control the controller's ik_interval (its events come that often, so a longer
+/// step would end on them anyway) and at fixed steps kDefaultFixedStepSize.
+double findStepSize(const scenario::Scenario& scenario, const SimulationOptions& options, bool fixed);
+
+/// Where findStepSize takes the step from, for messages: "--step-size", "<scenario source>:
+/// simulation.step_size", or the integrator's default.
+std::string describeStepSizeSource(const scenario::Scenario& scenario, const SimulationOptions& options, bool fixed);
+
 /// The integrator a run of `scenario` with `options` uses: `options.integrator` unless it is
 /// Automatic, which is LinearlyImplicit for compliant contact with the regularized friction law in
 /// full mode and with the merged bushing (its steps at the cap cost 4-5x less than CPodes's on the
@@ -230,7 +245,7 @@ IntegratorChoice resolveIntegrator(const scenario::Scenario& scenario, const Sim
 
 /// Whether `options.integrator` can run the scenario: not with rigid contact, which has its own
 /// stepper (only auto and simbody are accepted there); and a fixed step (IntegratorChoice::
-/// LinearlyImplicitFixed, its stepSize or the scenario's simulation.step_size) must be stable with
+/// LinearlyImplicitFixed, at findStepSize's step) must be stable with
 /// the scenario's friction law: with the anchor law at most kAnchorStabilityLimit x its relaxation
 /// time (measured on the ball clutch at the default 1 ms: 2 ms runs, 2.5 ms blows up; at 2 ms
 /// relaxation: 4 ms runs, 5 ms blows up). Error-controlled integrators pass: CPodes and CVODE
