@@ -54,7 +54,7 @@ SceneStepper makeSceneStepper(const GraspExperiment& experiment, const Simulatio
     const double accuracy = options.accuracy > 0 ? options.accuracy : spec.accuracy;
     const IntegratorChoice integrator = resolveIntegrator(scene.getScenario(), options);
     if (integrator == IntegratorChoice::LinearlyImplicit) {
-        double longest = findStepSize(scene.getScenario(), options, false);
+        double longest = findStepSize(scene.getScenario(), options).step;
         // Its error estimate watches q and u, not the anchors' states, which it integrates
         // explicitly: past this bound they blow up unseen (checkIntegratorChoice's fixed-step limit).
         if (scene.getScenario().friction.model == contact::FrictionModel::Anchor) {
@@ -63,7 +63,7 @@ SceneStepper makeSceneStepper(const GraspExperiment& experiment, const Simulatio
         return makeLinearlyImplicitStepper(experiment, longest, accuracy);
     }
     if (integrator == IntegratorChoice::LinearlyImplicitFixed) {
-        return makeLinearlyImplicitStepper(experiment, findStepSize(scene.getScenario(), options, true), 0.0);
+        return makeLinearlyImplicitStepper(experiment, findStepSize(scene.getScenario(), options).step, 0.0);
     }
     SceneStepper made;
     if (integrator == IntegratorChoice::SimbodyCpodes) {
@@ -80,15 +80,14 @@ InputError describeFixedStepTooLong(const scenario::Scenario& scenario, const Si
                                     const integration::FixedStepTooLongError& error) {
     // The value as given: the steps themselves are the intervals between samples cut into equal
     // steps no longer than it (error.getStepSize()).
-    const std::string field = describeStepSizeSource(scenario, options, true);
-    const double given = findStepSize(scenario, options, true);
+    const StepSizeChoice given = findStepSize(scenario, options);
     char text[700];
     std::snprintf(text, sizeof text,
                   "%s: %g s is not accepted with --integrator implicit-fixed for scenario '%s': the step from t = %.4f s "
                   "has an error estimate %.3g times the state's own scale (its second- and first-order solutions "
                   "disagree entirely: the step is unstable or far too long here); use a shorter --step-size (0.001 "
                   "holds the shipped scenes) or --integrator implicit",
-                  field.c_str(), given, scenario.name.c_str(), error.getTime(), error.getEstimate());
+                  given.source.c_str(), given.step, scenario.name.c_str(), error.getTime(), error.getEstimate());
     return InputError(text);
 }
 

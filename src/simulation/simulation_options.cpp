@@ -139,17 +139,13 @@ IntegratorChoice resolveIntegrator(const scenario::Scenario& scenario, const Sim
     return IntegratorChoice::LinearlyImplicit;
 }
 
-double findStepSize(const scenario::Scenario& scenario, const SimulationOptions& options, bool fixed) {
-    if (options.stepSize > 0) return options.stepSize;
-    if (scenario.simulation.stepSize > 0) return scenario.simulation.stepSize;
-    return fixed ? kDefaultFixedStepSize : scenario.controller.ikInterval;
-}
-
-std::string describeStepSizeSource(const scenario::Scenario& scenario, const SimulationOptions& options, bool fixed) {
-    if (options.stepSize > 0) return "--step-size";
-    if (scenario.simulation.stepSize > 0) return scenario.source + ": simulation.step_size";
-    return fixed ? "the default fixed step (no --step-size, no simulation.step_size)"
-                 : "the default longest step, controller.ik_interval (no --step-size, no simulation.step_size)";
+StepSizeChoice findStepSize(const scenario::Scenario& scenario, const SimulationOptions& options) {
+    if (options.stepSize > 0) return {options.stepSize, "--step-size"};
+    if (scenario.simulation.stepSize > 0) return {scenario.simulation.stepSize, scenario.source + ": simulation.step_size"};
+    if (options.integrator == IntegratorChoice::LinearlyImplicitFixed) {
+        return {kDefaultFixedStepSize, "the default fixed step (no --step-size, no simulation.step_size)"};
+    }
+    return {scenario.controller.ikInterval, "the default longest step, controller.ik_interval (no --step-size, no simulation.step_size)"};
 }
 
 void checkIntegratorChoice(const scenario::Scenario& scenario, const SimulationOptions& options) {
@@ -163,13 +159,14 @@ void checkIntegratorChoice(const scenario::Scenario& scenario, const SimulationO
         scenario.friction.model != contact::FrictionModel::Anchor) {
         return;
     }
-    const double step = findStepSize(scenario, options, true);
+    const StepSizeChoice choice = findStepSize(scenario, options);
+    const double step = choice.step;
     const double tau = scenario.friction.anchor.relaxationTime;
     // The linearly implicit stepper leaves the anchors' rates out of its Jacobian: they are
     // integrated explicitly, and ROS2's explicit part (a two-stage Runge-Kutta method) is stable for
     // a decay rate 1 / tau only while step / tau <= 2.
     if (step <= kAnchorStabilityLimit * tau) return;
-    const std::string field = describeStepSizeSource(scenario, options, true);
+    const std::string& field = choice.source;
     char text[500];
     std::snprintf(text, sizeof text,
                   "%s: %g s is not accepted with --integrator implicit-fixed and friction_model anchor: the anchors' "

@@ -80,19 +80,22 @@ TEST(FindStepSize, TheRunsStepThenTheScenariosThenTheIntegratorsOwn) {
     scenario::Scenario s;
     s.source = "grasp.yaml";
     s.controller.ikInterval = 0.02;
-    simulation::SimulationOptions o;
-    EXPECT_EQ(simulation::findStepSize(s, o, false), 0.02);
-    EXPECT_EQ(simulation::findStepSize(s, o, true), simulation::kDefaultFixedStepSize);
-    EXPECT_NE(simulation::describeStepSizeSource(s, o, true).find("default fixed step"), std::string::npos);
-    EXPECT_NE(simulation::describeStepSizeSource(s, o, false).find("controller.ik_interval"), std::string::npos);
+    simulation::SimulationOptions controlled, fixed;
+    fixed.integrator = simulation::IntegratorChoice::LinearlyImplicitFixed;
+    EXPECT_EQ(simulation::findStepSize(s, controlled).step, 0.02);
+    EXPECT_NE(simulation::findStepSize(s, controlled).source.find("controller.ik_interval"), std::string::npos);
+    EXPECT_EQ(simulation::findStepSize(s, fixed).step, simulation::kDefaultFixedStepSize);
+    EXPECT_NE(simulation::findStepSize(s, fixed).source.find("default fixed step"), std::string::npos);
     s.simulation.stepSize = 0.004;
-    EXPECT_EQ(simulation::findStepSize(s, o, false), 0.004);
-    EXPECT_EQ(simulation::findStepSize(s, o, true), 0.004);
-    EXPECT_EQ(simulation::describeStepSizeSource(s, o, true), "grasp.yaml: simulation.step_size");
-    o.stepSize = 0.003;
-    EXPECT_EQ(simulation::findStepSize(s, o, false), 0.003);
-    EXPECT_EQ(simulation::findStepSize(s, o, true), 0.003);
-    EXPECT_EQ(simulation::describeStepSizeSource(s, o, false), "--step-size");
+    for (const simulation::SimulationOptions& o : {controlled, fixed}) {
+        EXPECT_EQ(simulation::findStepSize(s, o).step, 0.004);
+        EXPECT_EQ(simulation::findStepSize(s, o).source, "grasp.yaml: simulation.step_size");
+    }
+    controlled.stepSize = fixed.stepSize = 0.003;
+    for (const simulation::SimulationOptions& o : {controlled, fixed}) {
+        EXPECT_EQ(simulation::findStepSize(s, o).step, 0.003);
+        EXPECT_EQ(simulation::findStepSize(s, o).source, "--step-size");
+    }
 }
 
 // The default integrator: the linearly implicit stepper where it has every stiff element's

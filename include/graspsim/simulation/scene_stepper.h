@@ -31,7 +31,7 @@ struct SceneStepper {
 SceneStepper makeSceneStepper(const GraspExperiment& experiment, const SimulationOptions& options);
 
 /// The stepper's refusal of a fixed step (`--integrator implicit-fixed`) in the run's own terms:
-/// where the step came from (describeStepSizeSource), its value,
+/// where the step came from (findStepSize), its value,
 /// the time, and what to use instead (a shorter step or error control). For the caller to throw;
 /// a run that cannot be trusted gives no result.
 InputError describeFixedStepTooLong(const scenario::Scenario& scenario, const SimulationOptions& options,

@@ -223,15 +223,17 @@ constexpr double kAnchorStabilityLimit = 2.0;
 /// (docs/performance.md, "Fixed steps that cannot be trusted").
 constexpr double kDefaultFixedStepSize = 1e-3;
 
-/// The linearly implicit stepper's step (s): its longest with error control (`fixed` false), its
-/// step at fixed steps. `options.stepSize` if > 0, else the scenario's simulation.step_size if > 0,
-/// else with error control the controller's ik_interval (its events come that often, so a longer
-/// step would end on them anyway) and at fixed steps kDefaultFixedStepSize.
-double findStepSize(const scenario::Scenario& scenario, const SimulationOptions& options, bool fixed);
+/// The linearly implicit stepper's step, and where it came from.
+struct StepSizeChoice {
+    double step = 0;     ///< s: the longest with error control, the step with implicit-fixed
+    std::string source;  ///< for messages: "--step-size", "<scenario source>: simulation.step_size" or the default's
+};
 
-/// Where findStepSize takes the step from, for messages: "--step-size", "<scenario source>:
-/// simulation.step_size", or the integrator's default.
-std::string describeStepSizeSource(const scenario::Scenario& scenario, const SimulationOptions& options, bool fixed);
+/// `options.stepSize` if > 0, else the scenario's simulation.step_size if > 0, else with error
+/// control the controller's ik_interval (its events come that often, so a longer step would end on
+/// them anyway) and with `options.integrator` IntegratorChoice::LinearlyImplicitFixed
+/// kDefaultFixedStepSize.
+StepSizeChoice findStepSize(const scenario::Scenario& scenario, const SimulationOptions& options);
 
 /// The integrator a run of `scenario` with `options` uses: `options.integrator` unless it is
 /// Automatic, which is LinearlyImplicit for compliant contact with the regularized friction law in
