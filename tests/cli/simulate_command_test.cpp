@@ -20,13 +20,17 @@ using SimulateCommand = graspsim::testing::CliProcess;
 
 namespace {
 
-// A copy of the built-in ball scenario with one line replaced.
-std::string ballScenarioWith(const std::string& from, const std::string& to) {
-    std::string text = slurp(fs::path(GRASPSIM_SOURCE_DIR) / "models/scenarios/ball-clutch.yaml");
+// A copy of a shipped scenario with one line replaced.
+std::string shippedScenarioWith(const std::string& name, const std::string& from, const std::string& to) {
+    std::string text = slurp(fs::path(GRASPSIM_SOURCE_DIR) / "models/scenarios" / (name + ".yaml"));
     const std::size_t at = text.find(from);
     EXPECT_NE(at, std::string::npos) << from;
     if (at != std::string::npos) text.replace(at, from.size(), to);
     return text;
+}
+
+std::string ballScenarioWith(const std::string& from, const std::string& to) {
+    return shippedScenarioWith("ball-clutch", from, to);
 }
 
 }  // namespace
@@ -233,15 +237,11 @@ TEST_F(SimulateCommand, NumericalFailureExitsWithThreeAndMarksTheSummaryIncomple
 // folder. At the 1 ms it suggests, the ball clutch runs and writes its results.
 TEST_F(SimulateCommand, AFixedStepTheStepperCannotTrustIsRefusedWithoutOutput) {
     const std::string out = " --out " + (dir_ / "out").string();
-    std::string tripod = slurp(fs::path(GRASPSIM_SOURCE_DIR) / "models/scenarios/ball-tripod.yaml");
-    const std::size_t at = tripod.find("  settle_time:");
-    ASSERT_NE(at, std::string::npos);
-    tripod.insert(at, "  step_size: 0.005\n");
-    const fs::path file = dir_ / "tripod-5ms.yaml";
-    std::ofstream(file) << tripod;
+    const std::string file =
+        write("tripod-5ms.yaml", shippedScenarioWith("ball-tripod", "  settle_time:", "  step_size: 0.005\n  settle_time:"));
     extraFiles_ = 1;
     // 664 times the scale: far from the threshold, where the ball clutch's 1.02 is refused by a hair.
-    expectBadInput("simulate " + file.string() + " --integrator implicit-fixed --duration 1" + out,
+    expectBadInput("simulate " + file + " --integrator implicit-fixed --duration 1" + out,
                    {"simulation.step_size: 0.005 s", "implicit-fixed", "t = 0.5000 s", "--step-size", "--integrator implicit"});
     expectBadInput("simulate ball-tripod --mode approx --integrator implicit-fixed --step-size 0.005 --duration 1" + out,
                    {"--step-size: 0.005 s", "t = 0.5000 s"});
