@@ -29,9 +29,10 @@ const FlagDefinition kFlags[] = {
      "approx: the compliance release trigger's onset: hand the object back once the grasp's compliance model says full "
      "contact would have let it give this far at the grasp goals, m (default 0.002, the model's slip onset)"},
     {"--bushing-give", &ApproxFlags::bushingGive,
-     "approx: how the merged bushing gives under a load: auto (default: model on the merged bushing), model (its "
-     "rotational stiffness from the grasp's compliance model, preloaded with the contacts' wrench, the locked fingers "
-     "following the object's turn; docs/capacity.md) or stiff (stiffened for the penetration bound)"},
+     "approx: how the merged bushing gives under a load: auto (default: coupled on the merged bushing), coupled (the "
+     "grasp's compliance model's whole 6 x 6 stiffness, rotations and translations coupled, preloaded with the "
+     "contacts' wrench, the locked fingers following the object; docs/capacity.md), model (the model's rotational "
+     "stiffness only, the translations stiff) or stiff (stiffened for the penetration bound)"},
     {"--hand-back", &ApproxFlags::handBack,
      "approx: the state full contact takes the object back in at a compliance-trigger release: engaged (default: as the "
      "constraint held it) or deflected (object and finger joints deflected as the grasp's compliance model says full "

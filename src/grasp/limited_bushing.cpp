@@ -21,9 +21,19 @@ struct AxisSettings {
     SimTK::Vec6 limits = SimTK::Vec6(SimTK::Infinity);       // L+ (the upper side)
     SimTK::Vec6 lowerLimits = SimTK::Vec6(SimTK::Infinity);  // L-: the force stays >= -L-
     std::array<bool, 6> locked = {true, true, true, true, true, true};
-    SimTK::Vec6 stiffness = SimTK::Vec6(0);
+    SimTK::Vec6 stiffness = SimTK::Vec6(0);  // the diagonal of stiffnessMatrix when coupled
     SimTK::Vec6 damping = SimTK::Vec6(0);
+    bool coupled = false;
+    SimTK::Mat66 stiffnessMatrix = SimTK::Mat66::getNaN();  // read only when coupled
 };
+
+// K e, the elastic force's magnitude per axis (the force on O is its negative).
+SimTK::Vec6 calcElasticLoad(const AxisSettings& settings, const SimTK::Vec6& e) {
+    if (settings.coupled) return settings.stiffnessMatrix * e;
+    SimTK::Vec6 load;
+    for (int k = 0; k < 6; ++k) load[k] = settings.stiffness[k] * e[k];
+    return load;
+}
 
 void checkAxisValues(const SimTK::Vec6& values, const std::string& what, bool allowZero,
                      bool allowInfinity) {
@@ -201,12 +211,14 @@ public:
         const AxisSettings& settings = getSettings(s);
         const SimTK::Vec6 upper = applyAxisLocks(settings.limits, settings.locked);
         const SimTK::Vec6 lower = applyAxisLocks(settings.lowerLimits, settings.locked);
-        const SimTK::Vec6& K = settings.stiffness;
+        // The per-axis law in terms of the elastic load (K e)_k, a unit stiffness: the same numbers
+        // as K_k and e_k for a diagonal K (K_k > 0), and the coupled matrix's load otherwise.
+        const SimTK::Vec6 load = calcElasticLoad(settings, k.e);
         BushingResponse response;
         for (int i = 0; i < 6; ++i) {
-            response.slip[i] = calcTwoSidedSlipFraction(K[i], lower[i], upper[i], onsetWidth_, k.e[i], k.r[i]);
+            response.slip[i] = calcTwoSidedSlipFraction(1, lower[i], upper[i], onsetWidth_, load[i], k.r[i]);
             const double edot = (1 - response.slip[i]) * k.r[i];
-            response.force[i] = calcTwoSidedAxisForce(K[i], settings.damping[i], lower[i], upper[i], k.e[i], edot);
+            response.force[i] = calcTwoSidedAxisForce(1, settings.damping[i], lower[i], upper[i], load[i], edot);
         }
         return response;
     }
@@ -278,13 +290,14 @@ public:
         }
     }
 
-    // Elastic energy (1/2) K e^2 only; slip dissipates and is not recoverable.
+    // Elastic energy (1/2) e^T K e only; slip dissipates and is not recoverable.
     SimTK::Real calcPotentialEnergy(const SimTK::State& s) const override {
         if (!isEnabled(s)) return 0;
         const SimTK::Vec6 e = findDisplacement(s);
-        const SimTK::Vec6& K = getSettings(s).stiffness;
+        const AxisSettings& settings = getSettings(s);
+        if (settings.coupled) return 0.5 * (~e * calcElasticLoad(settings, e));
         double energy = 0;
-        for (int k = 0; k < 6; ++k) energy += 0.5 * K[k] * e[k] * e[k];
+        for (int k = 0; k < 6; ++k) energy += 0.5 * settings.stiffness[k] * e[k] * e[k];
         return energy;
     }
 
@@ -334,6 +347,9 @@ LimitedBushing::LimitedBushing(SimTK::GeneralForceSubsystem& forces,
 
 const SimTK::Vec6& LimitedBushing::getStiffness() const {
     return asBushingImpl(getImplementation()).getStiffness();
+}
+const SimTK::MobilizedBody& LimitedBushing::getObjectBody() const {
+    return asBushingImpl(getImplementation()).getBodyO();
 }
 const SimTK::Vec6& LimitedBushing::getDamping() const {
     return asBushingImpl(getImplementation()).getDamping();
@@ -386,7 +402,28 @@ void LimitedBushing::setStiffness(SimTK::State& state, const SimTK::Vec6& stiffn
     AxisSettings settings = bushingImpl.getSettings(state);
     settings.stiffness = stiffness;
     settings.damping = damping;
+    settings.coupled = false;
     bushingImpl.setSettings(state, settings);
+}
+void LimitedBushing::setStiffness(SimTK::State& state, const SimTK::Mat66& stiffness, const SimTK::Vec6& damping) const {
+    checkStiffnessMatrix(stiffness);
+    SimTK::Vec6 diagonal;
+    for (int k = 0; k < 6; ++k) diagonal[k] = stiffness(k, k);
+    setStiffness(state, diagonal, damping);
+    const LimitedBushingImpl& bushingImpl = asBushingImpl(getImplementation());
+    AxisSettings settings = bushingImpl.getSettings(state);
+    settings.coupled = true;
+    settings.stiffnessMatrix = stiffness;
+    bushingImpl.setSettings(state, settings);
+}
+SimTK::Mat66 LimitedBushing::findStiffnessMatrix(const SimTK::State& state) const {
+    const AxisSettings& settings = asBushingImpl(getImplementation()).getSettings(state);
+    if (settings.coupled) return settings.stiffnessMatrix;
+    SimTK::Mat66 K;
+    for (int r = 0; r < 6; ++r) {
+        for (int c = 0; c < 6; ++c) K(r, c) = r == c ? settings.stiffness[r] : 0.0;
+    }
+    return K;
 }
 bool LimitedBushing::isAxisLocked(const SimTK::State& state, BushingAxis axis) const {
     return asBushingImpl(getImplementation()).getSettings(state).locked[toIndex(axis)];
@@ -439,34 +476,6 @@ bool LimitedBushing::isSliding(const SimTK::State& state, BushingAxis axis) cons
     return asBushingImpl(getImplementation()).isSliding(state, toIndex(axis));
 }
 
-// Order matters: enable (Instance), anchor at the current pose, then stiffness and limits, which
-// move the anchor if the (zero) displacement were over them.
-void LimitedBushing::engage(SimTK::State& state, const AttachmentEngagement& engagement) const {
-    const SimTK::MobilizedBody& bodyO = asBushingImpl(getImplementation()).getBodyO();
-    const SimTK::System& system = bodyO.getMatterSubsystem().getSystem();
-    setFrames(state, engagement.X_HF, engagement.X_OM);
-    setEnabled(state, true);
-    system.realize(state, SimTK::Stage::Position);
-    resetAnchor(state);
-    const SimTK::MassProperties mp = bodyO.getBody().getDefaultRigidBodyMassProperties();
-    const SimTK::Vec3 I = mp.calcCentralInertia().getMoments();
-    const SimTK::Vec6 lower = engagement.lowerLimits.value_or(engagement.limits);
-    SimTK::Vec6 stiffness = calcStiffnessForBound(getStiffness(), findLargerSide(lower, engagement.limits),
-                                                  engagement.leverArm, engagement.penetrationBound);
-    for (int k = 0; k < 6; ++k) {
-        if (engagement.stiffness && (*engagement.stiffness)[k] > 0) stiffness[k] = (*engagement.stiffness)[k];
-    }
-    setStiffness(state, stiffness, calcCriticalDamping(stiffness, I, mp.getMass()));
-    setLimits(state, lower, engagement.limits);
-    for (int k = 0; k < 6; ++k) setAxisLocked(state, static_cast<BushingAxis>(k), engagement.lockedAxes[k]);
-    if (engagement.preload) {
-        const SimTK::Vec6 upper = findEffectiveLimits(state), below = findEffectiveLowerLimits(state);
-        SimTK::Vec6 e;
-        for (int k = 0; k < 6; ++k) e[k] = -std::clamp((*engagement.preload)[k], -below[k], upper[k]) / stiffness[k];
-        setAnchorDisplacement(state, e);
-    }
-    system.realize(state, SimTK::Stage::Position);
-}
 
 SimTK::SpatialVec LimitedBushing::findReactionOnObject(const SimTK::State& state) const {
     const SimTK::MobilizedBody& bodyO = asBushingImpl(getImplementation()).getBodyO();

@@ -30,9 +30,13 @@ void LimitedBushingJacobian::fillRelativeJacobian(const SimTK::State& state, std
 
 void LimitedBushingJacobian::addForceJacobians(const SimTK::State& state, SimTK::Matrix& D, SimTK::Matrix& K) const {
     if (!bushing_.isEnabled(state)) return;
-    SimTK::Vec6 stiffness = bushing_.getStiffness(state), damping = bushing_.getDamping(state);
+    SimTK::Vec6 damping = bushing_.getDamping(state);
+    SimTK::Mat66 stiffness = bushing_.findStiffnessMatrix(state);
+    // A sliding axis's force is its limit: no row of K (its load no longer sets the force).
     for (int k = 0; k < 6; ++k) {
-        if (bushing_.isSliding(state, static_cast<BushingAxis>(k))) stiffness[k] = damping[k] = 0;
+        if (!bushing_.isSliding(state, static_cast<BushingAxis>(k))) continue;
+        damping[k] = 0;
+        for (int l = 0; l < 6; ++l) stiffness(k, l) = 0;
     }
     const int nu = state.getNU();
     std::vector<double> J(6 * static_cast<std::size_t>(nu));
@@ -49,7 +53,10 @@ void LimitedBushingJacobian::addForceJacobians(const SimTK::State& state, SimTK:
             double dd = 0, kk = 0;
             for (int k = 0; k < 6; ++k) {
                 dd += Jr[k] * damping[k] * Jc[k];
-                kk += Jr[k] * stiffness[k] * Jc[k];
+                kk += Jr[k] * stiffness(k, k) * Jc[k];
+                for (int l = 0; l < 6; ++l) {
+                    if (l != k && stiffness(k, l) != 0) kk += Jr[k] * stiffness(k, l) * Jc[l];
+                }
             }
             d[r + nu * c] -= dd;
             s[r + nu * c] -= kk;

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+
+#include "graspsim/error.h"
 
 namespace graspsim::grasp {
 
@@ -52,6 +55,34 @@ SimTK::Vec6 findLargerSide(const SimTK::Vec6& lower, const SimTK::Vec6& upper) {
     SimTK::Vec6 result;
     for (int k = 0; k < 6; ++k) result[k] = std::max(lower[k], upper[k]);
     return result;
+}
+
+bool isPositiveDefinite(const SimTK::Mat66& K) {
+    double L[6][6] = {};
+    for (int j = 0; j < 6; ++j) {
+        double d = K(j, j);
+        for (int k = 0; k < j; ++k) d -= L[j][k] * L[j][k];
+        if (!(d > 0)) return false;
+        L[j][j] = std::sqrt(d);
+        for (int i = j + 1; i < 6; ++i) {
+            double v = K(i, j);
+            for (int k = 0; k < j; ++k) v -= L[i][k] * L[j][k];
+            L[i][j] = v / L[j][j];
+        }
+    }
+    return true;
+}
+
+void checkStiffnessMatrix(const SimTK::Mat66& K) {
+    for (int r = 0; r < 6; ++r) {
+        for (int c = 0; c < 6; ++c) {
+            if (!std::isfinite(K(r, c)) || std::abs(K(r, c) - K(c, r)) > 1e-9 * (std::abs(K(r, c)) + std::abs(K(c, r)))) {
+                throw InputError("limited bushing stiffness matrix entry (" + std::to_string(r) + ", " + std::to_string(c) +
+                                 ") is " + std::to_string(K(r, c)) + "; accepted: finite and symmetric");
+            }
+        }
+    }
+    if (!isPositiveDefinite(K)) throw InputError("limited bushing stiffness matrix is not positive definite");
 }
 
 SimTK::Vec3 calcRotationVector(const SimTK::Rotation& R) {

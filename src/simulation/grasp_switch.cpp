@@ -363,8 +363,9 @@ void GraspSwitch::engage(SimTK::State& state, double quality, const std::vector<
     engagement.leverArm = findLeverArm(reports, p_GM);
     engagement.penetrationBound = options_.maxEngagedPenetration;
     FollowedGrasp followed;
-    if (options_.bushingGive == ApproxBushingGive::Model) {
-        followed = captureFollowedGrasp(context_, state, reports, setModelGive(context_, state, reports, p_GM, engagement));
+    if (options_.bushingGive == ApproxBushingGive::Model || options_.bushingGive == ApproxBushingGive::Coupled) {
+        const bool coupled = options_.bushingGive == ApproxBushingGive::Coupled;
+        followed = captureFollowedGrasp(context_, state, reports, setModelGive(context_, state, reports, p_GM, coupled, engagement));
     }
     for (int k = 0; k < 6; ++k) engagement.lockedAxes[k] = !(*options_.relaxedAxes)[k];
     context_.contacts.setPairsEnabled(state, context_.contacts.findAllPairIndices(), false);  // (b)
@@ -372,15 +373,7 @@ void GraspSwitch::engage(SimTK::State& state, double quality, const std::vector<
     context_.attachment.engage(state, engagement);                                                // (d)
     const SimTK::Transform X_HO = ~context_.palm.getBodyTransform(state) * context_.object.getBodyTransform(state);
     std::string text = describeEngagement(qThreshold, engagement);
-    if (engagement.stiffness) {
-        // An axis the model leaves to the bound (no positive stiffness) is named as such.
-        text += "; rotational stiffness from the compliance model";
-        for (int k = 0; k < 3; ++k) {
-            const double value = (*engagement.stiffness)[k];
-            text += value > 0 ? format(" %.6g", value) : std::string(" (the bound's)");
-        }
-        text += " N m/rad";
-    }
+    if (engagement.stiffness) text += describeModelGive(engagement);
     // As --limits compliance computes them (static friction unless told otherwise, M at O's origin
     // with O's orientation), whatever the constraint's own limits are; at the first engagement
     // only, on the unloaded grasp, and kept for the run.

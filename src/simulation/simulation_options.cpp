@@ -82,7 +82,8 @@ ApproxBushingGive parseApproxBushingGive(const std::string& text, const std::str
     if (text == "auto") return ApproxBushingGive::Automatic;
     if (text == "stiff") return ApproxBushingGive::Stiff;
     if (text == "model") return ApproxBushingGive::Model;
-    throw InputError(source + ": bushing give '" + text + "' is not accepted; use auto, stiff or model");
+    if (text == "coupled") return ApproxBushingGive::Coupled;
+    throw InputError(source + ": bushing give '" + text + "' is not accepted; use auto, stiff, model or coupled");
 }
 
 std::string toString(ApproxBushingGive give) {
@@ -90,6 +91,7 @@ std::string toString(ApproxBushingGive give) {
     case ApproxBushingGive::Automatic: return "auto";
     case ApproxBushingGive::Stiff: return "stiff";
     case ApproxBushingGive::Model: return "model";
+    case ApproxBushingGive::Coupled: return "coupled";
     }
     return "?";
 }
@@ -204,10 +206,11 @@ ApproxOptions resolveApproxOptions(const ApproxOptions& given, const scenario::A
     }
     const bool mergedBushing = options.constraint == ApproxConstraint::Bushing && options.attach == ApproxAttach::Merged;
     if (options.bushingGive == ApproxBushingGive::Automatic) {
-        options.bushingGive = mergedBushing ? ApproxBushingGive::Model : ApproxBushingGive::Stiff;
+        options.bushingGive = mergedBushing ? ApproxBushingGive::Coupled : ApproxBushingGive::Stiff;
     }
-    if (options.bushingGive == ApproxBushingGive::Model && !mergedBushing) {
-        throw InputError("--bushing-give: 'model' needs the merged bushing (--constraint bushing --attach merged); this run's is " +
+    if (options.bushingGive != ApproxBushingGive::Stiff && !mergedBushing) {
+        throw InputError("--bushing-give: '" + toString(options.bushingGive) +
+                         "' needs the merged bushing (--constraint bushing --attach merged); this run's is " +
                          toString(options.constraint) + " " + toString(options.attach));
     }
     if (options.qThreshold > 0 && options.qMinimum >= options.qThreshold) {

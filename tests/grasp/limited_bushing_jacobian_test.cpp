@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 namespace graspsim::grasp {
@@ -27,7 +28,8 @@ struct BushedObject {
     LimitedBushing bushing;
     SimTK::State state;
 
-    BushedObject() {
+    // With `coupled`, the bushing takes a coupled stiffness (setStiffness with a matrix) at engagement.
+    explicit BushedObject(const std::optional<SimTK::Mat66>& coupled = std::nullopt) {
         const SimTK::Body::Rigid palmBody(SimTK::MassProperties(0.25, Vec3(0), SimTK::UnitInertia::brick(0.04, 0.05, 0.01)));
         const SimTK::Body::Rigid objectBody(SimTK::MassProperties(0.2, Vec3(0), SimTK::UnitInertia::sphere(0.04)));
         palm = SimTK::MobilizedBody::Pin(matter.updGround(), SimTK::Transform(Vec3(0, 0.3, 0)), palmBody, SimTK::Transform());
@@ -45,6 +47,7 @@ struct BushedObject {
         object.setQToFitTransform(state, X_GO);
         system.realize(state, SimTK::Stage::Position);
         bushing.resetAnchor(state);
+        if (coupled) bushing.setStiffness(state, *coupled, bushing.getDamping());
         object.setQToFitTransform(state, SimTK::Transform(SimTK::Rotation(SimTK::BodyRotationSequence, 1e-3, SimTK::XAxis,
                                                                           -2e-3, SimTK::YAxis, 1e-3, SimTK::ZAxis),
                                                           Vec3(1e-4, -2e-4, 1e-4)) * X_GO);
@@ -66,8 +69,21 @@ struct BushedObject {
     }
 };
 
-TEST(LimitedBushingJacobian, MatchesFiniteDifferencesOfTheGeneralizedForce) {
-    BushedObject b;
+// The diagonal of BushedObject's bushing with rotations and translations coupled (N/rad between
+// rotation x and translation y, rotation z and translation x) and translations x and z coupled.
+SimTK::Mat66 makeCoupledStiffness() {
+    SimTK::Mat66 K;
+    const SimTK::Vec6 diagonal(2, 3, 4, 2e4, 3e4, 4e4);
+    for (int r = 0; r < 6; ++r) {
+        for (int c = 0; c < 6; ++c) K(r, c) = r == c ? diagonal[r] : 0.0;
+    }
+    K(0, 4) = K(4, 0) = 100;
+    K(2, 3) = K(3, 2) = -150;
+    K(3, 5) = K(5, 3) = 5e3;
+    return K;
+}
+
+void expectJacobianMatchesFiniteDifferences(BushedObject& b) {
     // Made as the simulation makes it: through the attachment interface.
     const GraspAttachment& attachment = b.bushing;
     const std::unique_ptr<integration::ForceJacobianContributor> made = attachment.makeForceJacobian(b.matter, b.palm, b.object);
@@ -109,9 +125,21 @@ TEST(LimitedBushingJacobian, MatchesFiniteDifferencesOfTheGeneralizedForce) {
             EXPECT_NEAR(K(r, c), fdKAll(r, c), 1e-2 * std::abs(fdKAll(r, c)) + 2e-5 * largestK) << "K(" << r << "," << c << ")";
         }
     }
-    RecordProperty("largest_K", std::to_string(largestK));
+    testing::Test::RecordProperty("largest_K", std::to_string(largestK));
     EXPECT_GT(largestD, 1);    // the 20-40 N s/m damping is in there
     EXPECT_GT(largestK, 1e3);  // and the 2e4-4e4 N/m stiffness
+}
+
+TEST(LimitedBushingJacobian, MatchesFiniteDifferencesOfTheGeneralizedForce) {
+    BushedObject b;
+    expectJacobianMatchesFiniteDifferences(b);
+}
+
+// The same with a coupled stiffness: K's off-diagonal blocks reach the mobilities through J^T K J.
+TEST(LimitedBushingJacobian, MatchesFiniteDifferencesWithACoupledStiffness) {
+    BushedObject b(makeCoupledStiffness());
+    ASSERT_EQ(b.bushing.findStiffnessMatrix(b.state)(3, 5), 5e3);
+    expectJacobianMatchesFiniteDifferences(b);
 }
 
 TEST(LimitedBushingJacobian, ReleasedBushingAndSlidingAxesAddNothing) {

@@ -158,5 +158,22 @@ TEST(LimitedBushingLaw, CriticalDampingGivesADoubleRootOnEveryAxis) {
     EXPECT_NEAR(D[5], 2 * std::sqrt(7.5 * m), 1e-15 * D[5]);
 }
 
+// Positive definiteness against Sylvester's criterion on 2 x 2 blocks: a diagonal d with one
+// symmetric pair c is positive definite exactly when c^2 < d_i d_j.
+TEST(LimitedBushingLaw, PositiveDefiniteIsSylvestersCriterion) {
+    SimTK::Mat66 K;
+    for (int r = 0; r < 6; ++r) {
+        for (int c = 0; c < 6; ++c) K(r, c) = r == c ? 1.0 + r : 0.0;
+    }
+    EXPECT_TRUE(isPositiveDefinite(K));
+    K(1, 4) = K(4, 1) = 0.999 * std::sqrt(2.0 * 5.0);
+    EXPECT_TRUE(isPositiveDefinite(K));
+    K(1, 4) = K(4, 1) = 1.001 * std::sqrt(2.0 * 5.0);
+    EXPECT_FALSE(isPositiveDefinite(K));
+    K(1, 4) = K(4, 1) = 0;
+    K(5, 5) = 0;
+    EXPECT_FALSE(isPositiveDefinite(K));
+}
+
 }  // namespace
 }  // namespace graspsim::grasp

@@ -167,6 +167,44 @@ TEST_P(LimitedBushingDynamics, TwoSidedLimitsHoldAndSlideOnEachSide) {
     }
 }
 
+// A coupled stiffness (rotation z and translation x sharing c = 50 N/rad on the diagonal's
+// 100 N m/rad and 1e4 N/m): a force F along x below the limit is held where K e = (0, 0, 0, F, 0, 0),
+// so the box also turns about z, by theta = -c F / det and x = K_r F / det, det = K_r K_t - c^2
+// (closed form; small angles). Beyond the limit (K e)_x reaches L and the box slides with
+// (F - L) / m, as without coupling (Newton).
+TEST_P(LimitedBushingDynamics, CoupledStiffnessHoldsAtTheClosedFormAndSlidesAtTheLimit) {
+    const double c = 50;
+    SimTK::Mat66 K;
+    for (int r = 0; r < 6; ++r) {
+        for (int col = 0; col < 6; ++col) K(r, col) = r == col ? (r < 3 ? kAngularStiffness : kLinearStiffness) : 0.0;
+    }
+    K(2, 3) = K(3, 2) = c;
+    for (double force : {0.75 * kLinearLimit, 2.5 * kLinearLimit}) {
+        BushedBox scene;
+        scene.addForce(Vec3(force, 0, 0));
+        SimTK::State start = scene.makeState(BushingAxis::TranslationX, kLinearLimit);
+        scene.bushing.setStiffness(start, K, scene.bushing.getDamping());
+        SteppedRun run(GetParam(), scene.system, start);
+        const double t1 = 0.1, t2 = 0.3;
+        const double v1 = scene.box.getBodyVelocity(run.stepTo(t1))[1][0];
+        const SimTK::State& state = run.stepTo(t2);
+        if (force < kLinearLimit) {
+            const double det = kAngularStiffness * kLinearStiffness - c * c;
+            const double x = kAngularStiffness * force / det, theta = -c * force / det;
+            EXPECT_NEAR(scene.box.getBodyOriginLocation(state)[0], x, 1e-3 * x);
+            EXPECT_NEAR(calcAngleAboutZ(scene.box.getBodyRotation(state)), theta, 1e-3 * std::abs(theta));
+            EXPECT_GT(std::abs(theta), 1e-5);  // the coupling turned it
+            EXPECT_FALSE(scene.bushing.isSliding(state, BushingAxis::TranslationX));
+        } else {
+            const double v2 = scene.box.getBodyVelocity(state)[1][0];
+            const double expected = (force - kLinearLimit) / kMass;
+            EXPECT_NEAR((v2 - v1) / (t2 - t1), expected, 0.02 * expected);
+            EXPECT_TRUE(scene.bushing.isSliding(state, BushingAxis::TranslationX));
+            EXPECT_NEAR(scene.bushing.findWrench(state)[1][0], -kLinearLimit, 0.02 * kLinearLimit);
+        }
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(Integrators, LimitedBushingDynamics,
                          testing::Values(IntegratorKind::RungeKuttaMerson, IntegratorKind::CPodes),
                          [](const testing::TestParamInfo<IntegratorKind>& paramInfo) {
@@ -335,6 +373,35 @@ TEST(LimitedBushing, StiffnessInTheStateStartsAtTheDefaultAndIsChecked) {
         EXPECT_NE(std::string(error.what()).find("stiffness on rotation z is 0"), std::string::npos) << error.what();
     }
     EXPECT_THROW(scene.bushing.setStiffness(state, Vec6(1), Vec6(1, 1, 1, 1, -1, 1)), InputError);
+}
+
+// A coupled stiffness must be symmetric and positive definite; its diagonal is what getStiffness
+// reports, and a per-axis setStiffness uncouples again.
+TEST(LimitedBushing, CoupledStiffnessIsCheckedAndReadBack) {
+    BushedBox scene;
+    SimTK::State state = scene.makeState(BushingAxis::TranslationX, kLinearLimit);
+    SimTK::Mat66 K;
+    for (int r = 0; r < 6; ++r) {
+        for (int c = 0; c < 6; ++c) K(r, c) = r == c ? 10.0 : 0.0;
+    }
+    K(0, 3) = K(3, 0) = 3;
+    scene.bushing.setStiffness(state, K, Vec6(1));
+    EXPECT_EQ(scene.bushing.findStiffnessMatrix(state)(3, 0), 3);
+    EXPECT_EQ(scene.bushing.getStiffness(state), Vec6(10));
+    SimTK::Mat66 asymmetric = K;
+    asymmetric(0, 3) = 4;
+    try {
+        scene.bushing.setStiffness(state, asymmetric, Vec6(1));
+        FAIL() << "an asymmetric matrix accepted";
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find("entry (0, 3) is 4"), std::string::npos) << error.what();
+    }
+    SimTK::Mat66 indefinite = K;
+    indefinite(0, 3) = indefinite(3, 0) = 11;  // 11^2 > 10 x 10
+    EXPECT_THROW(scene.bushing.setStiffness(state, indefinite, Vec6(1)), InputError);
+    scene.bushing.setStiffness(state, Vec6(5), Vec6(1));
+    EXPECT_EQ(scene.bushing.findStiffnessMatrix(state)(3, 0), 0);
+    EXPECT_EQ(scene.bushing.findStiffnessMatrix(state)(3, 3), 5);
 }
 
 // ---- the grasp switch's usage: limits set from an event handler ---------------------------

@@ -59,6 +59,10 @@ struct AttachmentEngagement {
     /// Per axis, a stiffness (N m/rad for 0-2, N/m for 3-5) in place of the penetration bound's,
     /// where set and positive (NaN: the bound's). Only the bushing takes it.
     std::optional<SimTK::Vec6> stiffness;
+    /// A coupled stiffness (6 x 6, rotation first, along M's axes; symmetric positive definite) in
+    /// place of the per-axis one: the grasp's whole compliance model (bushing_give.h). Only the
+    /// bushing takes it.
+    std::optional<SimTK::Mat66> stiffnessMatrix;
     /// The generalized force on the object along M's axes (N m, N) that the element carries at
     /// engagement, clamped to its limits: its anchor is set back by preload / K, so that the
     /// element takes over the contacts' wrench without the object first sagging into its spring.

@@ -26,6 +26,10 @@
 ///    above, so an overshoot past the limit is pulled back (see limited_bushing_law.h);
 ///  - anchor rate    (rate of A in F, in A)_k = s_k r_k;   elastic rate  edot_k = (1 - s_k) r_k;
 ///  - generalized force  f_k = clamp(-K_k e_k - D_k edot_k, -L-_k, +L+_k).
+/// With a coupled stiffness (a symmetric positive definite 6 x 6 K, setStiffness(state, Mat66, ...))
+/// K_k e_k reads (K e)_k throughout: the elastic load of axis k, which decides its slip fraction
+/// (u = |(K e)_k| / L_k, loading (K e)_k r_k > 0) and its force clamp(-(K e)_k - D_k edot_k, ...);
+/// D stays per axis.
 /// O receives moment (f_0, f_1, f_2) and force (f_3, f_4, f_5), expressed in A, at M's origin;
 /// H receives the opposite at the same point.
 ///
@@ -76,6 +80,8 @@ public:
     /// Default K per axis (N m/rad, N/m), as given to the constructor; the one in force is
     /// getStiffness(state).
     const SimTK::Vec6& getStiffness() const;
+    /// The body O the element holds.
+    const SimTK::MobilizedBody& getObjectBody() const;
     /// Default D per axis (N m s/rad, N s/m), as given to the constructor; the one in force is
     /// getDamping(state).
     const SimTK::Vec6& getDamping() const;
@@ -110,7 +116,7 @@ public:
     /// toward. Otherwise as setLimits(state, limits), which is setLimits(state, limits, limits).
     void setLimits(SimTK::State& state, const SimTK::Vec6& lower, const SimTK::Vec6& upper) const;
     /// K per axis in force in `state` (N m/rad for 0-2, N/m for 3-5); the constructor's until
-    /// setStiffness() is called.
+    /// setStiffness() is called; the diagonal of a coupled stiffness.
     const SimTK::Vec6& getStiffness(const SimTK::State& state) const;
     /// D per axis in force in `state` (N m s/rad for 0-2, N s/m for 3-5).
     const SimTK::Vec6& getDamping(const SimTK::State& state) const;
@@ -121,6 +127,14 @@ public:
     /// @throws graspsim::InputError naming the axis for a bad stiffness or damping.
     void setStiffness(SimTK::State& state, const SimTK::Vec6& stiffness,
                       const SimTK::Vec6& damping) const;
+    /// A coupled stiffness K (6 x 6, rotation first, in A's axes: N m/rad, N m/m = N/rad and N/m
+    /// blocks), symmetric positive definite: the elastic load is K e (file comment); damping D
+    /// per axis as above. The anchor rule of a softer stiffness reads K's diagonal.
+    /// @throws graspsim::InputError for a non-finite, asymmetric or not positive definite K, or a
+    ///         bad damping.
+    void setStiffness(SimTK::State& state, const SimTK::Mat66& stiffness, const SimTK::Vec6& damping) const;
+    /// The stiffness in force as a matrix (rotation first): the coupled K, or diag(getStiffness(state)).
+    SimTK::Mat66 findStiffnessMatrix(const SimTK::State& state) const;
     /// Whether `axis` is locked (limit infinite regardless of getLimits()).
     bool isAxisLocked(const SimTK::State& state, BushingAxis axis) const;
     /// Locks (true) or relaxes (false, limited by getLimits()) `axis`; invalidates
@@ -170,8 +184,9 @@ public:
     /// anchor at the current pose (no spring force jump), stiffens it so that its elastic
     /// deflection at the limits moves no fingertip (at most engagement.leverArm from M) more
     /// than engagement.penetrationBound (calcStiffnessForBound with each axis's larger side, never below the constructor's
-    /// stiffness; engagement.stiffness in its place on the axes it sets; damping critical with the
-    /// object's mass and central moments of inertia), then sets the limits (two-sided if
+    /// stiffness; engagement.stiffness in its place on the axes it sets, engagement.stiffnessMatrix
+    /// in its place altogether; damping critical with the stiffness's diagonal and the object's
+    /// mass and central moments of inertia), then sets the limits (two-sided if
     /// engagement.lowerLimits is set) and locks. With engagement.preload, the anchor is then set
     /// back so that the spring carries it (clamped to the limits in force). Leaves `state`
     /// realized to Stage::Position.

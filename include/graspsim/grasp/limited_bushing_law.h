@@ -57,6 +57,14 @@ SimTK::Vec6 calcStiffnessForBound(const SimTK::Vec6& minimum, const SimTK::Vec6&
 /// D_k = 2 sqrt(K_k m) on the translations 3-5 (N s/m).
 SimTK::Vec6 calcCriticalDamping(const SimTK::Vec6& stiffness, const SimTK::Vec3& centralMoments, double mass);
 
+/// Whether the symmetric matrix K is positive definite (its Cholesky factorization succeeds).
+bool isPositiveDefinite(const SimTK::Mat66& K);
+
+/// Checks a coupled stiffness matrix (N m/rad, N/rad, N/m; rotation first): finite, symmetric to
+/// 1e-9 relative, positive definite.
+/// @throws graspsim::InputError naming the entry, or saying it is not positive definite.
+void checkStiffnessMatrix(const SimTK::Mat66& K);
+
 /// Rotation vector theta = angle * axis of R (angle in [0, pi]), rad.
 SimTK::Vec3 calcRotationVector(const SimTK::Rotation& R);
 

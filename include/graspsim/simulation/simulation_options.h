@@ -79,13 +79,17 @@ enum class ApproxHandBack {
 
 /// How the merged bushing gives under a load while engaged.
 enum class ApproxBushingGive {
-    Automatic,  ///< the default: Model on the merged bushing, Stiff otherwise
+    Automatic,  ///< the default: Coupled on the merged bushing, Stiff otherwise
     Stiff,  ///< stiffened so that its deflection at its limits sinks no fingertip past the bound
     /// its rotational stiffness from the grasp's compliance model, rolling included (bushing_give.h),
     /// and preloaded with the contacts' wrench at engagement: the object turns in the palm under a
     /// load as the model says full contact's would, and the locked fingers follow it by their share
     /// (finger_follow.h); the translations stay stiff. Bushing and merged only.
-    Model
+    Model,
+    /// as Model, with the model's whole sticking stiffness in place of its rotational diagonal: a
+    /// 6 x 6 matrix that couples the rotations and the translations (bushing_give.h), so the object
+    /// also shifts in the palm as the model says. Bushing and merged only.
+    Coupled
 };
 
 /// Settings of the grasp switch of `--mode approx` (thesis Figure 4.1; see grasp_switch.h).
@@ -153,8 +157,8 @@ struct ApproxOptions {
     /// The state full contact starts from at a compliance-trigger release (Engaged, the default;
     /// Deflected needs the compliance trigger).
     ApproxHandBack handBack = ApproxHandBack::Engaged;
-    /// How the merged bushing gives under a load (Automatic, the default: Model on the merged
-    /// bushing; docs/capacity.md, "The bushing's rotational give").
+    /// How the merged bushing gives under a load (Automatic, the default: Coupled on the merged
+    /// bushing; docs/capacity.md, "The bushing's coupled give").
     ApproxBushingGive bushingGive = ApproxBushingGive::Automatic;
 };
 
