@@ -407,11 +407,11 @@ void LimitedBushing::setStiffness(SimTK::State& state, const SimTK::Vec6& stiffn
 }
 void LimitedBushing::setStiffness(SimTK::State& state, const SimTK::Mat66& stiffness, const SimTK::Vec6& damping) const {
     checkStiffnessMatrix(stiffness);
-    SimTK::Vec6 diagonal;
-    for (int k = 0; k < 6; ++k) diagonal[k] = stiffness(k, k);
-    setStiffness(state, diagonal, damping);
+    checkAxisValues(damping, "damping", true, false);
     const LimitedBushingImpl& bushingImpl = asBushingImpl(getImplementation());
     AxisSettings settings = bushingImpl.getSettings(state);
+    for (int k = 0; k < 6; ++k) settings.stiffness[k] = stiffness(k, k);
+    settings.damping = damping;
     settings.coupled = true;
     settings.stiffnessMatrix = stiffness;
     bushingImpl.setSettings(state, settings);
@@ -476,9 +476,8 @@ bool LimitedBushing::isSliding(const SimTK::State& state, BushingAxis axis) cons
     return asBushingImpl(getImplementation()).isSliding(state, toIndex(axis));
 }
 
-
 SimTK::SpatialVec LimitedBushing::findReactionOnObject(const SimTK::State& state) const {
-    const SimTK::MobilizedBody& bodyO = asBushingImpl(getImplementation()).getBodyO();
+    const SimTK::MobilizedBody& bodyO = getObjectBody();
     return shiftToObjectOrigin(findWrench(state), bodyO.getBodyTransform(state).R(), getFrameOnO(state).p());
 }
 

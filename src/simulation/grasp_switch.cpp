@@ -373,7 +373,7 @@ void GraspSwitch::engage(SimTK::State& state, double quality, const std::vector<
     context_.attachment.engage(state, engagement);                                                // (d)
     const SimTK::Transform X_HO = ~context_.palm.getBodyTransform(state) * context_.object.getBodyTransform(state);
     std::string text = describeEngagement(qThreshold, engagement);
-    if (engagement.stiffness) text += describeModelGive(engagement);
+    text += describeModelGive(engagement);
     // As --limits compliance computes them (static friction unless told otherwise, M at O's origin
     // with O's orientation), whatever the constraint's own limits are; at the first engagement
     // only, on the unloaded grasp, and kept for the run.
