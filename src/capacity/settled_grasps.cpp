@@ -142,8 +142,10 @@ public:
             // At fixed steps a grasp that never settles is the likelier cause: a step too long to
             // hold it, below what the stepper refuses (docs/performance.md).
             const bool fixed = grasps_.getOptions().integrator == simulation::IntegratorChoice::LinearlyImplicitFixed;
+            const std::string obstacle = grasp->findEngageObstacle(getState());
             throw NumericalError("capacity: the approximation is not engaged at the load's start, t = " +
-                                 std::to_string(getState().getTime()) + " s; use --mode full or lower --q-threshold" +
+                                 std::to_string(getState().getTime()) + " s" + (obstacle.empty() ? "" : " (" + obstacle + ")") +
+                                 "; use --mode full" + (obstacle.find("Q_Th") != std::string::npos ? " or lower --q-threshold" : "") +
                                  (fixed ? ", or at fixed steps a shorter --step-size (0.001) or --integrator implicit" : ""));
         }
         reference_ = findGoalPointsInPalm();

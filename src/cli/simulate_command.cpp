@@ -255,6 +255,7 @@ void printRunResult(const scenario::Scenario& scenario, const simulation::Simula
     if (s.mode == simulation::SimulationMode::Approx) {
         std::cout << "approximation (" << simulation::toString(options.approx.constraint) << ", "
                   << simulation::toString(options.approx.attach) << "): " << (s.engaged ? "engaged at t = " + std::to_string(s.engageTime) + " s" : "never engaged")
+                  << (!s.engaged && !s.engageObstacleAtEnd.empty() ? " (at the end: " + s.engageObstacleAtEnd + ")" : "")
                   << ", " << result.events.size() << " switch event(s) in events.csv\n";
     }
 }

@@ -117,6 +117,7 @@ std::string formatSummaryJson(const simulation::SimulationSummary& s) {
     j["engage_time_s"] = s.engaged ? nlohmann::ordered_json(s.engageTime) : nlohmann::ordered_json(nullptr);
     j["release_time_s"] = s.releaseTime >= 0 ? nlohmann::ordered_json(s.releaseTime) : nlohmann::ordered_json(nullptr);
     j["q_at_engage_n"] = s.qAtEngage;
+    j["engage_obstacle_at_end"] = s.engageObstacleAtEnd.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(s.engageObstacleAtEnd);
     j["q_threshold_n"] = s.qThreshold;
     j["q_minimum_n"] = s.qMinimum;
     j["min_engaged_grasp_quality_n"] = s.minEngagedGraspQuality;

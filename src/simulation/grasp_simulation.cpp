@@ -227,6 +227,7 @@ void summarizeSwitch(const GraspSwitch* grasp, const PhaseTimer& timer, const Si
     summary.approxSteps = timer.getSteps(RunPhase::FirstEngagement);
     if (!grasp) return;
     result.events = grasp->getEvents(last);
+    if (summary.complete) summary.engageObstacleAtEnd = grasp->findEngageObstacle(last);
     summary.qThreshold = grasp->getQualityThreshold(last);
     summary.qMinimum = grasp->getQualityMinimum(last);
     const PenetrationStats& penetration = grasp->getTracker(last).getPenetration();

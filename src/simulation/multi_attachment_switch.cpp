@@ -85,12 +85,12 @@ int MultiAttachmentSwitch::findFinger(const std::string& body) const {
     return -1;
 }
 
-bool MultiAttachmentSwitch::isSticking(const std::vector<contact::ContactReport>& reports) const {
+const contact::ContactReport* MultiAttachmentSwitch::findSlidingContact(const std::vector<contact::ContactReport>& reports) const {
     const double limit = context_.contactParameters.transitionVelocity;
     for (const contact::ContactReport& c : reports) {
-        if (findFinger(c.bodyA) >= 0 && !(c.slipVelocity_G.norm() < limit)) return false;
+        if (findFinger(c.bodyA) >= 0 && !(c.slipVelocity_G.norm() < limit)) return &c;
     }
-    return true;
+    return nullptr;
 }
 
 std::string MultiAttachmentSwitch::engage(SimTK::State& state, const std::vector<contact::ContactReport>& reports) const {

@@ -293,3 +293,24 @@ TEST_F(CapacityCommand, AGraspThatLostItsObjectBeforeTheLoadIsNotMeasured) {
         EXPECT_EQ(last.find(" 0 N"), std::string::npos) << last;
     }
 }
+
+// The approximation not engaged at the load's start says why: here the ball's transition velocity
+// lowered to 0.3 mm/s, below the creep of its index finger's middle phalanx after the settle, so no
+// contact counts as sticking. The run stops (exit 3) naming the contact and the two speeds, and does
+// not suggest a lower --q-threshold, which would not help.
+TEST_F(CapacityCommand, AnApproximationNotEngagedAtTheLoadsStartSaysWhy) {
+    std::string ball = slurp(fs::path(GRASPSIM_SOURCE_DIR) / "models/scenarios/ball-clutch.yaml");
+    const std::size_t vt = ball.find("transition_velocity: 1.0e-3");
+    ASSERT_NE(vt, std::string::npos);
+    ball.replace(vt, 28, "transition_velocity: 3.0e-4");
+    const std::string slow = write("slow-ball.yaml", ball);
+    const std::string out = (dir_ / "cap").string();
+    const RunResult r = run("capacity " + slow + " --mode approx --out " + out);
+    EXPECT_EQ(r.exitCode, 3) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    for (const char* f : {"not engaged at the load's start, t = 1.1", "(the contact of ", " slips at ",
+                          "not below the transition velocity 0.0003 m/s); use --mode full"}) {
+        EXPECT_NE(r.err.find(f), std::string::npos) << "missing '" << f << "' in: " << r.err;
+    }
+    EXPECT_EQ(r.err.find("--q-threshold"), std::string::npos) << r.err;
+}

@@ -270,7 +270,7 @@ TEST_F(SimulateCommand, ApproxModeWritesTheSwitchEvents) {
     EXPECT_NE(events.find(",engage,"), std::string::npos) << events;
     const std::string summary = slurp(fs::path(out) / "summary.json");
     for (const char* key : {"\"engaged\": true", "\"engage_time_s\"", "\"release_time_s\": null", "\"q_at_engage_n\"",
-                            "\"full_step_us\"", "\"approx_step_us\""}) {
+                            "\"engage_obstacle_at_end\": null", "\"full_step_us\"", "\"approx_step_us\""}) {
         EXPECT_NE(summary.find(key), std::string::npos) << key << " in " << summary;
     }
 }

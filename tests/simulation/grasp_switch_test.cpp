@@ -129,6 +129,7 @@ TEST(GraspSwitch, BallClutchEngagesAfterSettlingAndHoldsTheObjectWhereFullContac
     EXPECT_GE(approx.summary.qAtEngage, approx.summary.qThreshold);
     EXPECT_GT(approx.summary.qThreshold, 0);
     EXPECT_TRUE(approx.summary.held);
+    EXPECT_EQ(approx.summary.engageObstacleAtEnd, "");  // engaged at the end
     const double gap = findLargestDistanceFrom(approx, approx.summary.engageTime, full.trajectory.back().p_GO);
     EXPECT_LT(gap, 0.002) << "approx object strays " << gap << " m from the full-contact final position";
 }
@@ -240,6 +241,29 @@ TEST(GraspSwitch, PhonePinchEngages) {
     EXPECT_GT(r.summary.engageTime, s.controller.approachTime);
     EXPECT_GE(r.summary.qAtEngage, r.summary.qThreshold);
     EXPECT_TRUE(r.summary.held);
+}
+
+// Engagement waits for every contact to stick: slower than the scenario's transition velocity. At
+// 0.3 mm/s, under the ball's own 0.36-0.41 mm/s creep of the index finger's middle phalanx after
+// the settle, the switch never engages, and the run says which of its tests failed. The oracle is
+// the test itself: the speed named is at or above the transition velocity named. A run that ends
+// before the settle time names that instead.
+TEST(GraspSwitch, ARunThatNeverEngagesSaysWhichTestFailed) {
+    scenario::Scenario s = scenario::findBuiltinScenario("ball-clutch");
+    s.contact.transitionVelocity = 3e-4;
+    const auto r = simulation::runGraspSimulation(s, makeOptions(simulation::SimulationMode::Approx, s.simulation.settleTime + 0.1));
+    ASSERT_TRUE(r.summary.complete) << r.summary.failure;
+    EXPECT_FALSE(r.summary.engaged);
+    const std::string& text = r.summary.engageObstacleAtEnd;
+    const std::size_t at = text.find(" slips at ");
+    ASSERT_NE(at, std::string::npos) << text;
+    EXPECT_EQ(text.rfind("the contact of ", 0), 0u) << text;
+    EXPECT_NE(text.find("not below the transition velocity 0.0003 m/s"), std::string::npos) << text;
+    EXPECT_GE(std::stod(text.substr(at + 10)), 3e-4) << text;
+
+    const auto early = simulation::runGraspSimulation(s, makeOptions(simulation::SimulationMode::Approx, 0.8 * s.simulation.settleTime));
+    ASSERT_TRUE(early.summary.complete) << early.summary.failure;
+    EXPECT_EQ(early.summary.engageObstacleAtEnd, "before the settle time, 1 s");
 }
 
 // A slide allowance below the gravity sag releases at the first check after engagement: the

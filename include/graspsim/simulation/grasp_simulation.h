@@ -62,6 +62,9 @@ struct SimulationSummary {
     double engageTime = -1;         ///< first engagement (s); < 0 if none
     double releaseTime = -1;        ///< first release after it (s); < 0 if none
     double qAtEngage = 0;           ///< grasp quality at the first engagement (N)
+    /// Why the approximation is not engaged at the end of a complete run (GraspSwitch::
+    /// findEngageObstacle: the switch's test that fails, with its numbers); empty when it is engaged.
+    std::string engageObstacleAtEnd;
     double qThreshold = 0;          ///< Q_Th in use (N)
     double qMinimum = 0;            ///< Q_M in use (N)
     ApproxConstraint constraint = ApproxConstraint::Bushing;  ///< the approximation's realization (approx mode)

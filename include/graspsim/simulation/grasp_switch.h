@@ -166,6 +166,11 @@ public:
 
     /// Whether the approximation is engaged in `state`.
     bool isEngaged(const SimTK::State& state) const;
+    /// Why the switch's check would not engage in `state`, in words naming the test and its numbers
+    /// (a goal segment without contact, before the settle time, a contact slipping at or above the
+    /// transition velocity, Q below Q_Th, the held load at the compliance limits); empty when it
+    /// would engage, or is engaged. Realizes `state` to Stage::Acceleration.
+    std::string findEngageObstacle(const SimTK::State& state) const;
     /// The switch's decisions up to `state`.
     const GraspSwitchRecord& getRecord(const SimTK::State& state) const;
     /// The switches up to `state`, in time order.
@@ -198,10 +203,13 @@ private:
     class ReleaseWitness;
     class RecordKeeper;
     GraspSwitchRecord& updRecord(SimTK::State& state) const;
+    static std::string formatText(const char* pattern, double a, double b = 0);  // snprintf of one or two numbers
     void checkEngage(SimTK::State& state) const;
     void checkRelease(SimTK::State& state) const;
-    bool isFullContact(const std::vector<contact::ContactReport>& reports) const;
-    bool isSticking(const std::vector<contact::ContactReport>& reports) const;
+    std::string findGoalWithoutContact(const std::vector<contact::ContactReport>& reports) const;
+    const contact::ContactReport* findSlidingContact(const std::vector<contact::ContactReport>& reports) const;
+    std::string findEngageObstacle(const SimTK::State& state, const std::vector<contact::ContactReport>& reports, double q,
+                                   double qThreshold, std::optional<ComplianceReleaseLimits>& limits) const;
     double calcQualityOf(const SimTK::State& state, const std::vector<contact::ContactReport>& reports) const;
     void engage(SimTK::State& state, double quality, const std::vector<contact::ContactReport>& reports,
                 std::optional<ComplianceReleaseLimits> releaseLimits) const;

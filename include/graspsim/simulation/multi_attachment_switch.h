@@ -33,7 +33,7 @@
 /// the finger touched at engagement, on the tangent plane there, so a finger cannot roll or re-seat
 /// on the surface; friction limits are frozen at engagement (they do not follow the normal force)
 /// and are a box per tangent axis, not a cone; the normal holds bilateral until the next check
-/// (up to ik_interval late). Engagement also waits for every goal contact to stick (isSticking()). Compared with merged: fingers keep their own dynamics, and one that leaves stops
+/// (up to ik_interval late). Engagement also waits for every goal contact to stick (findSlidingContact()). Compared with merged: fingers keep their own dynamics, and one that leaves stops
 /// following the object. Cost in time: one 6-DOF element per finger instead of one, plus the
 /// free finger joints (merged locks them).
 
@@ -62,11 +62,12 @@ public:
     ///        merged bushing is (grasp_switch.h, step (d)).
     MultiAttachmentSwitch(const ApproximationContext& context, double slideLimit, double penetrationBound);
 
-    /// Whether every goal finger's contacts stick: slip speed below the scenario's friction transition
-    /// velocity (its own threshold for "sticking"). Multi engages only then: each part is a sticking
-    /// contact, and attaching one that slides (e.g. right after a release, the object falling) would
-    /// freeze the slide. `reports`: the contacts of the state to judge.
-    bool isSticking(const std::vector<contact::ContactReport>& reports) const;
+    /// The first goal finger's contact that does not stick (slip speed at or above the scenario's
+    /// friction transition velocity, its own threshold for "sticking"), or nullptr when every one
+    /// sticks. Multi engages only then: each part is a sticking contact, and attaching one that
+    /// slides (e.g. right after a release, the object falling) would freeze the slide. `reports`:
+    /// the contacts of the state to judge; the result points into it.
+    const contact::ContactReport* findSlidingContact(const std::vector<contact::ContactReport>& reports) const;
     /// Steps (a), (b), (d); returns the limits, per finger, as text for the engage event.
     std::string engage(SimTK::State& state, const std::vector<contact::ContactReport>& reports) const;
     /// Detaches the fingers that left (appending "detach" events with `quality`, N); returns why the
