@@ -22,6 +22,16 @@ protected:
         EXPECT_NE(r.err.find(flag), std::string::npos) << r.err;
         EXPECT_FALSE(fs::exists(out)) << args;
     }
+
+    // A shipped scenario with one line's text `from` replaced by `to`, written as `file`; empty
+    // (and a test failure) when the scenario has no such text.
+    std::string writeEditedScenario(const char* scenario, const std::string& from, const std::string& to, const char* file) {
+        std::string text = slurp(fs::path(GRASPSIM_SOURCE_DIR) / "models/scenarios" / (std::string(scenario) + ".yaml"));
+        const std::size_t at = text.find(from);
+        EXPECT_NE(at, std::string::npos) << from;
+        if (at == std::string::npos) return {};
+        return write(file, text.replace(at, from.size(), to));
+    }
 };
 
 }  // namespace
@@ -277,11 +287,8 @@ TEST_F(CapacityCommand, ConstantLoadWritesTheTimesItPrints) {
 // first sample would already count as slipped and dropped): the run stops, in either mode, naming
 // the grasp that does not hold, and exits 3.
 TEST_F(CapacityCommand, AGraspThatLostItsObjectBeforeTheLoadIsNotMeasured) {
-    std::string phone = slurp(fs::path(GRASPSIM_SOURCE_DIR) / "models/scenarios/phone-pinch.yaml");
-    const std::size_t mass = phone.find("  mass: 0.100");
-    ASSERT_NE(mass, std::string::npos);
-    phone.replace(mass, 13, "  mass: 2.0");
-    const std::string heavy = write("heavy-phone.yaml", phone);
+    const std::string heavy = writeEditedScenario("phone-pinch", "  mass: 0.100", "  mass: 2.0", "heavy-phone.yaml");
+    ASSERT_FALSE(heavy.empty());
     for (const char* mode : {"full", "approx"}) {
         const std::string out = (dir_ / (std::string("cap-") + mode)).string();
         const RunResult r = run("capacity " + heavy + " --mode " + mode + " --out " + out);
@@ -299,11 +306,8 @@ TEST_F(CapacityCommand, AGraspThatLostItsObjectBeforeTheLoadIsNotMeasured) {
 // contact counts as sticking. The run stops (exit 3) naming the contact and the two speeds, and does
 // not suggest a lower --q-threshold, which would not help.
 TEST_F(CapacityCommand, AnApproximationNotEngagedAtTheLoadsStartSaysWhy) {
-    std::string ball = slurp(fs::path(GRASPSIM_SOURCE_DIR) / "models/scenarios/ball-clutch.yaml");
-    const std::size_t vt = ball.find("transition_velocity: 1.0e-3");
-    ASSERT_NE(vt, std::string::npos);
-    ball.replace(vt, 28, "transition_velocity: 3.0e-4");
-    const std::string slow = write("slow-ball.yaml", ball);
+    const std::string slow = writeEditedScenario("ball-clutch", "transition_velocity: 1.0e-3", "transition_velocity: 3.0e-4", "slow-ball.yaml");
+    ASSERT_FALSE(slow.empty());
     const std::string out = (dir_ / "cap").string();
     const RunResult r = run("capacity " + slow + " --mode approx --out " + out);
     EXPECT_EQ(r.exitCode, 3) << r.err;
