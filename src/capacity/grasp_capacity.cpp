@@ -44,6 +44,7 @@ GraspCapacity makeHeader(const simulation::SimulationOptions& options, const Gra
             c.realization += give;
         }
         if (approx.handBack != simulation::ApproxHandBack::Engaged) c.realization += ", hand back " + simulation::toString(approx.handBack);
+        if (approx.releaseCreep && !*approx.releaseCreep) c.realization += ", creep watch off";
         if (approx.bushingGive != simulation::ApproxBushingGive::Stiff) c.realization += ", bushing give " + simulation::toString(approx.bushingGive);
     }
     c.start = findLoadStart(scenario);

@@ -37,6 +37,9 @@ const FlagDefinition kFlags[] = {
      "approx: the state full contact takes the object back in at a compliance-trigger release: engaged (default: as the "
      "constraint held it) or deflected (object and finger joints deflected as the grasp's compliance model says full "
      "contact would be under the carried load)"},
+    {"--release-creep", &ApproxFlags::releaseCreep,
+     "approx: with the compliance release trigger, also hand back once the grasp's compliance model, followed in time "
+     "with full contact's creep under the carried load, has given the release give: on (default) or off"},
     {"--release-at", &ApproxFlags::releaseAt,
      "approx: an extra release rule: compliance (release once the constraint's reaction, or the load the grasp carries "
      "(gravity and the external loads), reaches the grasp's compliance-model limit on any axis side, or the model's "
@@ -65,6 +68,10 @@ void parseApproxFlags(const ApproxFlags& flags, simulation::ApproxOptions& optio
     options.releaseGive = parseReleaseGive(flags.releaseGive);
     options.handBack = simulation::parseApproxHandBack(flags.handBack, "--hand-back");
     options.bushingGive = simulation::parseApproxBushingGive(flags.bushingGive, "--bushing-give");
+    if (!flags.releaseCreep.empty() && flags.releaseCreep != "on" && flags.releaseCreep != "off") {
+        throw InputError("--release-creep: '" + flags.releaseCreep + "' is not accepted; use on or off");
+    }
+    if (!flags.releaseCreep.empty()) options.releaseCreep = flags.releaseCreep == "on";
 }
 
 void checkApproxOnlyOptions(const CLI::App& command, const std::string& mode, const std::vector<std::string>& names) {

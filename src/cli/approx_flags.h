@@ -23,6 +23,7 @@ struct ApproxFlags {
     std::string releaseAt = "auto";
     std::string releaseGive;
     std::string handBack = "engaged";
+    std::string releaseCreep;
     std::string bushingGive = "auto";
 };
 

@@ -221,6 +221,7 @@ results::RunProvenance makeRunProvenance(const std::vector<std::string>& command
         const simulation::ApproxOptions approx = simulation::resolveApproxOptions(options.approx, scenario.approximation);
         run.run["release_at"] = simulation::toString(approx.releaseTrigger);
         if (options.approx.handBack != simulation::ApproxHandBack::Engaged) run.run["hand_back"] = simulation::toString(options.approx.handBack);
+        if (options.approx.releaseCreep) run.run["release_creep"] = *options.approx.releaseCreep ? "on" : "off";
         run.run["bushing_give"] = simulation::toString(approx.bushingGive);
     }
     return run;

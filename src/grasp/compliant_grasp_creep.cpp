@@ -101,7 +101,7 @@ bool breakLoose(std::vector<Contact>& contacts, const Eigen::Vector3d& p_GO, std
     return true;
 }
 
-double findSlip(const std::vector<Contact>& contacts, const Vector6& displacement) {
+double findContactSlip(const std::vector<Contact>& contacts, const Vector6& displacement) {
     double slip = 0;
     for (const Contact& c : contacts) slip = std::max(slip, (c.map.transpose() * displacement).norm());
     return slip;
@@ -178,6 +178,68 @@ bool stepRamp(std::vector<Contact>& contacts, const Eigen::Vector3d& p_GO, const
 
 }  // namespace
 
+struct CompliantCreep::Model {
+    std::vector<Contact> contacts;
+    Eigen::Vector3d p_GO;
+    contact::ContactParameters friction;
+    std::vector<Eigen::Vector3d> slipPoints;  // from p_GO, in G
+    Vector6 displacement = Vector6::Zero();   // force first, as the wrench maps
+};
+
+CompliantCreep::CompliantCreep(const std::vector<CompliantContact>& contacts, const Eigen::Vector3d& p_GO,
+                               const contact::ContactParameters& friction, std::vector<Eigen::Vector3d> slipPoints)
+    : model_(std::make_unique<Model>()) {
+    friction.validate("compliant creep: friction");
+    if (friction.viscousFriction != 0) throw InputError("compliant creep: friction: viscous friction must be 0");
+    model_->contacts = makeContacts(contacts, p_GO);
+    model_->p_GO = p_GO;
+    model_->friction = friction;
+    for (const Eigen::Vector3d& p : slipPoints) model_->slipPoints.push_back(p - p_GO);
+}
+
+CompliantCreep::CompliantCreep(const CompliantCreep& other) : model_(std::make_unique<Model>(*other.model_)), givenWay_(other.givenWay_) {}
+
+CompliantCreep& CompliantCreep::operator=(const CompliantCreep& other) {
+    if (this != &other) {
+        model_ = std::make_unique<Model>(*other.model_);
+        givenWay_ = other.givenWay_;
+    }
+    return *this;
+}
+
+CompliantCreep::~CompliantCreep() = default;
+
+bool CompliantCreep::advance(const Eigen::Matrix<double, 6, 1>& loadChange, double duration, double timeStep) {
+    if (!loadChange.allFinite() || !(duration >= 0) || !(timeStep > 0)) {
+        throw InputError("compliant creep: the load change must be finite, the duration >= 0 and the step > 0");
+    }
+    if (givenWay_) return false;
+    const double span = duration > 0 ? duration : 1e-9;
+    const long steps = std::max(1L, static_cast<long>(std::ceil(span / timeStep - 1e-9)));
+    const double h = span / static_cast<double>(steps);
+    Vector6 loadRate;
+    loadRate << loadChange.tail<3>(), loadChange.head<3>();  // force first, as the wrench maps
+    loadRate /= span;
+    CompliantCapacity events;  // the states' changes are not recorded here
+    for (long k = 0; k < steps; ++k) {
+        if (!updateContactStates(model_->contacts, model_->p_GO, 0, model_->friction, model_->displacement, events) ||
+            !stepRamp(model_->contacts, model_->p_GO, loadRate, model_->friction, h, model_->displacement)) {
+            givenWay_ = true;
+            return false;
+        }
+    }
+    return true;
+}
+
+double CompliantCreep::findSlip() const {
+    if (givenWay_) return kInfinity;
+    if (model_->slipPoints.empty()) return findContactSlip(model_->contacts, model_->displacement);
+    double slip = 0;
+    const Eigen::Vector3d dp = model_->displacement.head<3>(), theta = model_->displacement.tail<3>();
+    for (const Eigen::Vector3d& p : model_->slipPoints) slip = std::max(slip, (dp + theta.cross(p)).norm());
+    return slip;
+}
+
 CompliantRamp runCompliantRamp(const std::vector<CompliantContact>& input, const Eigen::Vector3d& p_GO,
                                const Eigen::Matrix<double, 6, 1>& direction_G, const contact::ContactParameters& friction,
                                const CompliantRampOptions& options) {
@@ -197,7 +259,7 @@ CompliantRamp runCompliantRamp(const std::vector<CompliantContact>& input, const
             ramp.capacity.ultimate = load;
             break;
         }
-        const double slip = findSlip(contacts, displacement);
+        const double slip = findContactSlip(contacts, displacement);
         ramp.samples.push_back({load, slip});
         if (slip >= options.slipDistance && !std::isfinite(ramp.capacity.onset)) ramp.capacity.onset = load;
         if (!stepRamp(contacts, p_GO, loadRate, friction, options.timeStep, displacement)) {

@@ -3,6 +3,7 @@
 #include "graspsim/error.h"
 #include "graspsim/simulation/compliance_release.h"
 #include "graspsim/simulation/contact_grasp_quality.h"
+#include "graspsim/simulation/creep_release.h"
 #include "graspsim/simulation/deflected_hand_back.h"
 #include "graspsim/simulation/multi_attachment_switch.h"
 
@@ -46,6 +47,7 @@ public:
 
     void realizeTopology(SimTK::State& state) const override {
         recordIndex_ = forces_.allocateDiscreteVariable(state, SimTK::Stage::Report, new SimTK::Value<GraspSwitchRecord>(initial_));
+        creepIndex_ = forces_.allocateDiscreteVariable(state, SimTK::Stage::Report, new SimTK::Value<CreepWatch>(CreepWatch{}));
         // Valid until the time, q, u or an Instance-stage flag changes: exactly what the engaged
         // quality is a function of (with the tracked contacts, which change only at engagement).
         qualityIndex_ = forces_.allocateLazyCacheEntry(state, SimTK::Stage::Velocity, new SimTK::Value<double>(0));
@@ -55,6 +57,13 @@ public:
     }
     GraspSwitchRecord& updRecord(SimTK::State& state) const {
         return SimTK::Value<GraspSwitchRecord>::updDowncast(forces_.updDiscreteVariable(state, recordIndex_)).upd();
+    }
+    // The creep watch apart from the record: written at every check under a load, and small.
+    const CreepWatch& getCreepWatch(const SimTK::State& state) const {
+        return SimTK::Value<CreepWatch>::downcast(forces_.getDiscreteVariable(state, creepIndex_)).get();
+    }
+    CreepWatch& updCreepWatch(SimTK::State& state) const {
+        return SimTK::Value<CreepWatch>::updDowncast(forces_.updDiscreteVariable(state, creepIndex_)).upd();
     }
 
     /// The engaged quality already computed for `state`, or nullptr.
@@ -78,6 +87,7 @@ private:
     // Set once, at realizeTopology, where Simbody hands a const element the State to allocate in:
     // Simbody's own pattern for indices (no state of the simulation lives here).
     mutable SimTK::DiscreteVariableIndex recordIndex_;
+    mutable SimTK::DiscreteVariableIndex creepIndex_;
     mutable SimTK::CacheEntryIndex qualityIndex_;
 };
 
@@ -98,6 +108,8 @@ GraspSwitch::~GraspSwitch() = default;
 
 const GraspSwitchRecord& GraspSwitch::getRecord(const SimTK::State& state) const { return keeper_->getRecord(state); }
 GraspSwitchRecord& GraspSwitch::updRecord(SimTK::State& state) const { return keeper_->updRecord(state); }
+const CreepWatch& GraspSwitch::getCreepWatch(const SimTK::State& state) const { return keeper_->getCreepWatch(state); }
+CreepWatch& GraspSwitch::updCreepWatch(SimTK::State& state) const { return keeper_->updCreepWatch(state); }
 
 // See makeDetachWitness(). Velocity stage: the parts' forces depend on the relative velocity.
 class GraspSwitch::DetachWitness : public SimTK::TriggeredEventHandler {
@@ -217,6 +229,11 @@ void GraspSwitch::checkRelease(SimTK::State& state) const {
         if (reason.empty() && q < qMinimum) reason = formatText("Q < Q_M = %.6g N", qMinimum);
     } else {
         q = calcEngagedQuality(state);
+        if (getCreepWatch(state).model) {
+            const std::optional<SimTK::Vec6> carried = findCarriedLoadInO(state);
+            const std::optional<SimTK::Vec6> beyond = carried ? std::optional<SimTK::Vec6>(getRecord(state).releaseLimits->w0 - *carried) : std::nullopt;
+            updateCreepWatch(updCreepWatch(state), beyond, state.getTime());
+        }
         reason = describeRelease(state, q);
     }
     if (!reason.empty()) release(state, q, reason);
@@ -236,6 +253,8 @@ std::string GraspSwitch::describeRelease(const SimTK::State& state, double quali
     if (distance > tolerance) return formatText("fingertip %.6g m from its goal (held tolerance %.6g m)", distance, tolerance);
     if (record.releaseLimits) {
         std::string atLimit = describeComplianceRelease(state, *record.releaseLimits);
+        if (!atLimit.empty()) return atLimit;
+        atLimit = describeCreepRelease(getCreepWatch(state), options_.releaseGive.value_or(kDefaultReleaseGive));
         if (!atLimit.empty()) return atLimit;
     }
     if (quality < record.qMinimum) return formatText("Q < Q_M = %.6g N", record.qMinimum);

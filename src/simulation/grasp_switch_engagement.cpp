@@ -253,6 +253,11 @@ void GraspSwitch::engage(SimTK::State& state, double quality, const std::vector<
     GraspSwitchRecord& record = updRecord(state);
     record.X_HO_engaged = X_HO;
     record.releaseLimits = releaseLimits;
+    if (options_.releaseCreep.value_or(true) && releaseLimits) {
+        const std::optional<SimTK::Vec6> carried = findCarriedLoadInO(state);
+        const SimTK::Vec6 beyond = carried ? releaseLimits->w0 - *carried : SimTK::Vec6(0);
+        updCreepWatch(state) = startCreepWatch(*releaseLimits, context_.contactParameters, beyond, state.getTime());
+    }
     record.followed = std::move(followed);
     record.events.push_back({state.getTime(), GraspEventKind::Engage, quality, text});  // (e)
 }

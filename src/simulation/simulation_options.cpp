@@ -200,6 +200,10 @@ ApproxOptions resolveApproxOptions(const ApproxOptions& given, const scenario::A
         throw InputError("--release-give: only the compliance release trigger uses it (--release-at compliance, or auto "
                          "on the merged bushing); this run's is " + toString(options.releaseTrigger));
     }
+    if (options.releaseCreep && options.releaseTrigger != ApproxReleaseTrigger::Compliance) {
+        throw InputError("--release-creep: only the compliance release trigger has the creep watch (--release-at compliance, "
+                         "or auto on the merged bushing); this run's is " + toString(options.releaseTrigger));
+    }
     if (options.handBack == ApproxHandBack::Deflected && options.releaseTrigger != ApproxReleaseTrigger::Compliance) {
         throw InputError("--hand-back: 'deflected' needs the compliance release trigger (--release-at compliance, or auto "
                          "on the merged bushing); this run's is " + toString(options.releaseTrigger));

@@ -49,10 +49,12 @@ std::vector<std::string> listVariants(const CapacityPlan& plan) {
         // Quick: the default realization only, unless variants were named.
         if (plan.quick && plan.variants.empty() && variants.size() == 2) break;
     }
-    // The default realization on the thesis's switch (its box alone, no compliance release) and the
-    // other friction-limit models, so that the report compares them with the default (issue 17 item 3).
+    // The default realization on the thesis's switch (its box alone, no compliance release), the
+    // other friction-limit models, and the default's release on the static model alone (no creep
+    // watch), so that the report compares them with the default (issue 17 items 2 and 3).
     if (!plan.quick && plan.variants.empty()) {
-        for (const char* v : {"approx-bushing-merged-thesis", "approx-bushing-merged-contact", "approx-bushing-merged-compliance"}) {
+        for (const char* v : {"approx-bushing-merged-thesis", "approx-bushing-merged-contact", "approx-bushing-merged-compliance",
+                              "approx-bushing-merged-static"}) {
             variants.push_back(v);
         }
     }

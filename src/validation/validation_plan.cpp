@@ -53,6 +53,8 @@ simulation::SimulationOptions makeVariantOptions(const std::string& variant, con
     if (limitVariant || variant.find("-merged-thesis") != std::string::npos) options.approx.releaseTrigger = simulation::ApproxReleaseTrigger::None;
     if (variant.find("-merged-contact") != std::string::npos) options.approx.limitModel = grasp::FrictionLimitModel::ContactGeometry;
     if (variant.find("-merged-compliance") != std::string::npos) options.approx.limitModel = grasp::FrictionLimitModel::Compliance;
+    // The default's compliance release on the static model alone, without the creep watch.
+    if (variant.find("-merged-static") != std::string::npos) options.approx.releaseCreep = false;
     options.perturbation = perturbation;
     options.duration = duration;
     return options;

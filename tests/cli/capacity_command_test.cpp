@@ -59,6 +59,9 @@ TEST_F(CapacityCommand, BadInputIsOneLineAndWritesNothing) {
     expectRejected("--mode approx --release-give nan", "--release-give");
     expectRejected("--mode approx --release-at none --release-give 0.001", "--release-give");  // no trigger to use it
     expectRejected("--mode approx --constraint weld --release-give 0.001", "--release-give");  // auto is none on the weld
+    expectRejected("--mode approx --release-creep yes", "--release-creep");
+    expectRejected("--mode approx --release-at none --release-creep off", "--release-creep");  // no trigger to watch for
+    expectRejected("--release-creep off", "--release-creep");  // full mode
     expectRejected("--mode approx --bushing-give soft", "--bushing-give");
     expectRejected("--mode approx --attach multi --bushing-give model", "--bushing-give");
     expectRejected("--bushing-give model", "--bushing-give");  // full contact has no bushing

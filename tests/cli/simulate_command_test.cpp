@@ -316,6 +316,9 @@ TEST_F(SimulateCommand, RejectsBadOptionsWithoutTouchingTheOutputFolder) {
     expectBadInput("simulate ball-clutch --mode full --q-minimum 0.1" + out, {"--q-minimum: value '0.1'", "--mode full"});
     expectBadInput("simulate ball-clutch --limits contact" + out, {"--limits: value 'contact'", "--mode full"});
     expectBadInput("simulate ball-clutch --release-give 0.001" + out, {"--release-give: value '0.001'", "--mode full"});
+    expectBadInput("simulate ball-clutch --mode approx --release-creep 1" + out, {"--release-creep", "'1'", "on or off"});
+    expectBadInput("simulate ball-clutch --mode approx --constraint weld --release-creep on" + out,
+                   {"--release-creep", "compliance release trigger", "none"});
     expectBadInput("simulate ball-clutch --mode approx --bushing-give soft" + out, {"--bushing-give", "soft", "auto, stiff, model or coupled"});
     expectBadInput("simulate ball-clutch --mode approx --constraint weld --bushing-give model" + out,
                    {"--bushing-give", "model", "merged bushing", "weld merged"});

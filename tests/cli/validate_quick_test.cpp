@@ -48,15 +48,14 @@ TEST_F(ValidateQuick, PassesEveryBoundAndWritesReportTablesAndPlots) {
         return f;
     }();
     ASSERT_GT(fields.size(), 14u);
-    // The default approximation hands the object back at the compliance model's limit, before full
-    // contact's slip onset (full contact's ramp is the oracle), and the hand-back does not let go
-    // of what full contact holds: its onset is not more than 10 % below full contact's (the
-    // issue's bound). Above it, +18 % at this rate: the bushing holds the ball without the grasp's
-    // give (0.03 mm where full contact has given 1.2 mm), so after the hand-back 2 mm comes later;
-    // a finding of the report's table (docs/capacity.md, "The default"), not a check.
+    // The default approximation hands the object back by the compliance model (its limits, or its
+    // creep watch, which comes first here: 11.28 N), before full contact's slip onset (full
+    // contact's ramp is the oracle), and the hand-back does not let go of what full contact holds:
+    // its onset is not more than 10 % below full contact's (the bound). How far above it
+    // comes (+2.1 % at this rate) is a finding of the report's table (docs/capacity.md), not a check.
     ASSERT_EQ(fields[5], "1") << rows[2];
     ASSERT_EQ(fields[10], "1") << rows[2];  // released
-    EXPECT_NE(fields[13].find("compliance limit"), std::string::npos) << rows[2];
+    EXPECT_NE(fields[13].find("compliance"), std::string::npos) << rows[2];
     const double fullOnset = std::stod([&] {
         std::istringstream in(rows[1]);
         std::string cell;

@@ -31,6 +31,7 @@
 
 #include <Eigen/Core>
 
+#include <memory>
 #include <vector>
 
 namespace graspsim::grasp {
@@ -53,6 +54,44 @@ struct CompliantRampSample {
 struct CompliantRamp {
     CompliantCapacity capacity;  ///< firstSlip: the first contact breaks loose; onset; ultimate
     std::vector<CompliantRampSample> samples;
+};
+
+/// The regularizing tangential stiffness of the creep model's contacts, as a multiple of their
+/// normal stiffness k_n: stiff enough that the contacts' creep, not the spring, sets their give.
+inline constexpr double kCreepTangentialStiffnessRatio = 10;
+
+/// The same model followed step by step under any load history (a ramp, a step, a load that comes
+/// and goes), for a switch that watches what full contact's creep would make of the load it sees.
+/// Copyable: the state of the forces, the contacts' states and the displacement so far.
+class CompliantCreep {
+public:
+    /// `contacts` at the start, their forces balancing the loads present then; each contact's
+    /// tangentialStiffness is the regularizing k_t (file comment). `friction`: mu_s, mu_d and v_tr
+    /// (viscous friction 0). `slipPoints` (m, in G): where findSlip() measures, the object's
+    /// material points; empty: the contacts. Moments about `p_GO` (m, in G).
+    /// @throws graspsim::InputError for invalid contacts or friction.
+    CompliantCreep(const std::vector<CompliantContact>& contacts, const Eigen::Vector3d& p_GO, const contact::ContactParameters& friction,
+                   std::vector<Eigen::Vector3d> slipPoints = {});
+    CompliantCreep(const CompliantCreep& other);
+    CompliantCreep& operator=(const CompliantCreep& other);
+    ~CompliantCreep();
+
+    /// Follows the load growing by `loadChange` = [torque ; force] (N m, N, about p_GO, in G; rotation
+    /// first) evenly over `duration` (s, >= 0) in explicit steps of at most `timeStep` (s, > 0), the
+    /// contacts breaking loose or opening on the way (runCompliantRamp's steps). A zero duration
+    /// takes the change up elastically, as one step of 1e-9 s. False once the grasp has given way
+    /// (the load left the stiffness's range), and from then on.
+    /// @throws graspsim::InputError for a non-finite change, a negative duration or a non-positive step.
+    bool advance(const Eigen::Matrix<double, 6, 1>& loadChange, double duration, double timeStep = 1e-3);
+    /// The largest displacement of the slip points since the start (m); +infinity once given way.
+    double findSlip() const;
+    /// Whether the grasp has given way.
+    bool hasGivenWay() const { return givenWay_; }
+
+private:
+    struct Model;
+    std::unique_ptr<Model> model_;
+    bool givenWay_ = false;
 };
 
 /// Ramps `direction_G` = [torque ; force] (one unit torque or one unit force, rotation first) at

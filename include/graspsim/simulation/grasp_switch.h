@@ -83,6 +83,7 @@
 
 #include "graspsim/simulation/approximation_context.h"
 #include "graspsim/simulation/compliance_release.h"
+#include "graspsim/simulation/creep_release.h"
 #include "graspsim/simulation/engaged_grasp_tracker.h"
 #include "graspsim/simulation/finger_follow.h"
 #include "graspsim/simulation/object_loads.h"
@@ -203,6 +204,8 @@ private:
     class ReleaseWitness;
     class RecordKeeper;
     GraspSwitchRecord& updRecord(SimTK::State& state) const;
+    const CreepWatch& getCreepWatch(const SimTK::State& state) const;
+    CreepWatch& updCreepWatch(SimTK::State& state) const;
     static std::string formatText(const char* pattern, double a, double b = 0);  // snprintf of one or two numbers
     void checkEngage(SimTK::State& state) const;
     void checkRelease(SimTK::State& state) const;

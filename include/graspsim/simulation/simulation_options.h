@@ -154,6 +154,10 @@ struct ApproxOptions {
     /// scenes' 18 capacity cells within 10 % of full contact, but not the can, and the phone
     /// chatters on CPodes).
     std::optional<double> releaseGive;
+    /// With the compliance trigger, also the creep watch (creep_release.h): hand back once the
+    /// compliance model, followed in time with full contact's creep under the carried load, gives
+    /// ApproxOptions::releaseGive. Unset: on. Set, it needs the compliance trigger.
+    std::optional<bool> releaseCreep;
     /// The state full contact starts from at a compliance-trigger release (Engaged, the default;
     /// Deflected needs the compliance trigger).
     ApproxHandBack handBack = ApproxHandBack::Engaged;

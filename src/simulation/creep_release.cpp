@@ -1,0 +1,58 @@
+#include "graspsim/simulation/creep_release.h"
+
+#include "graspsim/grasp/compliant_grasp_capacity.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace graspsim::simulation {
+
+namespace {
+
+Eigen::Matrix<double, 6, 1> toEigen(const SimTK::Vec6& w) {
+    Eigen::Matrix<double, 6, 1> result;
+    for (int k = 0; k < 6; ++k) result[k] = w[k];
+    return result;
+}
+
+}  // namespace
+
+CreepWatch startCreepWatch(const ComplianceReleaseLimits& limits, const contact::ContactParameters& friction, const SimTK::Vec6& load,
+                           double t) {
+    CreepWatch watch;
+    watch.time = t;
+    if (limits.contacts_O.empty()) return watch;
+    // The model's contacts in O, O's origin as its origin, as the static rules take them.
+    std::vector<grasp::CompliantContact> contacts = limits.contacts_O;
+    for (grasp::CompliantContact& c : contacts) c.tangentialStiffness = grasp::kCreepTangentialStiffnessRatio * c.normalStiffness;
+    contact::ContactParameters creep = friction;
+    creep.viscousFriction = 0;  // the model's law; a scenario's viscous term acts only while sliding fast
+    watch.model.emplace(contacts, Eigen::Vector3d::Zero(), creep, limits.slipPoints_O);
+    watch.model->advance(toEigen(load), 0);
+    watch.load = load;
+    return watch;
+}
+
+void updateCreepWatch(CreepWatch& watch, const std::optional<SimTK::Vec6>& load, double t) {
+    const double interval = t - watch.time;
+    watch.time = t;
+    if (!watch.model || !load || !(interval >= 0)) return;
+    watch.model->advance(toEigen(*load - watch.load), interval);
+    watch.load = *load;
+}
+
+std::string describeCreepRelease(const CreepWatch& watch, double give) {
+    if (!watch.model) return {};
+    if (watch.model->hasGivenWay()) {
+        return "the compliance model followed in time (full contact's creep) gave way under the load beyond engagement";
+    }
+    const double slip = watch.model->findSlip();
+    if (!(slip >= give)) return {};
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "the compliance model followed in time (full contact's creep) gave %.4g mm at the grasp goals under the load "
+                  "beyond engagement (release give %.4g mm)", 1e3 * slip, 1e3 * give);
+    return text;
+}
+
+}  // namespace graspsim::simulation
