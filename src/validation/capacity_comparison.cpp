@@ -366,9 +366,10 @@ std::string formatCapacityMarkdown(const std::vector<CapacityRow>& rows) {
     md << "\n## Holding capacity: full contact against the approximation\n\n"
        << "Slip onset of a load ramped from the settled grasp (graspsim capacity; the difference to full contact's in "
           "parentheses; \"released first\": the approximation let go at or before that load, and the slip was then full "
-          "contact's; \"then failed\": the run stopped after the onset, before any drop). approx-bushing-merged, the default, also releases at the compliance model's limits; the other "
-          "variants are on the thesis's switch: -thesis is the default's box limits alone, -contact and -compliance "
-          "those limit models alone. The scenes `graspsim grasp plan` set up (not the thesis's) are compared on "
+          "contact's; \"then failed\": the run stopped after the onset, before any drop). approx-bushing-merged, the default, also releases at the compliance model's limits and once that "
+          "model, followed in time with full contact's creep under the load, has given 2 mm (the creep watch); -static "
+          "is the default without the creep watch. The other variants are on the thesis's switch: -thesis is the "
+          "default's box limits alone, -contact and -compliance those limit models alone. The scenes `graspsim grasp plan` set up (not the thesis's) are compared on "
           "the default only. Every ramp's figures are in capacity.csv.\n";
     md << formatTables(rows, "###", describeSlip);
     md << formatAgreement(rows);

@@ -72,15 +72,24 @@ struct RampPair {
     GraspCapacity approx;
 };
 
-RampPair measureFullAndApprox(const scenario::Scenario& s, const GraspCapacityRequest& request, const simulation::ApproxOptions& given) {
+simulation::SimulationOptions makeImplicitOptions(simulation::SimulationMode mode, const simulation::ApproxOptions& given) {
     simulation::SimulationOptions options;
     options.integrator = simulation::IntegratorChoice::LinearlyImplicit;
     options.accuracy = 3e-4;
-    RampPair ramps;
-    ramps.full = measureGraspCapacityRamp(s, options, request);
-    options.mode = simulation::SimulationMode::Approx;
+    options.mode = mode;
     options.approx = given;
-    ramps.approx = measureGraspCapacityRamp(s, options, request);
+    return options;
+}
+
+// The approximation `given` alone, for a comparison with a full-contact ramp measured before.
+GraspCapacity measureApproxRamp(const scenario::Scenario& s, const GraspCapacityRequest& request, const simulation::ApproxOptions& given) {
+    return measureGraspCapacityRamp(s, makeImplicitOptions(simulation::SimulationMode::Approx, given), request);
+}
+
+RampPair measureFullAndApprox(const scenario::Scenario& s, const GraspCapacityRequest& request, const simulation::ApproxOptions& given) {
+    RampPair ramps;
+    ramps.full = measureGraspCapacityRamp(s, makeImplicitOptions(simulation::SimulationMode::Full, {}), request);
+    ramps.approx = measureApproxRamp(s, request, given);
     return ramps;
 }
 
@@ -193,12 +202,9 @@ TEST(GraspCapacity, TheCoupledGiveFollowsFullContactsBallMinusZWhereTheRotationa
     const double onset = coupled.full.trace.figures.slipOnsetLoad;
     EXPECT_NEAR(coupled.approx.trace.figures.slipOnsetLoad, onset, 0.1 * onset);
     // The same approximated ramp on the rotational give, against the full-contact ramp above.
-    simulation::SimulationOptions options;
-    options.integrator = simulation::IntegratorChoice::LinearlyImplicit;
-    options.accuracy = 3e-4;
-    options.mode = simulation::SimulationMode::Approx;
-    options.approx.bushingGive = simulation::ApproxBushingGive::Model;
-    const GraspCapacity rotational = measureGraspCapacityRamp(ball, options, request);
+    simulation::ApproxOptions rotationalGive;
+    rotationalGive.bushingGive = simulation::ApproxBushingGive::Model;
+    const GraspCapacity rotational = measureApproxRamp(ball, request, rotationalGive);
     ASSERT_TRUE(rotational.trace.figures.slipped);
     EXPECT_GT(rotational.trace.figures.slipOnsetLoad, 1.1 * onset);
 }
@@ -223,12 +229,9 @@ TEST(GraspCapacity, TheCreepWatchHandsBallTorqueXBackWhereTheStaticRulesComeTooL
     const double onset = watched.full.trace.figures.slipOnsetLoad;
     EXPECT_NEAR(watched.approx.trace.figures.slipOnsetLoad, onset, 0.1 * onset);
     // The same approximated ramp without the watch, against the full-contact ramp above.
-    simulation::SimulationOptions options;
-    options.integrator = simulation::IntegratorChoice::LinearlyImplicit;
-    options.accuracy = 3e-4;
-    options.mode = simulation::SimulationMode::Approx;
-    options.approx.releaseCreep = false;
-    const GraspCapacity staticOnly = measureGraspCapacityRamp(ball, options, request);
+    simulation::ApproxOptions unwatched;
+    unwatched.releaseCreep = false;
+    const GraspCapacity staticOnly = measureApproxRamp(ball, request, unwatched);
     ASSERT_TRUE(staticOnly.trace.figures.slipped);
     ASSERT_TRUE(staticOnly.trace.figures.released);
     EXPECT_EQ(staticOnly.trace.releaseReason.find("followed in time"), std::string::npos) << staticOnly.trace.releaseReason;
