@@ -1,8 +1,5 @@
 #include "graspsim/simulation/creep_release.h"
 
-#include "graspsim/grasp/compliant_grasp_capacity.h"
-
-#include <cmath>
 #include <cstdio>
 
 namespace graspsim::simulation {
@@ -26,7 +23,8 @@ CreepWatch startCreepWatch(const ComplianceReleaseLimits& limits, const contact:
     std::vector<grasp::CompliantContact> contacts = limits.contacts_O;
     for (grasp::CompliantContact& c : contacts) c.tangentialStiffness = grasp::kCreepTangentialStiffnessRatio * c.normalStiffness;
     contact::ContactParameters creep = friction;
-    creep.viscousFriction = 0;  // the model's law; a scenario's viscous term acts only while sliding fast
+    // The model's law has no viscous term (CompliantCreep refuses one); the scenarios' is 0 by default.
+    creep.viscousFriction = 0;
     watch.model.emplace(contacts, Eigen::Vector3d::Zero(), creep, limits.slipPoints_O);
     watch.model->advance(toEigen(load), 0);
     watch.load = load;
