@@ -113,6 +113,12 @@ std::string checkRunOption(const std::string& name, const std::string& value, co
     if (name == "constraint") simulation::parseApproxConstraint(value, source);
     if (name == "attach") simulation::parseApproxAttach(value, source);
     if (name == "bushing_give") simulation::parseApproxBushingGive(value, source);
+    if (name == "release_at") simulation::parseApproxReleaseTrigger(value, source);
+    if (name == "hand_back") simulation::parseApproxHandBack(value, source);
+    if (name == "release_give") checkPositiveNumber(source, value, "m");
+    if (name == "release_creep" && value != "on" && value != "off") {
+        throw InputError(source + ": '" + value + "' is not accepted; on or off");
+    }
     if (name == "integrator") simulation::parseIntegratorChoice(value, source);
     if (name == "perturbation" && value != "none" && !scenario.findPerturbation(value)) {
         std::string known = "none";
@@ -123,7 +129,10 @@ std::string checkRunOption(const std::string& name, const std::string& value, co
 }
 
 // The grasp approximation's own run options, which simulate and capacity refuse without --mode approx.
-bool isApproxOnly(const std::string& option) { return option == "constraint" || option == "attach" || option == "bushing_give"; }
+bool isApproxOnly(const std::string& option) {
+    static const std::vector<std::string> names{"constraint", "attach", "bushing_give", "release_at", "release_give", "release_creep", "hand_back"};
+    return std::find(names.begin(), names.end(), option) != names.end();
+}
 
 // The command's flag for a study option: max_duration is --max-duration.
 std::string formatFlag(const std::string& option) {

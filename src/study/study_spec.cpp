@@ -315,8 +315,10 @@ const std::vector<std::string>& getRunOptionNames() {
 }
 
 const std::vector<std::string>& getRunOptionNames(StudyCommand command) {
-    static const std::vector<std::string> simulate{"mode", "contact", "constraint", "attach", "bushing_give", "integrator", "perturbation"};
-    static const std::vector<std::string> capacity{"mode", "contact", "constraint", "attach", "bushing_give", "integrator", "direction",
+    static const std::vector<std::string> simulate{"mode",         "contact",       "constraint", "attach",     "bushing_give", "release_at",
+                                                   "release_give", "release_creep", "hand_back",  "integrator", "perturbation"};
+    static const std::vector<std::string> capacity{"mode",          "contact",   "constraint", "attach",       "bushing_give",
+                                                   "release_at",    "release_give", "release_creep", "hand_back", "integrator", "direction",
                                                    "torque", "rate", "method", "load", "hold", "max_duration", "slip_threshold"};
     return command == StudyCommand::Capacity ? capacity : simulate;
 }

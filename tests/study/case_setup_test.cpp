@@ -74,6 +74,26 @@ TEST(CaseSetup, TheBushingsGiveGoesToApproxCasesOnly) {
     EXPECT_EQ(makeCaseSetup(spec, base, expandCases(spec).at(1)).options, (Options{{"--mode", "approx"}, {"--bushing-give", "model"}}));
 }
 
+// The approximation's release options likewise, so a study can compare its variants across subjects.
+TEST(CaseSetup, TheReleaseOptionsGoToApproxCasesOnly) {
+    const StudySpec spec =
+        makeSpec("  mode: [full, approx]\n", "set: {release_at: compliance, release_give: 0.0015, release_creep: off, hand_back: deflected}\n");
+    const std::vector<scenario::ScenarioText> base = readBaseScenarios(spec);
+    checkStudyValues(spec, base);
+    using Options = std::vector<std::pair<std::string, std::string>>;
+    EXPECT_EQ(makeCaseSetup(spec, base, expandCases(spec).at(0)).options, (Options{{"--mode", "full"}}));
+    EXPECT_EQ(makeCaseSetup(spec, base, expandCases(spec).at(1)).options,
+              (Options{{"--mode", "approx"}, {"--release-at", "compliance"}, {"--release-give", "0.0015"}, {"--release-creep", "off"},
+                       {"--hand-back", "deflected"}}));
+    EXPECT_NE(checkError("  mode: [full, approx]\n  release_creep: [on, maybe]\n").find("run option 'release_creep': 'maybe' is not accepted"),
+              std::string::npos);
+    EXPECT_NE(checkError("  mode: [full, approx]\n  release_give: [0.001, -1]\n").find("run option 'release_give'"), std::string::npos);
+    EXPECT_NE(checkError("  mode: [full, approx]\n  hand_back: [bent]\n").find("run option 'hand_back'"), std::string::npos);
+    EXPECT_NE(checkError("  subject.stature: [1.741]\n", "set: {release_at: none}\n")
+                  .find("s.yaml:3: run option 'release_at' is not accepted without mode approx"),
+              std::string::npos);
+}
+
 TEST(CaseSetup, ApproximationOptionsWithoutModeAreRefused) {
     EXPECT_NE(checkError("  subject.stature: [1.741]\n", "set: {constraint: weld}\n")
                   .find("s.yaml:3: run option 'constraint' is not accepted without mode approx"),
