@@ -4,18 +4,8 @@
 
 namespace graspsim::simulation {
 
-namespace {
-
-Eigen::Matrix<double, 6, 1> toEigen(const SimTK::Vec6& w) {
-    Eigen::Matrix<double, 6, 1> result;
-    for (int k = 0; k < 6; ++k) result[k] = w[k];
-    return result;
-}
-
-}  // namespace
-
-CreepWatch startCreepWatch(const ComplianceReleaseLimits& limits, const contact::ContactParameters& friction, const SimTK::Vec6& load,
-                           double t) {
+CreepWatch startCreepWatch(const ComplianceReleaseLimits& limits, const contact::ContactParameters& friction,
+                           const Eigen::Matrix<double, 6, 1>& load, double t) {
     CreepWatch watch;
     watch.time = t;
     if (limits.contacts_O.empty()) return watch;
@@ -26,16 +16,16 @@ CreepWatch startCreepWatch(const ComplianceReleaseLimits& limits, const contact:
     // The model's law has no viscous term (CompliantCreep refuses one); the scenarios' is 0 by default.
     creep.viscousFriction = 0;
     watch.model.emplace(contacts, Eigen::Vector3d::Zero(), creep, limits.slipPoints_O);
-    watch.model->advance(toEigen(load), 0);
+    watch.model->advance(load, 0);
     watch.load = load;
     return watch;
 }
 
-void updateCreepWatch(CreepWatch& watch, const std::optional<SimTK::Vec6>& load, double t) {
+void updateCreepWatch(CreepWatch& watch, const std::optional<Eigen::Matrix<double, 6, 1>>& load, double t) {
     const double interval = t - watch.time;
     watch.time = t;
     if (!watch.model || !load || !(interval >= 0)) return;
-    watch.model->advance(toEigen(*load - watch.load), interval);
+    watch.model->advance(*load - watch.load, interval);
     watch.load = *load;
 }
 

@@ -230,8 +230,7 @@ void GraspSwitch::checkRelease(SimTK::State& state) const {
     } else {
         q = calcEngagedQuality(state);
         if (getCreepWatch(state).model) {
-            const std::optional<SimTK::Vec6> carried = findCarriedLoadInO(state);
-            const std::optional<SimTK::Vec6> beyond = carried ? std::optional<SimTK::Vec6>(getRecord(state).releaseLimits->w0 - *carried) : std::nullopt;
+            const auto beyond = findCarriedLoadBeyondEngagement(state, *getRecord(state).releaseLimits);
             updateCreepWatch(updCreepWatch(state), beyond, state.getTime());
         }
         reason = describeRelease(state, q);
@@ -295,6 +294,15 @@ std::optional<SimTK::Vec6> GraspSwitch::findCarriedLoadInO(const SimTK::State& s
     SimTK::Vec6 carried;
     for (int k = 0; k < 3; ++k) carried[k] = moment_O[k], carried[k + 3] = force_O[k];
     return carried;
+}
+
+// The carried load less what the contacts carried at engagement, as the creep watch takes it; none
+// while no external load acts (findCarriedLoadInO).
+std::optional<Eigen::Matrix<double, 6, 1>> GraspSwitch::findCarriedLoadBeyondEngagement(const SimTK::State& state,
+                                                                                       const ComplianceReleaseLimits& limits) const {
+    const std::optional<SimTK::Vec6> carried = findCarriedLoadInO(state);
+    if (!carried) return std::nullopt;
+    return findLoadBeyondEngagement(*carried, limits);
 }
 
 // A deflected hand-back only where the compliance limits are what was reached (by the reaction or

@@ -254,8 +254,7 @@ void GraspSwitch::engage(SimTK::State& state, double quality, const std::vector<
     record.X_HO_engaged = X_HO;
     record.releaseLimits = releaseLimits;
     if (options_.releaseCreep.value_or(true) && releaseLimits) {
-        const std::optional<SimTK::Vec6> carried = findCarriedLoadInO(state);
-        const SimTK::Vec6 beyond = carried ? releaseLimits->w0 - *carried : SimTK::Vec6(0);
+        const auto beyond = findCarriedLoadBeyondEngagement(state, *releaseLimits).value_or(Eigen::Matrix<double, 6, 1>::Zero());
         updCreepWatch(state) = startCreepWatch(*releaseLimits, context_.contactParameters, beyond, state.getTime());
     }
     record.followed = std::move(followed);

@@ -34,7 +34,7 @@ struct CreepWatch {
     std::optional<grasp::CompliantCreep> model;
     /// The load beyond engagement at the last update (moment about O's origin then force, along
     /// O's axes; N m, N): findLoadBeyondEngagement of the carried load, zero without external load.
-    SimTK::Vec6 load{0};
+    Eigen::Matrix<double, 6, 1> load = Eigen::Matrix<double, 6, 1>::Zero();
     /// When the watch was last brought up to date (s).
     double time = std::numeric_limits<double>::quiet_NaN();
 };
@@ -43,12 +43,12 @@ struct CreepWatch {
 /// slip points; none: an empty watch) with the contacts' friction `friction`, the load beyond
 /// engagement `load` (as CreepWatch::load) taken up at once.
 /// @throws graspsim::InputError for invalid friction.
-CreepWatch startCreepWatch(const ComplianceReleaseLimits& limits, const contact::ContactParameters& friction, const SimTK::Vec6& load,
-                           double t);
+CreepWatch startCreepWatch(const ComplianceReleaseLimits& limits, const contact::ContactParameters& friction,
+                           const Eigen::Matrix<double, 6, 1>& load, double t);
 
 /// Brings `watch` to time `t` under the load beyond engagement `load`, or leaves its model as it is
 /// (only the time moves) when `load` is unset: no external load acts.
-void updateCreepWatch(CreepWatch& watch, const std::optional<SimTK::Vec6>& load, double t);
+void updateCreepWatch(CreepWatch& watch, const std::optional<Eigen::Matrix<double, 6, 1>>& load, double t);
 
 /// The release reason once the watch's model has given `give` (m) at the slip points, or given way;
 /// empty otherwise, and for an empty watch.

@@ -224,6 +224,8 @@ private:
     std::string describeComplianceRelease(const SimTK::State& state, const ComplianceReleaseLimits& limits) const;
     SimTK::Vec6 findReactionInO(const SimTK::State& state) const;
     std::optional<SimTK::Vec6> findCarriedLoadInO(const SimTK::State& state) const;
+    std::optional<Eigen::Matrix<double, 6, 1>> findCarriedLoadBeyondEngagement(const SimTK::State& state,
+                                                                             const ComplianceReleaseLimits& limits) const;
     std::string describeEngagement(double qThreshold, const grasp::AttachmentEngagement& engagement) const;
     double findVelocityJump(SimTK::State& state, const SimTK::Vec3& v_before) const;
 
